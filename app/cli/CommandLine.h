@@ -1,0 +1,31 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace footpath::cli {
+
+/// What the user asked for, before any file is touched.
+struct CommandLine {
+    std::string command;  ///< "process", "eval" or "help"
+    std::string input;
+    std::string paramsFile;
+    std::vector<std::string> sets;  ///< "name=value"
+    std::vector<std::string> columnMap;
+    std::string trajectoryOut;
+    std::string stepsOut;
+    std::string summaryOut;
+    std::vector<std::string> referenceColumns;
+    bool closedLoop = false;
+    double length_m = 0.0;
+    bool json = false;
+};
+
+/// Parses argv; returns an error message (naming the bad option) or empty.
+std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& out);
+
+std::string usageText();
+
+std::vector<std::string> splitList(const std::string& text, char separator = ',');
+
+}  // namespace footpath::cli

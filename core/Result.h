@@ -1,0 +1,53 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace footpath {
+
+/// Per-sample outputs of the stance detector. Every flag is kept because the GUI plots all four.
+struct StanceFlags {
+    std::vector<std::uint8_t> c1;      ///< a_min < |a| < a_max
+    std::vector<std::uint8_t> c2;      ///< std of |a| over the centred window below threshold
+    std::vector<std::uint8_t> c3;      ///< |w| < w_max
+    std::vector<std::uint8_t> c;       ///< c1 & c2 & c3
+    std::vector<std::uint8_t> stance;  ///< c after the median filter: 1 = foot at rest
+};
+
+/// One stance phase and the stride that led to it.
+struct Step {
+    double stanceStart_s = 0.0;
+    double stanceEnd_s = 0.0;
+    Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< mean position during the stance
+    double strideLength_m = 0.0;    ///< horizontal distance from the previous stance (0 for the first)
+    double strideDuration_s = 0.0;  ///< time since the previous stance started (0 for the first)
+};
+
+struct Summary {
+    std::size_t samples = 0;
+    double duration_s = 0.0;
+    std::size_t stancePhases = 0;
+    std::size_t steps = 0;           ///< strides: stance phases after the first
+    double pathLength_m = 0.0;       ///< horizontal, between consecutive stance positions
+    double endToStart_m = 0.0;       ///< horizontal distance between first and last position
+    double endToStartPct = 0.0;      ///< endToStart_m as % of pathLength_m (0 if no path)
+    double runtime_s = 0.0;          ///< estimation alone, without file I/O
+};
+
+/// Everything the views, exporters and the CLI need, so none of them recomputes estimation.
+struct Result {
+    std::vector<double> time_s;
+    std::vector<Eigen::Vector3d> position_m;   ///< navigation frame, z up, relative to start
+    std::vector<Eigen::Vector3d> velocity_mps;
+    std::vector<Eigen::Vector3d> rollPitchYaw_rad;
+    std::vector<Eigen::Vector3d> gyroBias_radps;
+    std::vector<Eigen::Vector3d> accBias_mps2;
+    StanceFlags flags;
+    std::vector<Step> steps;
+    Summary summary;
+    bool cancelled = false;  ///< the progress callback asked to stop; the vectors are partial
+};
+
+}  // namespace footpath

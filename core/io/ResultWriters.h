@@ -1,0 +1,23 @@
+#pragma once
+
+#include "Result.h"
+
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace footpath {
+
+/// Trajectory CSV, one row per sample, z up:
+/// time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance
+void writeTrajectoryCsv(std::ostream& out, const Result& result);
+/// Steps CSV: step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s
+void writeStepsCsv(std::ostream& out, const Result& result);
+/// Summary as one JSON object (samples, duration_s, steps, path_length_m, end_to_start_m, ...).
+std::string summaryToJson(const Summary& summary);
+
+/// Writes through a temporary file that is renamed at the end, so a failed write never leaves a
+/// truncated file behind. Returns an error naming the path, or empty.
+std::string writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+}  // namespace footpath

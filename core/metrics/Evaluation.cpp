@@ -1,0 +1,137 @@
+#include "metrics/Evaluation.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace footpath {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// evaluation.md 1.2: the estimate must have moved this far before its heading is meaningful.
+constexpr double kAlignmentDistance_m = 0.8;
+// evaluation.md 1.2: pyshoe's arbitrary choice when the estimate never moves that far.
+constexpr std::size_t kFallbackAlignmentIndex = 300;
+
+double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    return (a.head<2>() - b.head<2>()).norm();
+}
+
+std::vector<Eigen::Vector3d> relativeToFirst(const std::vector<Eigen::Vector3d>& positions)
+{
+    std::vector<Eigen::Vector3d> relative;
+    relative.reserve(positions.size());
+    for (const Eigen::Vector3d& p : positions)
+        relative.push_back(p - positions.front());
+    return relative;
+}
+
+/// First sample at least kAlignmentDistance_m (horizontally) from the origin, else the fallback,
+/// clamped so a short recording still has a valid index.
+std::size_t findAlignmentIndex(const std::vector<Eigen::Vector3d>& estimateFromOrigin)
+{
+    for (std::size_t k = 0; k < estimateFromOrigin.size(); ++k) {
+        if (estimateFromOrigin[k].head<2>().norm() >= kAlignmentDistance_m)
+            return k;
+    }
+    return std::min(kFallbackAlignmentIndex, estimateFromOrigin.size() - 1);
+}
+
+/// Signed angle about z that turns the horizontal part of `from` onto that of `to`. A zero-length
+/// vector has no direction, so nothing is rotated rather than rotating by an arbitrary angle.
+double headingCorrection(const Eigen::Vector3d& from, const Eigen::Vector3d& to)
+{
+    const Eigen::Vector2d a = from.head<2>();
+    const Eigen::Vector2d b = to.head<2>();
+    if (a.squaredNorm() == 0.0 || b.squaredNorm() == 0.0)
+        return 0.0;
+    // atan2 of (cross, dot) keeps the sign for every angle, including exactly 180 degrees.
+    const double cross = a.x() * b.y() - a.y() * b.x();
+    return std::atan2(cross, a.dot(b));
+}
+
+void rotateAboutZ(std::vector<Eigen::Vector3d>& positions, double angle_rad)
+{
+    const Eigen::Matrix3d rotation =
+        Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    for (Eigen::Vector3d& p : positions)
+        p = rotation * p;
+}
+
+/// Mean over samples of the per-sample RMS difference over the first `axes` axes (pyshoe's ARMSE).
+double averageRmse(const std::vector<Eigen::Vector3d>& estimate,
+                   const std::vector<Eigen::Vector3d>& reference, Eigen::Index axes)
+{
+    double sum = 0.0;
+    for (std::size_t k = 0; k < estimate.size(); ++k) {
+        const double meanSquared =
+            (estimate[k] - reference[k]).head(axes).squaredNorm() / static_cast<double>(axes);
+        sum += std::sqrt(meanSquared);
+    }
+    return sum / static_cast<double>(estimate.size());
+}
+
+}  // namespace
+
+ArmseResult computeArmse(const std::vector<Eigen::Vector3d>& estimate,
+                         const std::vector<Eigen::Vector3d>& reference)
+{
+    // Callers batch many trials; one unusable pair should show up as NaN, not abort the batch.
+    if (estimate.empty() || estimate.size() != reference.size())
+        return ArmseResult{kNaN, kNaN, 0, kNaN};
+
+    std::vector<Eigen::Vector3d> alignedEstimate = relativeToFirst(estimate);
+    const std::vector<Eigen::Vector3d> referenceFromOrigin = relativeToFirst(reference);
+
+    ArmseResult result;
+    result.alignmentIndex = findAlignmentIndex(alignedEstimate);
+    result.rotation_rad = headingCorrection(alignedEstimate[result.alignmentIndex],
+                                            referenceFromOrigin[result.alignmentIndex]);
+    rotateAboutZ(alignedEstimate, result.rotation_rad);
+
+    result.armse2d_m = averageRmse(alignedEstimate, referenceFromOrigin, 2);
+    result.armse3d_m = averageRmse(alignedEstimate, referenceFromOrigin, 3);
+    return result;
+}
+
+LoopClosure computeLoopClosure(const std::vector<Eigen::Vector3d>& positions, double pathLength_m,
+                               double referenceLength_m)
+{
+    LoopClosure closure;
+    // The reference length is the better denominator; the estimate's own length is the fallback.
+    closure.lengthUsed_m = referenceLength_m > 0.0 ? referenceLength_m : pathLength_m;
+    if (positions.empty()) {
+        closure.dbse_m = kNaN;  // no trajectory: there is no closure error to report
+        closure.dbsePct = kNaN;
+        return closure;
+    }
+    closure.dbse_m = horizontalDistance(positions.back(), positions.front());
+    closure.dbsePct = closure.lengthUsed_m == 0.0 ? 0.0 : closure.dbse_m / closure.lengthUsed_m * 100.0;
+    return closure;
+}
+
+double stancePathLength(const std::vector<Step>& steps)
+{
+    double length = 0.0;
+    for (std::size_t k = 1; k < steps.size(); ++k)
+        length += horizontalDistance(steps[k].position_m, steps[k - 1].position_m);
+    return length;
+}
+
+DistanceError computeDistanceError(double estimatedPathLength_m, double referenceLength_m)
+{
+    DistanceError error;
+    error.estimated_m = estimatedPathLength_m;
+    error.reference_m = referenceLength_m;
+    error.error_m = std::abs(estimatedPathLength_m - referenceLength_m);
+    // A percentage of a non-positive length means nothing; NaN says so instead of a made-up number.
+    error.errorPct = referenceLength_m > 0.0 ? error.error_m / referenceLength_m * 100.0 : kNaN;
+    return error;
+}
+
+}  // namespace footpath

@@ -1,0 +1,48 @@
+#pragma once
+
+#include "Result.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace footpath {
+
+/// Section 1 of evaluation.md: trajectory error against a reference position at every sample.
+struct ArmseResult {
+    double armse2d_m = 0.0;
+    double armse3d_m = 0.0;
+    std::size_t alignmentIndex = 0;  ///< sample used for the rotation about z
+    double rotation_rad = 0.0;       ///< rotation applied to the estimate
+};
+
+/// estimate and reference must have the same length (>= 1). Mirroring of axes is the caller's job.
+/// Both are translated to start at the origin; the estimate is rotated about z so that its horizontal
+/// position at alignmentIndex (first sample >= 0.8 m from the start, else sample 300 clamped to the
+/// last sample) points like the reference's there (no rotation if either vector has zero length).
+/// Empty or mismatched input does not throw: armse2d_m, armse3d_m and rotation_rad are NaN.
+ArmseResult computeArmse(const std::vector<Eigen::Vector3d>& estimate,
+                         const std::vector<Eigen::Vector3d>& reference);
+
+/// Section 2: loop closure (DBSE). The percentage uses referenceLength_m when > 0, else pathLength_m.
+/// dbse_m is horizontal. dbsePct is 0 when the length used is 0; both are NaN when positions is empty.
+struct LoopClosure {
+    double dbse_m = 0.0;
+    double dbsePct = 0.0;
+    double lengthUsed_m = 0.0;
+};
+LoopClosure computeLoopClosure(const std::vector<Eigen::Vector3d>& positions, double pathLength_m,
+                               double referenceLength_m = 0.0);
+
+/// Section 3: path length as the sum of horizontal distances between consecutive stance positions.
+double stancePathLength(const std::vector<Step>& steps);
+
+struct DistanceError {
+    double estimated_m = 0.0;
+    double reference_m = 0.0;
+    double error_m = 0.0;  ///< |estimated - reference|
+    double errorPct = 0.0; ///< error_m / reference_m * 100; NaN when reference_m <= 0
+};
+DistanceError computeDistanceError(double estimatedPathLength_m, double referenceLength_m);
+
+}  // namespace footpath

@@ -1,0 +1,73 @@
+#pragma once
+
+#include "nav/Parameters.h"
+
+#include <Eigen/Core>
+
+namespace footpath {
+
+/// Nominal navigation state carried by the strapdown mechanization.
+struct NavState {
+    Eigen::Matrix3d bodyToNav = Eigen::Matrix3d::Identity();
+    Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+    Eigen::Vector3d velocity_mps = Eigen::Vector3d::Zero();
+    Eigen::Vector3d gyroBias_radps = Eigen::Vector3d::Zero();
+    Eigen::Vector3d accBias_mps2 = Eigen::Vector3d::Zero();
+};
+
+/// Strapdown mechanization plus the 15-state error-state EKF of Guo 2015 (sections 2.2, 2.4-2.6).
+///
+/// Error state dx = [dphi, dw_b, dr, dv, da_b] with these definitions (method.md, "feedback sign"):
+///   dphi, dr, dv are estimate - truth, with C_est = (I + S(dphi)) C_true;
+///   dw_b, da_b are truth - estimate.
+/// They give exactly the transition blocks of eq. 26 with the signs as printed
+/// (+dt C, +dt I, -dt S(a_n), +dt C), and the feedback r -= dr, v -= dv, biases += d(bias),
+/// C = (2I - S(dphi)) (2I + S(dphi))^-1 C. A static IMU and a constant gyro bias test pin this down.
+class ErrorStateEkf {
+public:
+    static constexpr int kAtt = 0;
+    static constexpr int kGyroBias = 3;
+    static constexpr int kPos = 6;
+    static constexpr int kVel = 9;
+    static constexpr int kAccBias = 12;
+    static constexpr int kStates = 15;
+    using Matrix15 = Eigen::Matrix<double, kStates, kStates>;
+    using Vector15 = Eigen::Matrix<double, kStates, 1>;
+
+    ErrorStateEkf(const Parameters& params, const Eigen::Matrix3d& initialAttitude);
+
+    /// Eq. 6-11 and 32: removes the bias estimates, integrates attitude (Padé), velocity and
+    /// position over dt, and propagates the covariance with the structured transition matrix.
+    void propagate(const Eigen::Vector3d& acc_mps2, const Eigen::Vector3d& gyr_radps, double dt_s);
+
+    /// Eq. 34 ZUPT: the foot is at rest, velocity should be zero.
+    void updateZeroVelocity();
+    /// Eq. 34 ZARU: the foot is at rest, the bias-compensated rate should be zero.
+    void updateZeroAngularRate(const Eigen::Vector3d& gyr_radps);
+    /// ZUPT and ZARU as one 6-row update (eq. 34-35).
+    void updateZeroVelocityAndRate(const Eigen::Vector3d& gyr_radps);
+
+    const NavState& state() const { return state_; }
+    const Matrix15& covariance() const { return covariance_; }
+    /// Navigation-frame specific force of the last propagation (a_n = C f, eq. 27).
+    const Eigen::Vector3d& lastNavAcceleration() const { return lastNavAcc_; }
+
+    /// Transition matrix of eq. 26 for the current attitude and a navigation-frame specific force,
+    /// as a dense matrix: for tests and documentation; propagate() uses the block structure.
+    Matrix15 transitionMatrix(const Eigen::Vector3d& navSpecificForce, double dt_s) const;
+
+private:
+    template <int Rows>
+    void update(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, Rows, 1>& innovation,
+                const Eigen::Matrix<double, Rows, 1>& noiseVariance);
+    void propagateCovariance(const Eigen::Vector3d& navSpecificForce, double dt_s);
+    void applyCorrection(const Vector15& dx);
+
+    Parameters params_;
+    NavState state_;
+    Matrix15 covariance_;
+    Eigen::Matrix<double, kStates, 1> processVariancePerStep_;  ///< at the 10 ms reference step
+    Eigen::Vector3d lastNavAcc_ = Eigen::Vector3d::Zero();
+};
+
+}  // namespace footpath

@@ -1,0 +1,151 @@
+#include "nav/Pipeline.h"
+
+#include "detect/StanceDetector.h"
+#include "metrics/Evaluation.h"
+#include "nav/Alignment.h"
+#include "nav/Attitude.h"
+#include "nav/ErrorStateEkf.h"
+
+#include <chrono>
+#include <sstream>
+
+namespace footpath {
+
+namespace {
+
+constexpr std::size_t kProgressInterval = 8192;
+
+std::string checkInput(const Recording& recording, const Parameters& params)
+{
+    std::ostringstream out;
+    for (const std::string& problem : params.validate())
+        out << problem << "\n";
+    if (recording.samples.size() < 2)
+        out << "the recording has " << recording.samples.size() << " samples; at least 2 are needed\n";
+    std::string text = out.str();
+    if (!text.empty())
+        text.pop_back();
+    return text;
+}
+
+void reserveResult(Result& result, std::size_t n)
+{
+    result.time_s.reserve(n);
+    result.position_m.reserve(n);
+    result.velocity_mps.reserve(n);
+    result.rollPitchYaw_rad.reserve(n);
+    result.gyroBias_radps.reserve(n);
+    result.accBias_mps2.reserve(n);
+}
+
+void recordState(Result& result, double time_s, const NavState& state)
+{
+    result.time_s.push_back(time_s);
+    result.position_m.push_back(state.position_m);
+    result.velocity_mps.push_back(state.velocity_mps);
+    result.rollPitchYaw_rad.push_back(rollPitchYaw(state.bodyToNav));
+    result.gyroBias_radps.push_back(state.gyroBias_radps);
+    result.accBias_mps2.push_back(state.accBias_mps2);
+}
+
+void applyStanceUpdates(ErrorStateEkf& ekf, const ImuSample& sample, const Parameters& params)
+{
+    if (params.use_zupt && params.use_zaru)
+        ekf.updateZeroVelocityAndRate(sample.gyr_radps);
+    else if (params.use_zupt)
+        ekf.updateZeroVelocity();
+    else if (params.use_zaru)
+        ekf.updateZeroAngularRate(sample.gyr_radps);
+}
+
+/// Runs the filter over every sample; returns false if the callback cancelled.
+bool runFilter(const Recording& recording, const Parameters& params, const StanceFlags& flags,
+               const ProgressCallback& progress, Result& result)
+{
+    const std::vector<ImuSample>& samples = recording.samples;
+    const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
+    ErrorStateEkf ekf(params, alignment.bodyToNav);
+    reserveResult(result, samples.size());
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        if (k > 0)
+            ekf.propagate(samples[k].acc_mps2, samples[k].gyr_radps, samples[k].time_s - samples[k - 1].time_s);
+        if (flags.stance[k])
+            applyStanceUpdates(ekf, samples[k], params);
+        recordState(result, samples[k].time_s, ekf.state());
+        if (progress && k % kProgressInterval == 0 && !progress(static_cast<double>(k) / static_cast<double>(samples.size())))
+            return false;
+    }
+    return true;
+}
+
+double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    return (a - b).head<2>().norm();
+}
+
+Step makeStep(const Result& result, std::size_t first, std::size_t last)
+{
+    Step step;
+    step.stanceStart_s = result.time_s[first];
+    step.stanceEnd_s = result.time_s[last - 1];
+    for (std::size_t k = first; k < last; ++k)
+        step.position_m += result.position_m[k];
+    step.position_m /= static_cast<double>(last - first);
+    return step;
+}
+
+}  // namespace
+
+void fillStepsAndSummary(Result& result)
+{
+    const std::vector<std::uint8_t>& stance = result.flags.stance;
+    result.steps.clear();
+    for (std::size_t k = 0; k < stance.size();) {
+        if (!stance[k]) {
+            ++k;
+            continue;
+        }
+        std::size_t end = k;
+        while (end < stance.size() && stance[end])
+            ++end;
+        Step step = makeStep(result, k, end);
+        if (!result.steps.empty()) {
+            const Step& previous = result.steps.back();
+            step.strideLength_m = horizontalDistance(step.position_m, previous.position_m);
+            step.strideDuration_s = step.stanceStart_s - previous.stanceStart_s;
+        }
+        result.steps.push_back(step);
+        k = end;
+    }
+    Summary& summary = result.summary;
+    summary.samples = result.time_s.size();
+    summary.duration_s = result.time_s.empty() ? 0.0 : result.time_s.back() - result.time_s.front();
+    summary.stancePhases = result.steps.size();
+    summary.steps = result.steps.empty() ? 0 : result.steps.size() - 1;
+    summary.pathLength_m = stancePathLength(result.steps);
+    const LoopClosure closure = computeLoopClosure(result.position_m, summary.pathLength_m);
+    summary.endToStart_m = closure.dbse_m;
+    summary.endToStartPct = closure.dbsePct;
+}
+
+PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress)
+{
+    PipelineOutput output;
+    output.error = checkInput(recording, params);
+    if (!output.error.empty())
+        return output;
+    const auto start = std::chrono::steady_clock::now();
+    Result& result = output.result;
+    result.flags = detectStance(recording.samples, params);
+    if (!runFilter(recording, params, result.flags, progress, result)) {
+        result.cancelled = true;
+        return output;
+    }
+    fillStepsAndSummary(result);
+    result.summary.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (progress)
+        progress(1.0);
+    return output;
+}
+
+}  // namespace footpath

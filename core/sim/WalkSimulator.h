@@ -1,0 +1,55 @@
+#pragma once
+
+#include "Recording.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace footpath {
+
+/// How the simulated foot moves and how the simulated sensor errs.
+struct WalkSimulatorConfig {
+    double rate_hz = 100.0;
+    double gravity_mps2 = 9.81;
+    double strideLength_m = 1.4;   ///< target; each segment is split into equal strides near this
+    double stanceDuration_s = 0.45;
+    double swingDuration_s = 0.65;
+    double initialStill_s = 2.0;   ///< foot at rest before the first stride (alignment period)
+    double finalStill_s = 1.0;
+    double footLift_m = 0.12;      ///< peak height of the foot above the straight line during swing
+    double swingPitch_rad = 0.6;   ///< peak foot pitch during swing
+    double accNoiseStd_mps2 = 0.0; ///< white noise per sample
+    double gyrNoiseStd_radps = 0.0;
+    Eigen::Vector3d accBias_mps2 = Eigen::Vector3d::Zero();  ///< constant, body frame
+    Eigen::Vector3d gyrBias_radps = Eigen::Vector3d::Zero();
+    /// The gyro reading is the mean rate over the preceding sample period (a rate-integrating
+    /// output, like Xsens' delta-q or a decimating MEMS gyro) while the accelerometer is sampled
+    /// at the instant. The paper's mechanization is consistent with this model (see
+    /// strapdownStep), and the real recordings measure best with it. false: both instantaneous.
+    bool gyroIntervalAveraged = true;
+    bool withMagnetometer = false;  ///< adds a constant Earth field rotated into the body frame
+    bool withPressure = false;      ///< adds pressure from height by the standard barometric formula
+    std::uint32_t seed = 1;         ///< fixed seed: runs are repeatable
+};
+
+/// A simulated walk: the recording a sensor would produce plus the truth behind it.
+struct SimulatedWalk {
+    Recording recording;
+    std::vector<Eigen::Vector3d> truePosition_m;  ///< per sample, navigation frame, z up, start at 0
+    std::vector<std::uint8_t> trueStance;         ///< per sample, 1 while the foot is at rest
+    double truePathLength_m = 0.0;                ///< horizontal length of the walked path
+};
+
+/// Turns a polyline of foot positions (metres, z up; waypoints[0] is the start) into foot-mounted
+/// IMU signals with stance and swing phases. The foot starts level with yaw 0, so the first
+/// segment should point along +x for the truth to share the estimate's frame.
+SimulatedWalk simulateWalk(const std::vector<Eigen::Vector3d>& waypoints, const WalkSimulatorConfig& config);
+
+/// Path helpers: all start at the origin heading along +x.
+std::vector<Eigen::Vector3d> straightLinePath(double length_m);
+std::vector<Eigen::Vector3d> closedRectanglePath(double sideX_m, double sideY_m);  ///< counter-clockwise
+std::vector<Eigen::Vector3d> stairsPath(int strides, double rise_m, double run_m);  ///< climbs rise_m per stride
+
+}  // namespace footpath

@@ -1,0 +1,564 @@
+// The real footpath-cli binary (FOOTPATH_CLI) run through QProcess on a simulated 10 m straight walk:
+// output files and their formats, the summary's figures, eval's reports, presets and --set, and the
+// exit code 2 with a precise message for every kind of bad input. Inputs and outputs live in a
+// QTemporaryDir.
+
+#include "io/ParameterIo.h"
+#include "nav/Parameters.h"
+#include "sim/WalkSimulator.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <vector>
+
+#ifndef FOOTPATH_CLI
+#error "FOOTPATH_CLI must name the footpath-cli binary"
+#endif
+
+namespace {
+
+constexpr int kTimeoutMs = 120000;
+constexpr int kExitBadInput = 2;
+
+const QString kTrajectoryHeader =
+    QStringLiteral("time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance");
+const QString kStepsHeader =
+    QStringLiteral("step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s");
+const QByteArray kImuHeader = "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
+
+struct Run {
+    bool finished = false;
+    QProcess::ExitStatus status = QProcess::CrashExit;
+    int exitCode = -1;
+    QString out;
+    QString err;
+
+    QByteArray describe() const
+    {
+        return QStringLiteral("exit %1 (%2)\nstdout: %3\nstderr: %4")
+            .arg(exitCode)
+            .arg(QLatin1String(finished ? (status == QProcess::NormalExit ? "normal" : "crashed") : "timed out"))
+            .arg(out, err)
+            .toLocal8Bit();
+    }
+};
+
+Run runCli(const QStringList& args, const QString& workingDirectory = {})
+{
+    QProcess process;
+    process.setProgram(QString::fromUtf8(FOOTPATH_CLI));
+    process.setArguments(args);
+    if (!workingDirectory.isEmpty())
+        process.setWorkingDirectory(workingDirectory);
+    process.start();
+    Run run;
+    run.finished = process.waitForStarted(kTimeoutMs) && process.waitForFinished(kTimeoutMs);
+    if (!run.finished)
+        process.kill();
+    run.status = process.exitStatus();
+    run.exitCode = process.exitCode();
+    run.out = QString::fromLocal8Bit(process.readAllStandardOutput());
+    run.err = QString::fromLocal8Bit(process.readAllStandardError());
+    return run;
+}
+
+bool writeFile(const QString& path, const QByteArray& content)
+{
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(content) == content.size();
+}
+
+QStringList readLines(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return {};
+    QStringList lines = QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'));
+    if (!lines.isEmpty() && lines.last().isEmpty())
+        lines.removeLast();
+    return lines;
+}
+
+QJsonObject readJsonObject(const QByteArray& text, QString* error)
+{
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(text, &parseError);
+    if (document.isNull() || !document.isObject()) {
+        *error = parseError.errorString() + QStringLiteral(" in: ") + QString::fromUtf8(text);
+        return {};
+    }
+    return document.object();
+}
+
+QByteArray number(double value)
+{
+    char buffer[40];
+    const int length = std::snprintf(buffer, sizeof buffer, "%.10g", value);
+    return QByteArray(buffer, length);
+}
+
+QByteArray imuCsv(const std::vector<footpath::ImuSample>& samples)
+{
+    QByteArray text = kImuHeader;
+    for (const footpath::ImuSample& s : samples) {
+        text += number(s.time_s);
+        for (int axis = 0; axis < 3; ++axis)
+            text += ',' + number(s.acc_mps2[axis]);
+        for (int axis = 0; axis < 3; ++axis)
+            text += ',' + number(s.gyr_radps[axis]);
+        text += '\n';
+    }
+    return text;
+}
+
+/// Stance phases in a per-sample 0/1 sequence (runs of ones).
+int countStancePhases(const std::vector<std::uint8_t>& stance)
+{
+    int phases = 0;
+    for (std::size_t k = 0; k < stance.size(); ++k)
+        phases += (stance[k] == 1 && (k == 0 || stance[k - 1] == 0)) ? 1 : 0;
+    return phases;
+}
+
+/// Files in dir (names only), hidden ones included, so a stray temporary would show.
+QStringList filesIn(const QString& dir)
+{
+    return QDir(dir).entryList(QDir::Files | QDir::Dirs | QDir::Hidden | QDir::NoDotAndDotDot, QDir::Name);
+}
+
+QString substitute(QString text, const QString& dir, const QString& walk)
+{
+    return text.replace(QStringLiteral("{dir}"), dir).replace(QStringLiteral("{walk}"), walk);
+}
+
+#define VERIFY_EXIT(run, code)                                                                          \
+    do {                                                                                                \
+        QVERIFY2((run).finished && (run).status == QProcess::NormalExit && (run).exitCode == (code), \
+                 (run).describe().constData());                                                         \
+    } while (false)
+
+}  // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void process_writesTrajectoryStepsAndSummary();
+    void process_summaryFiguresArePlausible();
+    void process_acceptsSetAndPresetFile_data();
+    void process_acceptsSetAndPresetFile();
+    void eval_setOverridesThePresetAndBothAreApplied();
+    void eval_lengthJsonReportsDistanceError();
+    void eval_closedLoopPrintsTableWithDbse();
+    void badInput_exitsTwoWithAPreciseMessage_data();
+    void badInput_exitsTwoWithAPreciseMessage();
+    void failedWrite_leavesNoPartialFile();
+    void help_exitsZeroAndPrintsUsage_data();
+    void help_exitsZeroAndPrintsUsage();
+
+private:
+    QTemporaryDir dir_;
+    QString walkCsv_;
+    std::size_t sampleCount_ = 0;
+    double firstTime_s_ = 0.0;
+    double lastTime_s_ = 0.0;
+    int trueStrides_ = 0;
+    double truePathLength_m_ = 0.0;
+};
+
+void TestCli::initTestCase()
+{
+    QVERIFY2(QFileInfo(QString::fromUtf8(FOOTPATH_CLI)).isExecutable(), FOOTPATH_CLI);
+    QVERIFY(dir_.isValid());
+
+    const footpath::SimulatedWalk walk = footpath::simulateWalk(footpath::straightLinePath(10.0), {});
+    const std::vector<footpath::ImuSample>& samples = walk.recording.samples;
+    QVERIFY(samples.size() > 500);
+    sampleCount_ = samples.size();
+    firstTime_s_ = samples.front().time_s;
+    lastTime_s_ = samples.back().time_s;
+    trueStrides_ = countStancePhases(walk.trueStance) - 1;
+    truePathLength_m_ = walk.truePathLength_m;
+    QVERIFY(trueStrides_ >= 5);
+    QVERIFY(std::abs(truePathLength_m_ - 10.0) < 1e-9);
+
+    walkCsv_ = dir_.filePath(QStringLiteral("walk.csv"));
+    QVERIFY(writeFile(walkCsv_, imuCsv(samples)));
+}
+
+void TestCli::process_writesTrajectoryStepsAndSummary()
+{
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    const QString trajectory = out.filePath(QStringLiteral("t.csv"));
+    const QString steps = out.filePath(QStringLiteral("s.csv"));
+    const QString summary = out.filePath(QStringLiteral("j.json"));
+
+    const Run run = runCli({QStringLiteral("process"), walkCsv_, QStringLiteral("--trajectory"), trajectory,
+                            QStringLiteral("--steps"), steps, QStringLiteral("--summary"), summary});
+    VERIFY_EXIT(run, 0);
+    // Exactly the three outputs, no leftover temporaries.
+    QCOMPARE(filesIn(out.path()), (QStringList{QStringLiteral("j.json"), QStringLiteral("s.csv"),
+                                               QStringLiteral("t.csv")}));
+    // The one-line report on stdout names the input and the sample count.
+    QVERIFY2(run.out.contains(walkCsv_) && run.out.contains(QStringLiteral("%1 samples").arg(sampleCount_)),
+             qPrintable(run.out));
+
+    // Trajectory: the exact header, then one row of 14 numbers per input sample, in input time.
+    const QStringList rows = readLines(trajectory);
+    QVERIFY(!rows.isEmpty());
+    QCOMPARE(rows.first(), kTrajectoryHeader);
+    QCOMPARE(std::size_t(rows.size() - 1), sampleCount_);
+    int stanceRows = 0;
+    for (int r = 1; r < rows.size(); ++r) {
+        const QStringList cells = rows[r].split(QLatin1Char(','));
+        QVERIFY2(cells.size() == 14, qPrintable(QStringLiteral("row %1: %2").arg(r).arg(rows[r])));
+        for (const QString& cell : cells) {
+            bool ok = false;
+            const double value = cell.toDouble(&ok);
+            QVERIFY2(ok && std::isfinite(value), qPrintable(QStringLiteral("row %1: %2").arg(r).arg(rows[r])));
+        }
+        for (int flag = 10; flag < 14; ++flag)
+            QVERIFY2(cells[flag] == QLatin1String("0") || cells[flag] == QLatin1String("1"), qPrintable(rows[r]));
+        stanceRows += cells[13] == QLatin1String("1") ? 1 : 0;
+    }
+    QVERIFY(std::abs(rows[1].section(QLatin1Char(','), 0, 0).toDouble() - firstTime_s_) < 1e-6);
+    QVERIFY(std::abs(rows.last().section(QLatin1Char(','), 0, 0).toDouble() - lastTime_s_) < 1e-6);
+    // A walk has both stance and swing.
+    QVERIFY(stanceRows > 0 && std::size_t(stanceRows) < sampleCount_);
+    // The foot ends about 10 m along x.
+    QVERIFY2(std::abs(rows.last().section(QLatin1Char(','), 1, 1).toDouble() - 10.0) < 0.5, qPrintable(rows.last()));
+
+    // Steps: the exact header, one row per stance phase, numbered from 0.
+    const QStringList stepRows = readLines(steps);
+    QVERIFY(!stepRows.isEmpty());
+    QCOMPARE(stepRows.first(), kStepsHeader);
+    QCOMPARE(int(stepRows.size()) - 1, trueStrides_ + 1);
+    double strideSum_m = 0.0;
+    for (int r = 1; r < stepRows.size(); ++r) {
+        const QStringList cells = stepRows[r].split(QLatin1Char(','));
+        QCOMPARE(int(cells.size()), 8);
+        QCOMPARE(cells[0], QString::number(r - 1));
+        QVERIFY(cells[1].toDouble() <= cells[2].toDouble());
+        strideSum_m += cells[6].toDouble();
+    }
+
+    // Summary: valid JSON whose path length is the sum of the stride lengths.
+    QFile summaryFile(summary);
+    QVERIFY(summaryFile.open(QIODevice::ReadOnly));
+    QString error;
+    const QJsonObject json = readJsonObject(summaryFile.readAll(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QVERIFY(std::abs(json.value(QStringLiteral("path_length_m")).toDouble() - strideSum_m) < 1e-6);
+    QCOMPARE(json.value(QStringLiteral("steps")).toInt(), int(stepRows.size()) - 2);
+}
+
+void TestCli::process_summaryFiguresArePlausible()
+{
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    const QString summary = out.filePath(QStringLiteral("summary.json"));
+    const Run run = runCli({QStringLiteral("process"), walkCsv_, QStringLiteral("--summary"), summary});
+    VERIFY_EXIT(run, 0);
+
+    QFile file(summary);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QString error;
+    const QJsonObject json = readJsonObject(file.readAll(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    for (const char* key : {"samples", "duration_s", "steps", "path_length_m", "end_to_start_m", "end_to_start_pct",
+                            "runtime_s"})
+        QVERIFY2(json.value(QLatin1String(key)).isDouble(), key);
+
+    QCOMPARE(json.value(QStringLiteral("samples")).toInteger(), qint64(sampleCount_));
+    QVERIFY(std::abs(json.value(QStringLiteral("duration_s")).toDouble() - (lastTime_s_ - firstTime_s_)) < 1e-6);
+    QCOMPARE(json.value(QStringLiteral("steps")).toInt(), trueStrides_);
+    const double path_m = json.value(QStringLiteral("path_length_m")).toDouble();
+    QVERIFY2(std::abs(path_m - truePathLength_m_) < 0.5, qPrintable(QString::number(path_m)));
+    // A straight line ends about its own length from the start.
+    const double endToStart_m = json.value(QStringLiteral("end_to_start_m")).toDouble();
+    QVERIFY2(std::abs(endToStart_m - 10.0) < 0.5, qPrintable(QString::number(endToStart_m)));
+    const double pct = json.value(QStringLiteral("end_to_start_pct")).toDouble();
+    QVERIFY2(std::abs(pct - 100.0 * endToStart_m / path_m) < 1e-3, qPrintable(QString::number(pct)));
+    const double runtime_s = json.value(QStringLiteral("runtime_s")).toDouble();
+    QVERIFY2(runtime_s > 0.0 && runtime_s < 60.0, qPrintable(QString::number(runtime_s)));
+}
+
+void TestCli::process_acceptsSetAndPresetFile_data()
+{
+    QTest::addColumn<QStringList>("options");
+    QTest::newRow("--set") << QStringList{QStringLiteral("--set"), QStringLiteral("acc_std_max_mps2=0.3")};
+    QTest::newRow("--params") << QStringList{QStringLiteral("--params"), QStringLiteral("{dir}/preset.json")};
+    QTest::newRow("--params and two --set")
+        << QStringList{QStringLiteral("--params"), QStringLiteral("{dir}/preset.json"), QStringLiteral("--set"),
+                       QStringLiteral("acc_std_max_mps2=0.3"), QStringLiteral("--set"), QStringLiteral("use_zaru=off")};
+}
+
+void TestCli::process_acceptsSetAndPresetFile()
+{
+    QFETCH(QStringList, options);
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    footpath::Parameters preset;
+    preset.acc_std_max_mps2 = 0.4;
+    preset.gyr_max_radps = 1.2;
+    const std::string saved = footpath::saveParameters(out.filePath(QStringLiteral("preset.json")).toStdString(), preset);
+    QVERIFY2(saved.empty(), saved.c_str());
+
+    const QString summary = out.filePath(QStringLiteral("summary.json"));
+    QStringList args{QStringLiteral("process"), walkCsv_, QStringLiteral("--summary"), summary};
+    for (const QString& option : options)
+        args << substitute(option, out.path(), walkCsv_);
+    const Run run = runCli(args);
+    VERIFY_EXIT(run, 0);
+    QVERIFY2(run.err.isEmpty(), qPrintable(run.err));
+
+    QFile file(summary);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QString error;
+    const QJsonObject json = readJsonObject(file.readAll(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(json.value(QStringLiteral("samples")).toInteger(), qint64(sampleCount_));
+    QVERIFY(std::abs(json.value(QStringLiteral("path_length_m")).toDouble() - 10.0) < 0.5);
+}
+
+void TestCli::eval_setOverridesThePresetAndBothAreApplied()
+{
+    QTemporaryDir out;
+    QVERIFY(out.isValid());
+    const QString presetPath = out.filePath(QStringLiteral("no-zaru.json"));
+    footpath::Parameters preset;
+    preset.use_zaru = false;
+    QVERIFY(footpath::saveParameters(presetPath.toStdString(), preset).empty());
+
+    // The preset alone turns ZARU off ...
+    const Run fromPreset = runCli({QStringLiteral("eval"), walkCsv_, QStringLiteral("--json"), QStringLiteral("--params"),
+                                   presetPath});
+    VERIFY_EXIT(fromPreset, 0);
+    QString error;
+    QJsonObject json = readJsonObject(fromPreset.out.toUtf8(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(json.value(QStringLiteral("methods")).toString(), QStringLiteral("ZUPT"));
+    QCOMPARE(json.value(QStringLiteral("parameters")).toString(), presetPath);
+
+    // ... and --set, applied after the preset, turns it back on.
+    const Run overridden = runCli({QStringLiteral("eval"), walkCsv_, QStringLiteral("--json"), QStringLiteral("--params"),
+                                   presetPath, QStringLiteral("--set"), QStringLiteral("use_zaru=on")});
+    VERIFY_EXIT(overridden, 0);
+    json = readJsonObject(overridden.out.toUtf8(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(json.value(QStringLiteral("methods")).toString(), QStringLiteral("ZUPT+ZARU"));
+    QCOMPARE(json.value(QStringLiteral("parameters")).toString(), presetPath + QStringLiteral(" use_zaru=on"));
+
+    // --set alone.
+    const Run setOnly = runCli({QStringLiteral("eval"), walkCsv_, QStringLiteral("--json"), QStringLiteral("--set"),
+                                QStringLiteral("use_zupt=false")});
+    VERIFY_EXIT(setOnly, 0);
+    json = readJsonObject(setOnly.out.toUtf8(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(json.value(QStringLiteral("methods")).toString(), QStringLiteral("ZARU"));
+}
+
+void TestCli::eval_lengthJsonReportsDistanceError()
+{
+    const Run run = runCli({QStringLiteral("eval"), walkCsv_, QStringLiteral("--length"), QStringLiteral("10"),
+                            QStringLiteral("--json")});
+    VERIFY_EXIT(run, 0);
+    QString error;
+    const QJsonObject json = readJsonObject(run.out.toUtf8(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+
+    QCOMPARE(json.value(QStringLiteral("recording")).toString(), walkCsv_);
+    QCOMPARE(json.value(QStringLiteral("parameters")).toString(), QStringLiteral("defaults"));
+    QCOMPARE(json.value(QStringLiteral("methods")).toString(), QStringLiteral("ZUPT+ZARU"));
+    QVERIFY(json.contains(QStringLiteral("distance_error_m")));
+    QCOMPARE(json.value(QStringLiteral("reference_length_m")).toDouble(), 10.0);
+    const double path_m = json.value(QStringLiteral("path_length_m")).toDouble();
+    const double error_m = json.value(QStringLiteral("distance_error_m")).toDouble();
+    QVERIFY2(std::abs(path_m - 10.0) < 0.5, qPrintable(run.out));
+    // |estimate - reference|, printed with 6 significant digits.
+    QVERIFY2(std::abs(error_m - std::abs(path_m - 10.0)) < 1e-4, qPrintable(run.out));
+    QVERIFY2(std::abs(json.value(QStringLiteral("distance_error_pct")).toDouble() - error_m * 10.0) < 1e-3,
+             qPrintable(run.out));
+    QCOMPARE(json.value(QStringLiteral("steps")).toInt(), trueStrides_);
+    // No reference positions and no --closed-loop: no DBSE.
+    QVERIFY(!json.contains(QStringLiteral("dbse_m")));
+}
+
+void TestCli::eval_closedLoopPrintsTableWithDbse()
+{
+    const Run run = runCli({QStringLiteral("eval"), walkCsv_, QStringLiteral("--closed-loop")});
+    VERIFY_EXIT(run, 0);
+    QVERIFY2(run.err.isEmpty(), qPrintable(run.err));
+    QVERIFY2(run.out.contains(QStringLiteral("DBSE")), qPrintable(run.out));
+    QVERIFY2(run.out.contains(QStringLiteral("recording   ") + walkCsv_), qPrintable(run.out));
+    QVERIFY2(run.out.contains(QStringLiteral("methods     ZUPT+ZARU")), qPrintable(run.out));
+
+    // "end-to-start DBSE (m)   <value>": a straight 10 m walk does not close its loop.
+    const QRegularExpression dbseRow(QStringLiteral("end-to-start DBSE \\(m\\)\\s+(-?[0-9.]+)\\s*$"),
+                                     QRegularExpression::MultilineOption);
+    const QRegularExpressionMatch match = dbseRow.match(run.out);
+    QVERIFY2(match.hasMatch(), qPrintable(run.out));
+    QVERIFY2(std::abs(match.captured(1).toDouble() - 10.0) < 0.5, qPrintable(run.out));
+    QVERIFY2(QRegularExpression(QStringLiteral("^path length \\(m\\)\\s+[0-9.]+\\s*$"),
+                                QRegularExpression::MultilineOption)
+                 .match(run.out)
+                 .hasMatch(),
+             qPrintable(run.out));
+}
+
+void TestCli::badInput_exitsTwoWithAPreciseMessage_data()
+{
+    QTest::addColumn<QStringList>("args");      // {dir}: a fresh directory, {walk}: the valid walk
+    QTest::addColumn<QByteArray>("input");      // written to {dir}/in.csv when not empty
+    QTest::addColumn<QStringList>("expected");  // each must appear in stderr
+
+    const QByteArray good = "0.00,0.1,0.2,9.8,0.01,0.02,0.03\n0.01,0.1,0.2,9.8,0.01,0.02,0.03\n"
+                            "0.02,0.1,0.2,9.8,0.01,0.02,0.03\n";
+    const QString in = QStringLiteral("{dir}/in.csv");
+    const QString process = QStringLiteral("process");
+
+    QTest::newRow("non-numeric cell") << QStringList{process, in} << QByteArray(kImuHeader + good + "0.03,0.1,abc,9.8,0,0,0\n")
+                                      << QStringList{in + ":5:3: expected a number in column 'acc_y', got 'abc'"};
+    QTest::newRow("missing column")
+        << QStringList{process, in} << QByteArray("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y\n0,0,0,9.8,0,0\n")
+        << QStringList{in + ":1: missing column(s): gyr_z"};
+    QTest::newRow("time going backwards")
+        << QStringList{process, in} << QByteArray(kImuHeader + good + "0.015,0.1,0.2,9.8,0,0,0\n")
+        << QStringList{in + ":5: time goes backwards"};
+    QTest::newRow("missing input file") << QStringList{process, QStringLiteral("{dir}/absent.csv")} << QByteArray()
+                                        << QStringList{QStringLiteral("{dir}/absent.csv: cannot open the file")};
+    QTest::newRow("unknown option") << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--frobnicate")}
+                                    << QByteArray()
+                                    << QStringList{QStringLiteral("unknown option '--frobnicate'"),
+                                                   QStringLiteral("Usage:")};
+    QTest::newRow("unknown command") << QStringList{QStringLiteral("walk"), QStringLiteral("{walk}")} << QByteArray()
+                                     << QStringList{QStringLiteral("unknown command 'walk'")};
+    QTest::newRow("no input") << QStringList{process} << QByteArray() << QStringList{QStringLiteral("missing INPUT")};
+    QTest::newRow("unknown --set name")
+        << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--set"), QStringLiteral("no_such_knob=1")}
+        << QByteArray() << QStringList{QStringLiteral("--set: unknown parameter 'no_such_knob'")};
+    QTest::newRow("--set without =") << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--set"),
+                                                    QStringLiteral("acc_std_max_mps2")}
+                                     << QByteArray() << QStringList{QStringLiteral("--set expects name=value")};
+    QTest::newRow("--set bad number")
+        << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--set"), QStringLiteral("gyr_max_radps=fast")}
+        << QByteArray() << QStringList{QStringLiteral("parameter 'gyr_max_radps' expects a number, got 'fast'")};
+    QTest::newRow("--set acc_min above acc_max")
+        << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--set"), QStringLiteral("acc_min_mps2=20")}
+        << QByteArray()
+        << QStringList{QStringLiteral("invalid parameters"),
+                       QStringLiteral("acc_min_mps2 (20) must be below acc_max_mps2 (11)")};
+    QTest::newRow("--set out of range")
+        << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--set"), QStringLiteral("gravity_mps2=1")}
+        << QByteArray()
+        << QStringList{QStringLiteral("invalid parameters"), QStringLiteral("gravity_mps2 (1) must be between")};
+    QTest::newRow("missing preset") << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--params"),
+                                                   QStringLiteral("{dir}/nope.json")}
+                                    << QByteArray() << QStringList{QStringLiteral("{dir}/nope.json: cannot open the preset")};
+    QTest::newRow("unwritable trajectory")
+        << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--trajectory"),
+                       QStringLiteral("{dir}/no-such-dir/t.csv")}
+        << QByteArray() << QStringList{QStringLiteral("{dir}/no-such-dir/t.csv: cannot open for writing")};
+    QTest::newRow("unwritable summary")
+        << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--summary"),
+                       QStringLiteral("{dir}/no-such-dir/s.json")}
+        << QByteArray() << QStringList{QStringLiteral("{dir}/no-such-dir/s.json: cannot open for writing")};
+    QTest::newRow("--length not a number")
+        << QStringList{QStringLiteral("eval"), QStringLiteral("{walk}"), QStringLiteral("--length"), QStringLiteral("ten")}
+        << QByteArray() << QStringList{QStringLiteral("--length expects metres > 0, got 'ten'")};
+    QTest::newRow("process with an eval option")
+        << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--closed-loop")} << QByteArray()
+        << QStringList{QStringLiteral("belong to eval")};
+}
+
+void TestCli::badInput_exitsTwoWithAPreciseMessage()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QByteArray, input);
+    QFETCH(QStringList, expected);
+
+    QTemporaryDir work;
+    QVERIFY(work.isValid());
+    QStringList before;
+    if (!input.isEmpty()) {
+        QVERIFY(writeFile(work.filePath(QStringLiteral("in.csv")), input));
+        before << QStringLiteral("in.csv");
+    }
+    QStringList resolved;
+    for (const QString& arg : args)
+        resolved << substitute(arg, work.path(), walkCsv_);
+
+    const Run run = runCli(resolved, work.path());
+    VERIFY_EXIT(run, kExitBadInput);
+    QVERIFY2(run.err.startsWith(QStringLiteral("footpath-cli: ")), run.describe().constData());
+    for (const QString& part : expected) {
+        const QString text = substitute(part, work.path(), walkCsv_);
+        QVERIFY2(run.err.contains(text), qPrintable(QStringLiteral("'%1' not in stderr:\n%2").arg(text, run.err)));
+    }
+    // A failed run reports nothing on stdout and leaves no file behind (not even a partial one).
+    QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
+    QCOMPARE(filesIn(work.path()), before);
+}
+
+void TestCli::failedWrite_leavesNoPartialFile()
+{
+    QTemporaryDir work;
+    QVERIFY(work.isValid());
+    // The trajectory's target is a directory: the data can be written to a temporary file but not
+    // renamed into place. The temporary must be removed and the directory left alone.
+    QVERIFY(QDir(work.path()).mkdir(QStringLiteral("t.csv")));
+    QVERIFY(writeFile(work.filePath(QStringLiteral("t.csv/keep.txt")), "keep"));
+    const QString target = work.filePath(QStringLiteral("t.csv"));
+
+    const Run run = runCli({QStringLiteral("process"), walkCsv_, QStringLiteral("--trajectory"), target});
+    VERIFY_EXIT(run, kExitBadInput);
+    QVERIFY2(run.err.contains(target + QStringLiteral(": ")), qPrintable(run.err));
+    QCOMPARE(filesIn(work.path()), QStringList{QStringLiteral("t.csv")});
+    QVERIFY(QFileInfo(target).isDir());
+    QCOMPARE(filesIn(target), QStringList{QStringLiteral("keep.txt")});
+
+    // An existing output survives a run that fails before writing.
+    const QString existing = work.filePath(QStringLiteral("old.csv"));
+    QVERIFY(writeFile(existing, "previous result\n"));
+    const Run failed = runCli({QStringLiteral("process"), work.filePath(QStringLiteral("absent.csv")),
+                               QStringLiteral("--trajectory"), existing});
+    VERIFY_EXIT(failed, kExitBadInput);
+    QCOMPARE(readLines(existing), QStringList{QStringLiteral("previous result")});
+    QCOMPARE(filesIn(work.path()), (QStringList{QStringLiteral("old.csv"), QStringLiteral("t.csv")}));
+}
+
+void TestCli::help_exitsZeroAndPrintsUsage_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::newRow("help") << QStringList{QStringLiteral("help")};
+    QTest::newRow("--help") << QStringList{QStringLiteral("--help")};
+    QTest::newRow("-h") << QStringList{QStringLiteral("-h")};
+    QTest::newRow("no arguments") << QStringList{};
+}
+
+void TestCli::help_exitsZeroAndPrintsUsage()
+{
+    QFETCH(QStringList, args);
+    const Run run = runCli(args);
+    VERIFY_EXIT(run, 0);
+    QVERIFY2(run.out.startsWith(QStringLiteral("Usage:")), qPrintable(run.out));
+    QVERIFY(run.out.contains(QStringLiteral("footpath-cli process INPUT")));
+    QVERIFY(run.out.contains(QStringLiteral("footpath-cli eval INPUT")));
+    QVERIFY2(run.err.isEmpty(), qPrintable(run.err));
+}
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"

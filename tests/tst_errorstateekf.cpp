@@ -1,0 +1,207 @@
+#include "nav/Attitude.h"
+#include "nav/ErrorStateEkf.h"
+#include "nav/Strapdown.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <QtTest>
+
+using namespace footpath;
+using Vector15 = ErrorStateEkf::Vector15;
+using Matrix15 = ErrorStateEkf::Matrix15;
+
+namespace {
+
+constexpr int kAtt = ErrorStateEkf::kAtt, kGyroBias = ErrorStateEkf::kGyroBias, kPos = ErrorStateEkf::kPos,
+              kVel = ErrorStateEkf::kVel, kAccBias = ErrorStateEkf::kAccBias;
+
+Eigen::Matrix3d rotationOf(const Eigen::Vector3d& phi)
+{
+    return phi.norm() == 0.0 ? Eigen::Matrix3d::Identity()
+                             : Eigen::AngleAxisd(phi.norm(), phi.normalized()).toRotationMatrix();
+}
+
+Eigen::Vector3d rotationVector(const Eigen::Matrix3d& rotation)
+{
+    const Eigen::AngleAxisd angleAxis(rotation);
+    return angleAxis.angle() * angleAxis.axis();
+}
+
+NavState sampleTruth()
+{
+    NavState truth;
+    truth.bodyToNav = rotationFromRollPitchYaw(0.3, -0.2, 1.0);
+    truth.position_m = {1.0, 2.0, 3.0};
+    truth.velocity_mps = {0.5, -0.3, 0.2};
+    truth.gyroBias_radps = {0.01, 0.02, -0.01};
+    truth.accBias_mps2 = {0.1, -0.05, 0.2};
+    return truth;
+}
+
+/// The estimate that differs from truth by dx, with the filter's error definitions.
+NavState perturb(const NavState& truth, const Vector15& dx)
+{
+    NavState estimate = truth;
+    estimate.bodyToNav = rotationOf(dx.segment<3>(kAtt)) * truth.bodyToNav;
+    estimate.gyroBias_radps -= dx.segment<3>(kGyroBias);
+    estimate.position_m += dx.segment<3>(kPos);
+    estimate.velocity_mps += dx.segment<3>(kVel);
+    estimate.accBias_mps2 -= dx.segment<3>(kAccBias);
+    return estimate;
+}
+
+Vector15 errorBetween(const NavState& estimate, const NavState& truth)
+{
+    Vector15 dx;
+    dx << rotationVector(estimate.bodyToNav * truth.bodyToNav.transpose()),
+        truth.gyroBias_radps - estimate.gyroBias_radps, estimate.position_m - truth.position_m,
+        estimate.velocity_mps - truth.velocity_mps, truth.accBias_mps2 - estimate.accBias_mps2;
+    return dx;
+}
+
+Parameters zeroInitialUncertainty()
+{
+    Parameters params;
+    params.p0_gyro_bias_radps = 0.0;
+    params.p0_acc_bias_mps2 = 0.0;
+    return params;
+}
+
+}  // namespace
+
+class TestErrorStateEkf : public QObject {
+    Q_OBJECT
+private slots:
+    void transitionMatrixMatchesFiniteDifferencesOfTheMechanization_data()
+    {
+        QTest::addColumn<int>("state");
+        for (int i = 0; i < ErrorStateEkf::kStates; ++i)
+            QTest::newRow(qPrintable(QString("error state %1").arg(i))) << i;
+    }
+    void transitionMatrixMatchesFiniteDifferencesOfTheMechanization()
+    {
+        QFETCH(int, state);
+        const double dt = 1e-4, delta = 1e-7;
+        const Eigen::Vector3d acc(1.0, 2.0, 9.5), gyr(0.5, -1.0, 2.0);
+        Vector15 dx = Vector15::Zero();
+        dx(state) = delta;
+
+        NavState truth = sampleTruth();
+        NavState estimate = perturb(truth, dx);
+        strapdownStep(truth, acc, gyr, dt, 9.81);
+        const Eigen::Vector3d navForce = strapdownStep(estimate, acc, gyr, dt, 9.81);
+        const Vector15 propagated = errorBetween(estimate, truth);
+
+        const ErrorStateEkf ekf(Parameters(), estimate.bodyToNav);
+        const Matrix15 phi = ekf.transitionMatrix(navForce, dt);
+        const Vector15 predicted = phi * dx;
+        // The first-order part (Phi - I) dx must match to a few per mille; the rest is O(dt^2) and
+        // O(delta^2). A sign error in any block makes the mismatch as large as the block itself.
+        const double firstOrder = (predicted - dx).norm();
+        const double mismatch = (propagated - predicted).norm();
+        QVERIFY2(mismatch <= 2e-2 * firstOrder + 1e-15,
+                 qPrintable(QString("mismatch %1 vs first-order %2").arg(mismatch).arg(firstOrder)));
+    }
+
+    void structuredPropagationEqualsDenseProduct()
+    {
+        Parameters params;
+        params.q_gyro_bias_radps = 1e-5;
+        params.q_pos_m = 1e-5;
+        params.q_acc_bias_mps2 = 1e-5;
+        ErrorStateEkf ekf(params, rotationFromRollPitchYaw(0.1, 0.2, 0.3));
+        const double dt = 0.005;
+        // A few steps and updates make the covariance dense before the comparison.
+        for (int k = 0; k < 20; ++k) {
+            ekf.propagate(Eigen::Vector3d(1.0, -2.0, 9.0), Eigen::Vector3d(0.3, 0.1, -0.2), dt);
+            if (k % 5 == 0)
+                ekf.updateZeroVelocityAndRate(Eigen::Vector3d(0.01, 0.0, 0.0));
+        }
+        const Matrix15 before = ekf.covariance();
+        ekf.propagate(Eigen::Vector3d(2.0, 1.0, 8.0), Eigen::Vector3d(-0.5, 0.4, 1.0), dt);
+        const Matrix15 phi = ekf.transitionMatrix(ekf.lastNavAcceleration(), dt);
+        Vector15 q;
+        q << Eigen::Vector3d::Constant(1e-8), Eigen::Vector3d::Constant(1e-10), Eigen::Vector3d::Constant(1e-10),
+            Eigen::Vector3d::Constant(1e-8), Eigen::Vector3d::Constant(1e-10);
+        const Matrix15 dense = phi * before * phi.transpose() + Matrix15(q.asDiagonal()) * (dt / 0.01);
+        QVERIFY2((ekf.covariance() - dense).norm() < 1e-12 * dense.norm(),
+                 qPrintable(QString::number((ekf.covariance() - dense).norm())));
+    }
+
+    void staticImuWithGyroBiasEstimatesTheBiasAndStaysPut()
+    {
+        const Eigen::Vector3d trueBias(0.01, -0.02, 0.005);
+        const Eigen::Matrix3d attitude = rotationFromRollPitchYaw(0.05, -0.1, 0.0);
+        const Eigen::Vector3d acc = attitude.transpose() * Eigen::Vector3d(0, 0, 9.81);
+        ErrorStateEkf ekf(Parameters(), attitude);
+        for (int k = 0; k < 6000; ++k) {  // one minute at 100 Hz
+            ekf.propagate(acc, trueBias, 0.01);
+            ekf.updateZeroVelocityAndRate(trueBias);
+        }
+        const NavState& state = ekf.state();
+        QVERIFY2((state.gyroBias_radps - trueBias).norm() < 1e-4,
+                 qPrintable(QString::number((state.gyroBias_radps - trueBias).norm())));
+        QVERIFY2(state.position_m.norm() < 1e-3, qPrintable(QString::number(state.position_m.norm())));
+        // At rest a tilt error and a horizontal accelerometer bias look alike; the filter may keep
+        // a little of either, but their sum must not move the IMU (checked above) nor reach 0.03 deg.
+        QVERIFY(rotationVector(state.bodyToNav * attitude.transpose()).head<2>().norm() < 5e-4);
+    }
+
+    void zuptAloneKeepsAStaticImuInPlace()
+    {
+        const Eigen::Vector3d acc(0.0, 0.0, 9.81);
+        ErrorStateEkf ekf(Parameters(), Eigen::Matrix3d::Identity());
+        for (int k = 0; k < 6000; ++k) {
+            ekf.propagate(acc + Eigen::Vector3d(0.0, 0.0, 0.01 * ((k % 7) - 3)), Eigen::Vector3d::Zero(), 0.01);
+            ekf.updateZeroVelocity();
+        }
+        QVERIFY(ekf.state().position_m.norm() < 1e-3);
+        QVERIFY(ekf.state().velocity_mps.norm() < 1e-3);
+    }
+
+    void josephUpdateKeepsCovarianceSymmetricPositiveDefinite()
+    {
+        Parameters params;
+        params.p0_pos_m = 1.0;
+        params.p0_vel_mps = 1.0;
+        params.p0_att_rad = 0.1;
+        ErrorStateEkf ekf(params, Eigen::Matrix3d::Identity());
+        ekf.propagate(Eigen::Vector3d(3.0, 0.0, 9.81), Eigen::Vector3d(0.0, 0.0, 1.0), 0.01);
+        const double velocityVarianceBefore = ekf.covariance()(kVel, kVel);
+        ekf.updateZeroVelocityAndRate(Eigen::Vector3d::Zero());
+        const Matrix15& p = ekf.covariance();
+        QCOMPARE((p - p.transpose()).norm(), 0.0);
+        const Eigen::SelfAdjointEigenSolver<Matrix15> eigen(p);
+        QVERIFY(eigen.eigenvalues().minCoeff() > -1e-15);
+        QVERIFY(p(kVel, kVel) < 0.01 * velocityVarianceBefore);
+        QVERIFY(p(kVel, kVel) < 1e-4 + 1e-12);  // cannot beat R_zupt = 0.01^2
+    }
+
+    void zuptPullsVelocityToZeroAndCorrectsPosition()
+    {
+        Parameters params = zeroInitialUncertainty();
+        params.q_vel_mps = 0.1;
+        ErrorStateEkf ekf(params, Eigen::Matrix3d::Identity());
+        for (int k = 0; k < 10; ++k)
+            ekf.propagate(Eigen::Vector3d(1.0, 0.0, 9.81), Eigen::Vector3d::Zero(), 0.01);
+        const double speedBefore = ekf.state().velocity_mps.x();
+        const double positionBefore = ekf.state().position_m.x();
+        QVERIFY(speedBefore > 0.09);
+        ekf.updateZeroVelocity();
+        QVERIFY(std::abs(ekf.state().velocity_mps.x()) < 0.05 * speedBefore);
+        // Position and velocity errors are correlated through Phi(r, v): the update moves x back.
+        QVERIFY(ekf.state().position_m.x() < positionBefore);
+    }
+
+    void zeroTimeStepIsIgnored()
+    {
+        ErrorStateEkf ekf(Parameters(), Eigen::Matrix3d::Identity());
+        const Matrix15 before = ekf.covariance();
+        ekf.propagate(Eigen::Vector3d(5.0, 0.0, 9.81), Eigen::Vector3d(1.0, 0.0, 0.0), 0.0);
+        QCOMPARE(ekf.state().velocity_mps.norm(), 0.0);
+        QCOMPARE((ekf.covariance() - before).norm(), 0.0);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestErrorStateEkf)
+#include "tst_errorstateekf.moc"

@@ -1,0 +1,202 @@
+// The whole pipeline on simulated walks with known truth.
+#include "metrics/Evaluation.h"
+#include "nav/Pipeline.h"
+#include "sim/WalkSimulator.h"
+
+#include <QtTest>
+
+using namespace footpath;
+
+namespace {
+
+Result run(const Recording& recording, const Parameters& params = Parameters())
+{
+    PipelineOutput output = runPipeline(recording, params);
+    if (!output.error.empty())
+        qFatal("%s", output.error.c_str());
+    return std::move(output.result);
+}
+
+/// An Xsens MTi-class IMU at 100 Hz, the device the product targets: white noise of its data-sheet
+/// density over a 50 Hz bandwidth (about 120 ug/sqrt(Hz) and 0.01 deg/s/sqrt(Hz)) and constant
+/// biases of about 1 mg and 0.1 deg/s left after factory calibration.
+WalkSimulatorConfig realisticSensor(double rate_hz = 100.0, std::uint32_t seed = 1)
+{
+    WalkSimulatorConfig config;
+    config.rate_hz = rate_hz;
+    config.accNoiseStd_mps2 = 0.01;
+    config.gyrNoiseStd_radps = 0.0015;
+    config.accBias_mps2 = Eigen::Vector3d(0.0075, -0.005, 0.01);
+    config.gyrBias_radps = Eigen::Vector3d(0.0016, -0.0012, 0.002);
+    config.seed = seed;
+    return config;
+}
+
+/// A low-cost MEMS IMU: four times the MTi-class bias and twice its noise.
+WalkSimulatorConfig lowCostSensor(std::uint32_t seed)
+{
+    WalkSimulatorConfig config = realisticSensor(100.0, seed);
+    config.accNoiseStd_mps2 *= 2.0;
+    config.gyrNoiseStd_radps *= 2.0;
+    config.accBias_mps2 *= 4.0;
+    config.gyrBias_radps *= 2.5;
+    return config;
+}
+
+double rectangleClosurePct(const WalkSimulatorConfig& config)
+{
+    const SimulatedWalk walk = simulateWalk(closedRectanglePath(30.0, 20.0), config);
+    const Result result = run(walk.recording);
+    return computeLoopClosure(result.position_m, result.summary.pathLength_m, 100.0).dbsePct;
+}
+
+
+std::size_t countStancePhases(const std::vector<std::uint8_t>& stance)
+{
+    std::size_t phases = 0;
+    for (std::size_t k = 0; k < stance.size(); ++k)
+        phases += stance[k] && (k == 0 || !stance[k - 1]);
+    return phases;
+}
+
+}  // namespace
+
+class TestPipelineSynthetic : public QObject {
+    Q_OBJECT
+private slots:
+    void closedRectangleOfHundredMetresClosesWithinHalfPercent()
+    {
+        // Noise makes one walk a sample of a distribution: the bound applies to the mean of eight
+        // seeds, and every seed is printed.
+        double sum = 0.0;
+        const int seeds = 8;
+        for (std::uint32_t seed = 1; seed <= seeds; ++seed) {
+            const SimulatedWalk walk = simulateWalk(closedRectanglePath(30.0, 20.0), realisticSensor(100.0, seed));
+            QVERIFY(std::abs(walk.truePathLength_m - 100.0) < 1e-9);
+            const Result result = run(walk.recording);
+            const LoopClosure closure = computeLoopClosure(result.position_m, result.summary.pathLength_m, 100.0);
+            const ArmseResult armse = computeArmse(result.position_m, walk.truePosition_m);
+            qInfo("simulated 100 m rectangle, MTi-class errors, seed %u: DBSE %.3f m = %.3f %%, path %.2f m, "
+                  "ARMSE2D %.3f m, %zu steps",
+                  seed, closure.dbse_m, closure.dbsePct, result.summary.pathLength_m, armse.armse2d_m,
+                  result.summary.steps);
+            QVERIFY(std::abs(result.summary.pathLength_m - 100.0) < 1.0);
+            sum += closure.dbsePct;
+        }
+        const double mean = sum / seeds;
+        qInfo("mean DBSE over %d seeds: %.3f %% (bound 0.5 %%)", seeds, mean);
+        QVERIFY2(mean <= 0.5, qPrintable(QString("mean DBSE %1 %").arg(mean)));
+    }
+
+    void noiselessRectangleClosesWithinThreeTenthsOfAPercent()
+    {
+        // What the mechanization alone leaves at 100 Hz, so a regression there shows by itself.
+        WalkSimulatorConfig perfect;
+        const double pct = rectangleClosurePct(perfect);
+        qInfo("noiseless 100 m rectangle at 100 Hz: DBSE %.3f %%", pct);
+        QVERIFY(pct <= 0.3);
+    }
+
+    void lowCostSensorTablePrinted()
+    {
+        // Known weakness, printed for the next issues: a lateral accelerometer bias looks like roll
+        // at rest, and while the foot pitches a yaw-axis gyro bias turns about the same axis, so
+        // the filter learns a wrong yaw bias and the heading drifts.
+        for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+            const double pct = rectangleClosurePct(lowCostSensor(seed));
+            QVERIFY(std::isfinite(pct));
+            qInfo("simulated 100 m rectangle, low-cost MEMS errors, seed %u: DBSE %.3f %%", seed, pct);
+        }
+    }
+
+    void detectorFindsEveryStanceOfTheSimulatedWalk()
+    {
+        const SimulatedWalk walk = simulateWalk(straightLinePath(20.0), realisticSensor());
+        const Result result = run(walk.recording);
+        QCOMPARE(result.summary.stancePhases, countStancePhases(walk.trueStance));
+        QCOMPARE(result.summary.steps, countStancePhases(walk.trueStance) - 1);
+    }
+
+    void straightLineLengthWithinOnePercent()
+    {
+        const SimulatedWalk walk = simulateWalk(straightLinePath(50.0), realisticSensor());
+        const Result result = run(walk.recording);
+        const DistanceError error = computeDistanceError(result.summary.pathLength_m, 50.0);
+        qInfo("simulated 50 m line: path %.3f m, error %.3f %%", result.summary.pathLength_m, error.errorPct);
+        QVERIFY(error.errorPct < 1.0);
+    }
+
+    void stairsClimbTheirHeight()
+    {
+        const SimulatedWalk walk = simulateWalk(stairsPath(10, 0.34, 0.6), realisticSensor());
+        const Result result = run(walk.recording);
+        const double climbed = result.steps.back().position_m.z() - result.steps.front().position_m.z();
+        qInfo("simulated stairs: climbed %.3f m of %.3f m", climbed, walk.truePosition_m.back().z());
+        QVERIFY(std::abs(climbed - walk.truePosition_m.back().z()) < 0.05 * walk.truePosition_m.back().z());
+    }
+
+    void rateDoesNotChangeTheEstimate()
+    {
+        // Windows and noise are given per second, so 200 Hz must give the same walk as 100 Hz.
+        const Result at100 = run(simulateWalk(closedRectanglePath(10.0, 5.0), realisticSensor(100.0)).recording);
+        const Result at200 = run(simulateWalk(closedRectanglePath(10.0, 5.0), realisticSensor(200.0)).recording);
+        QCOMPARE(at200.summary.steps, at100.summary.steps);
+        QVERIFY(std::abs(at200.summary.pathLength_m - at100.summary.pathLength_m) < 0.1);
+    }
+
+    void everySampleHasEveryOutput()
+    {
+        const SimulatedWalk walk = simulateWalk(straightLinePath(5.0), realisticSensor());
+        const Result result = run(walk.recording);
+        const std::size_t n = walk.recording.samples.size();
+        QCOMPARE(result.summary.samples, n);
+        for (std::size_t size : {result.time_s.size(), result.position_m.size(), result.velocity_mps.size(),
+                                 result.rollPitchYaw_rad.size(), result.gyroBias_radps.size(),
+                                 result.accBias_mps2.size(), result.flags.c1.size(), result.flags.c2.size(),
+                                 result.flags.c3.size(), result.flags.c.size(), result.flags.stance.size()})
+            QCOMPARE(size, n);
+        QCOMPARE(result.position_m.front().norm(), 0.0);
+    }
+
+    void gyroBiasIsEstimated()
+    {
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(30.0, 20.0), realisticSensor());
+        const Result result = run(walk.recording);
+        const Eigen::Vector3d error = result.gyroBias_radps.back() - realisticSensor().gyrBias_radps;
+        QVERIFY2(error.norm() < 1e-3, qPrintable(QString::number(error.norm())));
+    }
+
+    void cancelStopsTheRun()
+    {
+        const SimulatedWalk walk = simulateWalk(straightLinePath(200.0), realisticSensor());  // > 8192 samples
+        int calls = 0;
+        PipelineOutput output = runPipeline(walk.recording, Parameters(), [&](double) { return ++calls < 2; });
+        QVERIFY(output.result.cancelled);
+        QVERIFY(output.result.time_s.size() < walk.recording.samples.size());
+        QCOMPARE(calls, 2);
+    }
+
+    void progressReachesOne()
+    {
+        const SimulatedWalk walk = simulateWalk(straightLinePath(5.0), realisticSensor());
+        double last = -1.0;
+        const PipelineOutput output = runPipeline(walk.recording, Parameters(), [&](double f) {
+            last = f;
+            return true;
+        });
+        QVERIFY(!output.result.cancelled);
+        QCOMPARE(last, 1.0);
+    }
+
+    void invalidInputIsAnErrorNotACrash()
+    {
+        Parameters bad;
+        bad.acc_min_mps2 = 12.0;
+        const SimulatedWalk walk = simulateWalk(straightLinePath(2.0), realisticSensor());
+        QVERIFY(QString::fromStdString(runPipeline(walk.recording, bad).error).contains("acc_min_mps2"));
+        QVERIFY(QString::fromStdString(runPipeline(Recording(), Parameters()).error).contains("at least 2"));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestPipelineSynthetic)
+#include "tst_pipeline_synthetic.moc"
