@@ -112,6 +112,11 @@ void TestDelimitedTextReader::headerCsv_parsesEveryValueAndTheSampleCount_data()
                                          "0.00,0.1,-0.2,9.81,0.01,-0.02,0.03\n"
                                          "0.01,1.5,2.5,-3.5,4.5,5.5,6.5\n"
                                          "0.02,-1e-3,2E2,0,7,8,9\n");
+    QTest::newRow("UTF-8 byte-order mark (spreadsheet export)")
+        << QByteArray("\xEF\xBB\xBFtime_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n"
+                      "0.00,0.1,-0.2,9.81,0.01,-0.02,0.03\n"
+                      "0.01,1.5,2.5,-3.5,4.5,5.5,6.5\n"
+                      "0.02,-1e-3,2E2,0,7,8,9\n");
     QTest::newRow("tab") << QByteArray("time_s\tacc_x\tacc_y\tacc_z\tgyr_x\tgyr_y\tgyr_z\n"
                                        "0.00\t0.1\t-0.2\t9.81\t0.01\t-0.02\t0.03\n"
                                        "0.01\t1.5\t2.5\t-3.5\t4.5\t5.5\t6.5\n"
@@ -384,12 +389,17 @@ void TestDelimitedTextReader::errors_reportMessageLineAndColumn_data()
         << QStringList{"time_s", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyro_z"} << none << 0 << 0
         << QStringList{"unknown column role 'gyro_z'", "expected one of time_s, time_ms, time_us, acc_x",
                        "pressure_pa, skip"};
-    // A column-map problem is not tied to a line of the file; -1: the line is not checked here
-    // (the reader reports line 1 for a missing role but line 0 for an unknown one).
+    // A column-map problem is not tied to a line of the file.
     QTest::newRow("column map missing a role")
         << QByteArray("0,0,0,9.8,0,0,0\n")
-        << QStringList{"time_s", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "skip"} << none << -1 << 0
-        << QStringList{"missing column", "gyr_z"};
+        << QStringList{"time_s", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "skip"} << none << 0 << 0
+        << QStringList{"the column map lacks: gyr_z", "it has: time_s, acc_x"};
+    QTest::newRow("reference columns with a column map")
+        << QByteArray("0,0,0,9.8,0,0,0,1,2,3\n")
+        << QStringList{"time_s", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "skip", "skip", "skip"}
+        << QStringList{"a", "b", "c"} << 0 << 0 << QStringList{"reference columns are named by the header row"};
+    QTest::newRow("only blank lines") << QByteArray("\n\n  \n") << none << none << 0 << 0
+                                      << QStringList{"the file is empty"};
     QTest::newRow("reference column not in header")
         << QByteArray("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,vicon_x_m,vicon_y_m,vicon_z_m\n0,0,0,9.8,0,0,0,1,2,3\n")
         << none << QStringList{"vicon_x_m", "-vicon_q_m", "vicon_z_m"} << 1 << 0

@@ -161,13 +161,14 @@ bool TextParser::nextContentLine(std::string& line)
 
 bool TextParser::layoutFromMap()
 {
+    if (!options_.referenceColumns.empty())
+        return fail(0, "reference columns are named by the header row; this file is read with a column map");
     for (const std::string& entry : options_.columnMap) {
         const std::optional<Role> role = roleByName(lower(trim(entry)));
         if (!role) {
             std::string known;
             for (const std::string& name : columnRoleNames())
                 known += (known.empty() ? "" : ", ") + name;
-            lineNumber_ = 0;
             return fail(0, "unknown column role '" + entry + "' in the column map; expected one of " + known);
         }
         layout_.columns.push_back({*role, timeScale(*role)});
@@ -227,6 +228,8 @@ bool TextParser::checkRequiredRoles()
         std::string found;
         for (const std::string& name : layout_.names)
             found += (found.empty() ? "" : ", ") + name;
+        if (!options_.columnMap.empty())
+            return fail(0, "the column map lacks:" + missing + "; it has: " + found);
         return fail(0, "missing column(s):" + missing + "; the header has: " + found);
     }
     layout_.hasMag = counts[Role::MagX] == 1 && counts[Role::MagY] == 1 && counts[Role::MagZ] == 1;
@@ -287,14 +290,22 @@ TextReadResult TextParser::run()
 {
     std::string line;
     if (!nextContentLine(line)) {
+        lineNumber_ = 0;
         fail(0, "the file is empty: expected a header row and numeric samples");
         return std::move(result_);
     }
+    // Spreadsheet "CSV UTF-8" exports start with a byte-order mark.
+    if (line.rfind("\xEF\xBB\xBF", 0) == 0)
+        line.erase(0, 3);
     delimiter_ = detectDelimiter(line);
     const bool hasHeader = options_.columnMap.empty();
+    const std::size_t firstLine = lineNumber_;
+    if (!hasHeader)
+        lineNumber_ = 0;  // problems with the map are problems of the option, not of a line
     const bool laidOut = hasHeader ? layoutFromHeader(line) : layoutFromMap();
     if (!laidOut || !checkRequiredRoles())
         return std::move(result_);
+    lineNumber_ = firstLine;
     bool more = hasHeader ? nextContentLine(line) : true;
     for (; more; more = nextContentLine(line))
         if (!parseRow(line) || !reportProgress())
