@@ -1,0 +1,45 @@
+#pragma once
+
+#include "Recording.h"
+#include "Result.h"
+#include "nav/Parameters.h"
+
+#include <QFutureWatcher>
+#include <QObject>
+
+#include <atomic>
+#include <memory>
+
+namespace footpath {
+
+/// Runs the estimation pipeline off the GUI thread. A new run cancels the one still going through
+/// the pipeline's cancel callback; only the newest run's result is reported.
+class PipelineRunner : public QObject {
+    Q_OBJECT
+public:
+    explicit PipelineRunner(QObject* parent = nullptr);
+    ~PipelineRunner() override;
+
+    void run(std::shared_ptr<const Recording> recording, const Parameters& params);
+    bool isRunning() const;
+
+signals:
+    void finished(std::shared_ptr<const footpath::Result> result);
+    void failed(const QString& message);
+
+private:
+    struct Outcome {
+        std::shared_ptr<const Result> result;
+        QString error;
+        bool cancelled = false;
+    };
+    void onRunFinished();
+
+    QFutureWatcher<Outcome> watcher_;
+    std::shared_ptr<std::atomic_bool> cancelCurrent_;
+    std::shared_ptr<const Recording> pendingRecording_;
+    Parameters pendingParams_;
+    bool hasPending_ = false;
+};
+
+}  // namespace footpath
