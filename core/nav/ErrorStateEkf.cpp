@@ -79,7 +79,7 @@ ErrorStateEkf::Matrix15 ErrorStateEkf::transitionMatrix(const Eigen::Vector3d& n
 void ErrorStateEkf::propagateCovariance(const Eigen::Vector3d& navSpecificForce, double dt_s)
 {
     // Phi = I + four 3x3 blocks, so Phi P Phi^T needs 20 products of 3x3 blocks instead of the
-    // dense 15x15 triple product (about 7x fewer operations; BM_EkfPropagate shows it). Phi leaves
+    // dense 15x15 triple product (BM_EkfPropagate against BM_DenseCovariancePropagation). Phi leaves
     // the bias rows alone, so only the attitude, position and velocity rows of M = Phi P change;
     // P' = M Phi^T is symmetric, so of the blocks among those three states only the upper
     // triangle is computed, and the bias blocks of P' are blocks of M.
