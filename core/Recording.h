@@ -21,11 +21,23 @@ struct ImuSample {
     bool hasPressure() const { return !std::isnan(pressure_pa); }
 };
 
+/// An inclusive range of sample indices.
+struct SampleRange {
+    std::size_t first = 0;
+    std::size_t last = 0;
+};
+
 /// Reference data that may travel with a recording (for evaluation only).
 struct Reference {
     std::vector<Eigen::Vector3d> positions_m;  ///< one per sample, empty if none
     bool closedLoop = false;                   ///< the walk ends where it started
     double knownLength_m = 0.0;                ///< 0 if unknown
+    /// Hand-labelled gait events: each range spans one swing (toe-off to heel-strike); the samples
+    /// between consecutive swings are stance. Indices refer to recording.samples.
+    std::vector<SampleRange> swings;
+    bool hasTrialBoundaries = false;
+    SampleRange trialBoundaries;  ///< the part of the recording the gait events cover
+    std::vector<std::string> notes;  ///< where each piece came from ("known length 72 m from the file name")
 };
 
 /// A recording as the pipeline consumes it: samples plus what is known about them.

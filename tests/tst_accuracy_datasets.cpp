@@ -1,7 +1,7 @@
 // Accuracy of the default pipeline on the real recordings in ../shared/datasets, with the metrics
 // of evaluation.md. Each bound comes from the foundation issue; every table is printed, however bad.
 #include "TestData.h"
-#include "io/DelimitedTextReader.h"
+#include "io/Import.h"
 #include "metrics/Evaluation.h"
 #include "nav/Pipeline.h"
 
@@ -11,20 +11,18 @@ using namespace footpath;
 
 namespace {
 
-Recording readOrFail(const QString& path, const TextReadOptions& options)
+Recording readOrFail(const QString& path, const ImportOptions& options)
 {
-    TextReadResult read = readDelimitedText(path.toStdString(), options);
+    ImportResult read = importRecording(path.toStdString(), options);
     if (!read.ok())
         qFatal("%s", read.error->text().c_str());
     return std::move(read.recording);
 }
 
+/// pyshoe-vicon files are recognised and carry their (mirrored) VICON reference.
 Recording readPyshoe(const QString& path)
 {
-    TextReadOptions options;
-    // The VICON horizontal axes are mirrored relative to a right-handed z-up frame (datasets/README).
-    options.referenceColumns = {"vicon_x_m", "-vicon_y_m", "vicon_z_m"};
-    return readOrFail(path, options);
+    return readOrFail(path, ImportOptions());
 }
 
 /// ecg-xmu files have no header: time [ms], acc, gyro, then pressure and three magnetometer counts
@@ -38,7 +36,7 @@ Recording readEcgXmu(const QString& path)
     while (line.trimmed().isEmpty() && !file.atEnd())
         line = file.readLine();
     const auto columns = line.simplified().replace(',', ' ').split(' ').size();
-    TextReadOptions options;
+    ImportOptions options;
     options.columnMap = {"time_ms", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"};
     if (columns >= 8)
         options.columnMap.push_back("pressure_pa");

@@ -430,8 +430,8 @@ void TestCli::badInput_exitsTwoWithAPreciseMessage_data()
     const QString in = QStringLiteral("{dir}/in.csv");
     const QString process = QStringLiteral("process");
 
-    QTest::newRow("non-numeric cell") << QStringList{process, in} << QByteArray(kImuHeader + good + "0.03,0.1,abc,9.8,0,0,0\n")
-                                      << QStringList{in + ":5:3: expected a number in column 'acc_y', got 'abc'"};
+    QTest::newRow("non-numeric cell") << QStringList{process, in} << QByteArray(kImuHeader + "0.03,0.1,abc,9.8,0,0,0\n")
+                                      << QStringList{in + ":2:3: expected a number in column 'acc_y', got 'abc'"};
     QTest::newRow("missing column")
         << QStringList{process, in} << QByteArray("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y\n0,0,0,9.8,0,0\n")
         << QStringList{in + ":1: missing column(s): gyr_z"};

@@ -2,7 +2,9 @@
 // columns, reference columns, headerless files with a column map, delimiters, and the error
 // messages a user sees (file:line:column: message).
 
+#include "io/ColumnNames.h"
 #include "io/DelimitedTextReader.h"
+#include "io/Import.h"
 
 #include <QDir>
 #include <QFile>
@@ -16,8 +18,8 @@
 
 using footpath::ImuSample;
 using footpath::ReadError;
-using footpath::TextReadOptions;
-using footpath::TextReadResult;
+using footpath::ImportOptions;
+using footpath::ImportResult;
 
 namespace {
 
@@ -31,21 +33,21 @@ std::vector<std::string> toStd(const QStringList& list)
     return out;
 }
 
-TextReadResult parse(const QByteArray& text, const TextReadOptions& options = {})
+ImportResult parse(const QByteArray& text, const ImportOptions& options = {})
 {
     std::istringstream in(text.toStdString());
-    return footpath::parseDelimitedText(in, kSource, options, static_cast<std::size_t>(text.size()));
+    return footpath::readDelimitedText(in, kSource, options, static_cast<std::size_t>(text.size()));
 }
 
-TextReadResult parse(const QByteArray& text, const QStringList& columnMap, const QStringList& referenceColumns)
+ImportResult parse(const QByteArray& text, const QStringList& columnMap, const QStringList& referenceColumns)
 {
-    TextReadOptions options;
+    ImportOptions options;
     options.columnMap = toStd(columnMap);
     options.referenceColumns = toStd(referenceColumns);
     return parse(text, options);
 }
 
-QString errorText(const TextReadResult& result)
+QString errorText(const ImportResult& result)
 {
     return result.error ? QString::fromStdString(result.error->text()) : QStringLiteral("<no error>");
 }
@@ -149,7 +151,7 @@ void TestDelimitedTextReader::headerCsv_parsesEveryValueAndTheSampleCount_data()
 void TestDelimitedTextReader::headerCsv_parsesEveryValueAndTheSampleCount()
 {
     QFETCH(QByteArray, text);
-    const TextReadResult result = parse(text);
+    const ImportResult result = parse(text);
     VERIFY_OK(result);
 
     const std::vector<ImuSample>& s = result.recording.samples;
@@ -181,7 +183,7 @@ void TestDelimitedTextReader::pyshoeNames_areAcceptedAndExtraColumnsAreIgnored()
     const QByteArray text = "t_s,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x_radps,gyr_y_radps,gyr_z_radps,vicon_x_m,label\n"
                             "10.000,0.5,0.25,9.75,0.125,-0.5,1.5,123.0,walk\n"
                             "10.005,0.75,-0.25,9.5,0.25,0.5,-1.5,124.0,still running\n";
-    const TextReadResult result = parse(text);
+    const ImportResult result = parse(text);
     VERIFY_OK(result);
     const std::vector<ImuSample>& s = result.recording.samples;
     QCOMPARE(s.size(), std::size_t(2));
@@ -223,7 +225,7 @@ void TestDelimitedTextReader::optionalMagAndPressure_setHasMagAndHasPressure()
     QFETCH(bool, hasMag);
     QFETCH(bool, hasPressure);
 
-    const TextReadResult result = parse(text);
+    const ImportResult result = parse(text);
     VERIFY_OK(result);
     const std::vector<ImuSample>& s = result.recording.samples;
     QCOMPARE(s.size(), std::size_t(2));
@@ -273,7 +275,7 @@ void TestDelimitedTextReader::referenceColumns_leadingMinusNegatesThatAxis()
     const QByteArray text = "t_s,vicon_z_m,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,vicon_x_m,vicon_y_m\n"
                             "0.0,-0.5,0.1,0.2,9.8,0.01,0.02,0.03,1.5,2.5\n"
                             "0.01,0.25,0.1,0.2,9.8,0.01,0.02,0.03,3,-4\n";
-    const TextReadResult result = parse(text, {}, referenceColumns);
+    const ImportResult result = parse(text, {}, referenceColumns);
     VERIFY_OK(result);
     const std::vector<Eigen::Vector3d>& reference = result.recording.reference.positions_m;
     QCOMPARE(result.recording.samples.size(), std::size_t(2));
@@ -316,7 +318,7 @@ void TestDelimitedTextReader::headerlessFile_columnMapScalesTimeAndSkipsColumns(
     QFETCH(QByteArray, text);
     QFETCH(QStringList, columnMap);
 
-    const TextReadResult result = parse(text, columnMap, {});
+    const ImportResult result = parse(text, columnMap, {});
     VERIFY_OK(result);
     const std::vector<ImuSample>& s = result.recording.samples;
     // The first non-empty line is data, not a header.
@@ -331,15 +333,17 @@ void TestDelimitedTextReader::headerlessFile_columnMapScalesTimeAndSkipsColumns(
 
 void TestDelimitedTextReader::headerlessFile_lineNumbersCountBlankLines()
 {
-    // Two blank lines, a good row on line 3, a bad cell on line 5 (after another blank line).
+    // Two blank lines, a good row on line 3, a bad cell on line 5 (after another blank line): the
+    // good row is kept and the warning names line 5.
     const QByteArray text = "\n\n0,1,2,3,4,5,6\n\n10,1,2,oops,4,5,6\n";
-    const TextReadResult result = parse(
+    const ImportResult result = parse(
         text, QStringList{"time_ms", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"}, {});
-    QVERIFY(!result.ok());
-    QCOMPARE(int(result.error->line), 5);
-    QCOMPARE(int(result.error->column), 4);
-    QCOMPARE(QString::fromStdString(result.error->text()),
-             QStringLiteral("walk.csv:5:4: expected a number in column 'acc_z', got 'oops'"));
+    QVERIFY(result.ok());
+    QVERIFY(result.info.truncated);
+    QCOMPARE(result.recording.samples.size(), std::size_t(1));
+    QCOMPARE(result.recording.warnings.size(), std::size_t(1));
+    QVERIFY(QString::fromStdString(result.recording.warnings[0])
+                .contains(QStringLiteral("line 5, column 4 (expected a number in column 'acc_z', got 'oops')")));
 }
 
 void TestDelimitedTextReader::errors_reportMessageLineAndColumn_data()
@@ -361,22 +365,23 @@ void TestDelimitedTextReader::errors_reportMessageLineAndColumn_data()
                        "the header has: time_s, acc_x, acc_y, acc_z, gyr_x, gyr_y, temperature"};
     QTest::newRow("missing time column")
         << QByteArray("acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,0,9.8,0,0,0\n") << none << none << 1 << 0
-        << QStringList{"missing column", "time_s", "the header has: acc_x, acc_y, acc_z, gyr_x, gyr_y, gyr_z"};
+        << QStringList{"missing column", "time (or a counter with --rate)",
+                       "the header has: acc_x, acc_y, acc_z, gyr_x, gyr_y, gyr_z"};
     QTest::newRow("two time columns") << QByteArray("time_s,time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n"
                                                     "0,0,0,0,9.8,0,0,0\n")
                                       << none << none << 1 << 0 << QStringList{"exactly one time column"};
     QTest::newRow("non-numeric cell names line, column and name")
-        << QByteArray(kHeader + rows + "0.02,0,0,9.8,abc,0,0\n") << none << none << 4 << 5
+        << QByteArray(kHeader + "0.02,0,0,9.8,abc,0,0\n") << none << none << 2 << 5
         << QStringList{"expected a number in column 'gyr_x', got 'abc'"};
     QTest::newRow("empty cell") << QByteArray(kHeader + "0.00,0,,9.8,0,0,0\n") << none << none << 2 << 3
                                 << QStringList{"column 'acc_y', got ''"};
     QTest::newRow("number with trailing text") << QByteArray(kHeader + "0.00,0,0,9.8m,0,0,0\n") << none << none << 2
                                                << 4 << QStringList{"column 'acc_z', got '9.8m'"};
-    QTest::newRow("short row") << QByteArray(kHeader + rows + "0.02,0,0,9.8,0\n") << none << none << 4 << 6
+    QTest::newRow("short row") << QByteArray(kHeader + "0.02,0,0,9.8,0\n") << none << none << 2 << 6
                                << QStringList{"expected 7 columns, found 5"};
     QTest::newRow("time going backwards") << QByteArray(kHeader + rows + "0.02,0,0,9.8,0,0,0\n0.015,0,0,9.8,0,0,0\n")
                                           << none << none << 5 << 0
-                                          << QStringList{"time goes backwards", "0.015 s after 0.02 s"};
+                                          << QStringList{"time goes backwards", "0.015 after 0.02"};
     QTest::newRow("empty file") << QByteArray() << none << none << 0 << 0 << QStringList{"the file is empty"};
     QTest::newRow("empty file with a column map")
         << QByteArray() << QStringList{"time_s", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"} << none << 0
@@ -387,7 +392,7 @@ void TestDelimitedTextReader::errors_reportMessageLineAndColumn_data()
     QTest::newRow("unknown role in the column map")
         << QByteArray("0,0,0,9.8,0,0,0\n")
         << QStringList{"time_s", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyro_z"} << none << 0 << 0
-        << QStringList{"unknown column role 'gyro_z'", "expected one of time_s, time_ms, time_us, acc_x",
+        << QStringList{"unknown column role 'gyro_z'", "expected one of time_s, time_ms, time_us, counter, acc_x",
                        "pressure_pa, skip"};
     // A column-map problem is not tied to a line of the file.
     QTest::newRow("column map missing a role")
@@ -415,7 +420,7 @@ void TestDelimitedTextReader::errors_reportMessageLineAndColumn_data()
         << QStringList{"column 'vicon_y_m', got '-'"};
     QTest::newRow("NaN cell") << QByteArray(kHeader + "0.00,nan,0,9.8,0,0,0\n") << none << none << 2 << 2
                               << QStringList{"expected a number in column 'acc_x', got 'nan'"};
-    QTest::newRow("upper-case NaN cell") << QByteArray(kHeader + rows + "0.02,0,0,9.8,0,NaN,0\n") << none << none << 4
+    QTest::newRow("upper-case NaN cell") << QByteArray(kHeader + "0.02,0,0,9.8,0,NaN,0\n") << none << none << 2
                                          << 6 << QStringList{"column 'gyr_y', got 'NaN'"};
     QTest::newRow("inf cell") << QByteArray(kHeader + "0.00,0,0,9.8,0,0,inf\n") << none << none << 2 << 7
                               << QStringList{"column 'gyr_z', got 'inf'"};
@@ -434,7 +439,7 @@ void TestDelimitedTextReader::errors_reportMessageLineAndColumn()
     QFETCH(int, column);
     QFETCH(QStringList, messageParts);
 
-    const TextReadResult result = parse(text, columnMap, referenceColumns);
+    const ImportResult result = parse(text, columnMap, referenceColumns);
     QVERIFY2(!result.ok(), "the malformed input was accepted");
     const ReadError& error = *result.error;
     const QString message = QString::fromStdString(error.message);
@@ -451,7 +456,7 @@ void TestDelimitedTextReader::missingFile_isReportedWithThePathAndNoLine()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const std::string path = dir.filePath(QStringLiteral("no-such-walk.csv")).toStdString();
-    const TextReadResult result = footpath::readDelimitedText(path);
+    const ImportResult result = footpath::importRecording(path);
     QVERIFY(!result.ok());
     QCOMPARE(result.error->file, path);
     QCOMPARE(int(result.error->line), 0);
@@ -468,7 +473,7 @@ void TestDelimitedTextReader::readFromFile_sourceAndErrorsCarryThePath()
     const QString bad = writeFile(dir, QStringLiteral("bad.csv"), kHeader + "0,1,2,3,4,5,6\n0.5,7,x8,9,10,11,12\n");
     QVERIFY(!good.isEmpty() && !bad.isEmpty());
 
-    const TextReadResult read = footpath::readDelimitedText(good.toStdString());
+    const ImportResult read = footpath::importRecording(good.toStdString());
     VERIFY_OK(read);
     QCOMPARE(read.recording.source, good.toStdString());
     QCOMPARE(read.recording.samples.size(), std::size_t(2));
@@ -476,10 +481,16 @@ void TestDelimitedTextReader::readFromFile_sourceAndErrorsCarryThePath()
     VERIFY_VECTOR(read.recording.samples[1].acc_mps2, 7.0, 8.0, 9.0);
     VERIFY_VECTOR(read.recording.samples[1].gyr_radps, 10.0, 11.0, 12.0);
 
-    const TextReadResult failed = footpath::readDelimitedText(bad.toStdString());
-    QVERIFY(!failed.ok());
-    QCOMPARE(QString::fromStdString(failed.error->text()),
-             bad + QStringLiteral(":3:3: expected a number in column 'acc_y', got 'x8'"));
+    // Damage after a good row: the row before it is kept, and the warning says where it stopped.
+    const ImportResult damaged = footpath::importRecording(bad.toStdString());
+    QVERIFY(damaged.ok());
+    QVERIFY(damaged.info.truncated);
+    QCOMPARE(damaged.recording.samples.size(), std::size_t(1));
+    bool warned = false;
+    for (const std::string& warning : damaged.recording.warnings)
+        warned = warned || QString::fromStdString(warning).contains(
+                               QStringLiteral("line 3, column 3 (expected a number in column 'acc_y', got 'x8')"));
+    QVERIFY(warned);
 }
 
 void TestDelimitedTextReader::readErrorText_formatsFileLineColumnMessage_data()
@@ -513,12 +524,12 @@ void TestDelimitedTextReader::progress_returningFalseCancelsTheRead()
         text += QByteArray::number(k * 0.01, 'f', 2) + ",0,0,9.8,0,0,0\n";
 
     std::vector<double> fractions;
-    TextReadOptions keepGoing;
+    ImportOptions keepGoing;
     keepGoing.progress = [&fractions](double fraction) {
         fractions.push_back(fraction);
         return true;
     };
-    const TextReadResult all = parse(text, keepGoing);
+    const ImportResult all = parse(text, keepGoing);
     VERIFY_OK(all);
     QCOMPARE(all.recording.samples.size(), std::size_t(10000));
     QVERIFY(!fractions.empty());
@@ -528,9 +539,9 @@ void TestDelimitedTextReader::progress_returningFalseCancelsTheRead()
             QVERIFY(fractions[i] > fractions[i - 1]);
     }
 
-    TextReadOptions cancel;
+    ImportOptions cancel;
     cancel.progress = [](double) { return false; };
-    const TextReadResult cancelled = parse(text, cancel);
+    const ImportResult cancelled = parse(text, cancel);
     QVERIFY(!cancelled.ok());
     QCOMPARE(cancelled.error->message, std::string("reading cancelled"));
     QVERIFY(cancelled.recording.samples.size() < 10000);
@@ -538,8 +549,9 @@ void TestDelimitedTextReader::progress_returningFalseCancelsTheRead()
 
 void TestDelimitedTextReader::columnRoleNames_listsTheCanonicalRoles()
 {
-    const std::vector<std::string> expected{"time_s", "time_ms", "time_us", "acc_x", "acc_y",       "acc_z", "gyr_x",
-                                            "gyr_y",  "gyr_z",   "mag_x",   "mag_y", "mag_z", "pressure_pa", "skip"};
+    const std::vector<std::string> expected{"time_s", "time_ms", "time_us", "counter", "acc_x",       "acc_y", "acc_z",
+                                            "gyr_x",  "gyr_y",   "gyr_z",   "mag_x",   "mag_y", "mag_z", "pressure_pa",
+                                            "skip"};
     QVERIFY(footpath::columnRoleNames() == expected);
 }
 

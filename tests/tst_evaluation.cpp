@@ -95,6 +95,8 @@ private slots:
     void stancePathLength();
     void distanceError_data();
     void distanceError();
+    void stanceScore_data();
+    void stanceScore();
 };
 
 void TestEvaluation::armse_data()
@@ -319,6 +321,55 @@ void TestEvaluation::distanceError()
         QVERIFY(std::isnan(error.errorPct));
     else
         QCOMPARE_LE(std::abs(error.errorPct - expectedPct), kTolerance);
+}
+
+namespace {
+
+std::vector<std::uint8_t> flagsOf(const QString& pattern)
+{
+    std::vector<std::uint8_t> flags;
+    for (QChar ch : pattern)
+        flags.push_back(ch == '1');
+    return flags;
+}
+
+}  // namespace
+
+void TestEvaluation::stanceScore_data()
+{
+    QTest::addColumn<QString>("detected");
+    QTest::addColumn<double>("precision");
+    QTest::addColumn<double>("recall");
+    QTest::addColumn<long>("phaseError");
+    // Swings at samples 2-4 and 9-11: the window is 2..11, reference stance 5..8 (4 samples, one phase).
+    //                       index: 0123456789012
+    QTest::newRow("perfect") << "1100011110001" << 1.0 << 1.0 << 0L;
+    QTest::newRow("one stance sample missed") << "1100001110001" << 1.0 << 0.75 << 0L;
+    QTest::newRow("stance leaks into a swing") << "1100111110001" << 0.8 << 1.0 << 0L;
+    QTest::newRow("split stance counts two phases") << "1100010110001" << 1.0 << 0.75 << 1L;
+    QTest::newRow("nothing detected") << "0000000000000" << 0.0 << 0.0 << -1L;
+}
+
+void TestEvaluation::stanceScore()
+{
+    QFETCH(QString, detected);
+    QFETCH(double, precision);
+    QFETCH(double, recall);
+    QFETCH(long, phaseError);
+    const std::vector<footpath::SampleRange> swings{{2, 4}, {9, 11}};
+    const footpath::StanceScore score = footpath::scoreStanceDetection(flagsOf(detected), swings);
+    QCOMPARE(score.samplesCompared, std::size_t(10));
+    QCOMPARE(score.referencePhases, std::size_t(1));
+    QCOMPARE_LE(std::abs(score.precision - precision), 1e-12);
+    QCOMPARE_LE(std::abs(score.recall - recall), 1e-12);
+    const double f1 = precision + recall > 0 ? 2 * precision * recall / (precision + recall) : 0.0;
+    QCOMPARE_LE(std::abs(score.f1 - f1), 1e-12);
+    QCOMPARE(score.stepCountError, phaseError);
+
+    // Trial boundaries clip the window: only 5..8 remains, all reference stance.
+    const footpath::SampleRange trial{5, 8};
+    const footpath::StanceScore clipped = footpath::scoreStanceDetection(flagsOf(detected), swings, &trial);
+    QCOMPARE(clipped.samplesCompared, std::size_t(4));
 }
 
 QTEST_APPLESS_MAIN(TestEvaluation)

@@ -20,18 +20,23 @@ std::vector<std::string> splitList(const std::string& text, char separator)
 std::string usageText()
 {
     return R"(Usage:
-  footpath-cli process INPUT [--params preset.json] [--set name=value ...]
-                             [--columns role,role,...]
+  footpath-cli process INPUT [import options] [--params preset.json] [--set name=value ...]
                              [--trajectory out.csv] [--steps out.csv] [--summary out.json]
-  footpath-cli eval INPUT [--params preset.json] [--set name=value ...] [--columns role,...]
+  footpath-cli eval INPUT [import options] [--params preset.json] [--set name=value ...]
                           [--reference-columns x,y,z] [--closed-loop] [--length METRES] [--json]
+  footpath-cli info INPUT [import options] [--json]
 
-INPUT is a delimited text file with a header row: time_s (or t_s, time_ms), acc_x, acc_y, acc_z
-(m/s^2), gyr_x, gyr_y, gyr_z (rad/s), optional mag_x..z and pressure_pa; *_mps2 / *_radps names are
-accepted. A file without a header needs --columns with one role per column: time_s, time_ms,
-time_us, acc_x..z, gyr_x..z, mag_x..z, pressure_pa, skip.
---reference-columns names three header columns holding a reference position; a leading '-' negates
-an axis (pyshoe-vicon: vicon_x_m,-vicon_y_m,vicon_z_m).
+Import options (every format is detected from the content; these override or complete it):
+  --format NAME              xsens-text, xsens-mtb, delimited, pyshoe-vicon
+  --columns role,role,...    a file without a header: one role per column, from time_s, time_ms,
+                             time_us, counter, acc_x..z, gyr_x..z, mag_x..z, pressure_pa, skip
+  --acc-unit mps2|g  --gyr-unit radps|degps  --time-unit s|ms|us  --rate HZ
+  --import-preset NAME|FILE  read with a saved column map and units
+  --save-import-preset NAME  save the column map and units given here under NAME
+Reference data the file carries (VICON columns, gait events beside an Xsens export, a length in the
+file name like rectangle_72m.TXT, a <file>.reference.json sidecar) is used by eval unless
+--reference-columns, --closed-loop or --length say otherwise; a leading '-' in
+--reference-columns negates an axis.
 Exit codes: 0 success, 2 bad input or options, 1 internal error.
 )";
 }
@@ -47,28 +52,56 @@ bool parsePositive(const std::string& text, double& value)
     return !text.empty() && end == text.c_str() + text.size() && std::isfinite(value) && value > 0.0;
 }
 
+Handler storeText(std::string CommandLine::*member)
+{
+    return [member](CommandLine& c, const std::string& v) {
+        c.*member = v;
+        return std::string();
+    };
+}
+
+Handler storeList(std::vector<std::string> CommandLine::*member)
+{
+    return [member](CommandLine& c, const std::string& v) {
+        c.*member = splitList(v);
+        return std::string();
+    };
+}
+
+Handler storePositive(double CommandLine::*member, const std::string& option, const char* what)
+{
+    return [member, option, what](CommandLine& c, const std::string& v) {
+        return parsePositive(v, c.*member) ? std::string() : option + " expects " + what + " > 0, got '" + v + "'";
+    };
+}
+
 const std::map<std::string, Handler>& valueOptions()
 {
     static const std::map<std::string, Handler> options = {
-        {"--params", [](CommandLine& c, const std::string& v) { c.paramsFile = v; return std::string(); }},
+        {"--params", storeText(&CommandLine::paramsFile)},
         {"--set", [](CommandLine& c, const std::string& v) {
              if (v.find('=') == std::string::npos)
                  return "--set expects name=value, got '" + v + "'";
              c.sets.push_back(v);
              return std::string();
          }},
-        {"--columns", [](CommandLine& c, const std::string& v) { c.columnMap = splitList(v); return std::string(); }},
-        {"--trajectory", [](CommandLine& c, const std::string& v) { c.trajectoryOut = v; return std::string(); }},
-        {"--steps", [](CommandLine& c, const std::string& v) { c.stepsOut = v; return std::string(); }},
-        {"--summary", [](CommandLine& c, const std::string& v) { c.summaryOut = v; return std::string(); }},
+        {"--format", storeText(&CommandLine::format)},
+        {"--columns", storeList(&CommandLine::columnMap)},
+        {"--import-preset", storeText(&CommandLine::importPreset)},
+        {"--save-import-preset", storeText(&CommandLine::saveImportPreset)},
+        {"--acc-unit", storeText(&CommandLine::accUnit)},
+        {"--gyr-unit", storeText(&CommandLine::gyrUnit)},
+        {"--time-unit", storeText(&CommandLine::timeUnit)},
+        {"--rate", storePositive(&CommandLine::rate_hz, "--rate", "a rate in Hz")},
+        {"--trajectory", storeText(&CommandLine::trajectoryOut)},
+        {"--steps", storeText(&CommandLine::stepsOut)},
+        {"--summary", storeText(&CommandLine::summaryOut)},
         {"--reference-columns", [](CommandLine& c, const std::string& v) {
              c.referenceColumns = splitList(v);
              return c.referenceColumns.size() == 3 ? std::string()
                                                    : "--reference-columns expects three names x,y,z, got '" + v + "'";
          }},
-        {"--length", [](CommandLine& c, const std::string& v) {
-             return parsePositive(v, c.length_m) ? std::string() : "--length expects metres > 0, got '" + v + "'";
-         }},
+        {"--length", storePositive(&CommandLine::length_m, "--length", "metres")},
     };
     return options;
 }
@@ -77,11 +110,17 @@ std::string checkCombination(const CommandLine& c)
 {
     if (c.input.empty())
         return "missing INPUT file";
-    const int references = int(!c.referenceColumns.empty()) + int(c.closedLoop) + int(c.length_m > 0.0);
-    if (c.command == "process" && (references > 0 || c.json))
-        return "--reference-columns, --closed-loop, --length and --json belong to eval";
-    if (c.command == "eval" && (!c.trajectoryOut.empty() || !c.stepsOut.empty() || !c.summaryOut.empty()))
+    const bool evaluation = !c.referenceColumns.empty() || c.closedLoop || c.length_m > 0.0;
+    const bool outputs = !c.trajectoryOut.empty() || !c.stepsOut.empty() || !c.summaryOut.empty();
+    const bool estimation = !c.paramsFile.empty() || !c.sets.empty();
+    if (c.command != "eval" && evaluation)
+        return "--reference-columns, --closed-loop and --length belong to eval";
+    if (c.command == "process" && c.json)
+        return "--json belongs to eval and info";
+    if (c.command != "process" && outputs)
         return "--trajectory, --steps and --summary belong to process";
+    if (c.command == "info" && estimation)
+        return "--params and --set belong to process and eval";
     return {};
 }
 
@@ -94,8 +133,8 @@ std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& 
         return {};
     }
     out.command = args[0];
-    if (out.command != "process" && out.command != "eval")
-        return "unknown command '" + out.command + "'; expected process or eval";
+    if (out.command != "process" && out.command != "eval" && out.command != "info")
+        return "unknown command '" + out.command + "'; expected process, eval or info";
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& arg = args[i];
         if (arg == "--closed-loop") {

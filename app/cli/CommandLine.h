@@ -7,14 +7,23 @@ namespace footpath::cli {
 
 /// What the user asked for, before any file is touched.
 struct CommandLine {
-    std::string command;  ///< "process", "eval" or "help"
+    std::string command;  ///< "process", "eval", "info" or "help"
     std::string input;
+    // Parameters
     std::string paramsFile;
     std::vector<std::string> sets;  ///< "name=value"
+    // Import
+    std::string format;
     std::vector<std::string> columnMap;
+    std::string importPreset;
+    std::string saveImportPreset;
+    std::string accUnit, gyrUnit, timeUnit;
+    double rate_hz = 0.0;
+    // Outputs
     std::string trajectoryOut;
     std::string stepsOut;
     std::string summaryOut;
+    // Evaluation
     std::vector<std::string> referenceColumns;
     bool closedLoop = false;
     double length_m = 0.0;

@@ -2,7 +2,7 @@
 
 #include "PipelineRunner.h"
 #include "TrajectoryView2D.h"
-#include "io/DelimitedTextReader.h"
+#include "io/Import.h"
 
 #include <QApplication>
 #include <QFile>
@@ -55,8 +55,10 @@ bool MainWindow::openRecording(const QString& path)
         showError(tr("%1: cannot open the file: %2").arg(path, file.errorString()));
         return false;
     }
-    std::istringstream text(file.readAll().toStdString());
-    TextReadResult read = parseDelimitedText(text, QFileInfo(path).fileName().toStdString());
+    // Through a stream so embedded samples (":/...") open like files.
+    const QByteArray bytes = file.readAll();
+    std::istringstream text(bytes.toStdString());
+    ImportResult read = importStream(text, static_cast<std::size_t>(bytes.size()), path.toStdString());
     if (!read.ok()) {
         showError(QString::fromStdString(read.error->text()));
         return false;

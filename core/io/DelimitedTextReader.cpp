@@ -1,47 +1,21 @@
 #include "io/DelimitedTextReader.h"
 
+#include "io/ColumnNames.h"
+#include "io/Import.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <map>
 #include <sstream>
 
 namespace footpath {
 
 namespace {
 
-enum class Role { Skip, TimeS, TimeMs, TimeUs, AccX, AccY, AccZ, GyrX, GyrY, GyrZ, MagX, MagY, MagZ, Pressure, RefX, RefY, RefZ };
-
-struct RoleName {
-    const char* name;
-    Role role;
-};
-
-// Canonical role names first (they double as column-map roles), then accepted header aliases.
-const RoleName kRoleNames[] = {
-    {"time_s", Role::TimeS}, {"time_ms", Role::TimeMs}, {"time_us", Role::TimeUs},
-    {"acc_x", Role::AccX}, {"acc_y", Role::AccY}, {"acc_z", Role::AccZ},
-    {"gyr_x", Role::GyrX}, {"gyr_y", Role::GyrY}, {"gyr_z", Role::GyrZ},
-    {"mag_x", Role::MagX}, {"mag_y", Role::MagY}, {"mag_z", Role::MagZ},
-    {"pressure_pa", Role::Pressure}, {"skip", Role::Skip},
-    {"t_s", Role::TimeS},
-    {"acc_x_mps2", Role::AccX}, {"acc_y_mps2", Role::AccY}, {"acc_z_mps2", Role::AccZ},
-    {"gyr_x_radps", Role::GyrX}, {"gyr_y_radps", Role::GyrY}, {"gyr_z_radps", Role::GyrZ},
-};
-constexpr std::size_t kCanonicalRoleCount = 14;
-
 struct Column {
-    Role role = Role::Skip;
-    double scale = 1.0;  ///< unit conversion, or -1 for a negated reference axis
-};
-
-struct Layout {
-    std::vector<Column> columns;
-    std::vector<std::string> names;
-    bool hasMag = false;
-    bool hasPressure = false;
-    bool hasReference = false;
+    ColumnMeaning meaning;
+    double sign = 1.0;  ///< -1 for a negated reference axis
+    bool needed = false;
 };
 
 std::string trim(const std::string& text)
@@ -53,34 +27,20 @@ std::string trim(const std::string& text)
     return text.substr(first, last - first + 1);
 }
 
-std::string lower(std::string text)
+bool isBlank(const std::string& line)
 {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char ch) { return std::tolower(ch); });
-    return text;
-}
-
-std::optional<Role> roleByName(const std::string& name)
-{
-    for (const RoleName& entry : kRoleNames)
-        if (name == entry.name)
-            return entry.role;
-    return std::nullopt;
-}
-
-double timeScale(Role role)
-{
-    return role == Role::TimeMs ? 1e-3 : role == Role::TimeUs ? 1e-6 : 1.0;
+    return line.find_first_not_of(" \t\r\n") == std::string::npos;
 }
 
 char detectDelimiter(const std::string& line)
 {
-    for (char candidate : {',', '\t', ';'})
+    for (char candidate : {'\t', ';', ','})
         if (line.find(candidate) != std::string::npos)
             return candidate;
     return ' ';
 }
 
-/// Splits a line; a space delimiter means runs of blanks, as in aligned columns.
+/// Splits a line; a blank delimiter means runs of blanks, as in aligned columns.
 void splitLine(const std::string& line, char delimiter, std::vector<std::string>& cells)
 {
     cells.clear();
@@ -96,11 +56,13 @@ void splitLine(const std::string& line, char delimiter, std::vector<std::string>
         cells.push_back(word);
 }
 
-bool parseNumber(const std::string& cell, double& value)
+bool parseNumber(std::string text, bool decimalComma, double& value)
 {
-    std::string text = trim(cell);
+    text = trim(text);
     if (text.size() > 1 && text.front() == '+')  // from_chars rejects an explicit plus sign
         text.erase(0, 1);
+    if (decimalComma)
+        std::replace(text.begin(), text.end(), ',', '.');
     if (text.empty())
         return false;
     const char* end = text.data() + text.size();
@@ -108,20 +70,28 @@ bool parseNumber(const std::string& cell, double& value)
     return ec == std::errc() && ptr == end && std::isfinite(value);
 }
 
-bool isBlank(const std::string& line)
+bool isNumeric(const std::string& cell)
 {
-    return line.find_first_not_of(" \t\r\n") == std::string::npos;
+    double value = 0.0;
+    return parseNumber(cell, false, value) || parseNumber(cell, true, value);
+}
+
+int axisOf(ColumnRole role, ColumnRole x)
+{
+    return static_cast<int>(role) - static_cast<int>(x);
 }
 
 class TextParser {
 public:
-    TextParser(std::istream& in, std::string source, const TextReadOptions& options, std::size_t totalBytes)
+    TextParser(std::istream& in, std::string source, const ImportOptions& options, std::size_t totalBytes)
         : in_(in), options_(options), totalBytes_(totalBytes)
     {
         result_.recording.source = std::move(source);
+        result_.info.format = "delimited";
+        result_.info.timeUnitAsRead = TimeUnit::Unknown;
     }
 
-    TextReadResult run();
+    ImportResult run();
 
 private:
     bool fail(std::size_t column, std::string message)
@@ -134,15 +104,26 @@ private:
     bool layoutFromHeader(const std::string& header);
     bool addReferenceColumns();
     bool checkRequiredRoles();
+    bool resolveUnits();
     bool parseRow(const std::string& line);
     bool reportProgress();
+    void reserveSamples(std::size_t firstLineLength);
+    bool keepWhatCameBefore();
 
     std::istream& in_;
-    const TextReadOptions& options_;
+    const ImportOptions& options_;
     std::size_t totalBytes_;
-    TextReadResult result_;
-    Layout layout_;
+    ImportResult result_;
+    std::vector<Column> columns_;
+    std::vector<std::string> names_;
     char delimiter_ = ',';
+    bool decimalComma_ = false;
+    bool hasMag_ = false;
+    bool hasPressure_ = false;
+    bool hasReference_ = false;
+    double timeScale_ = 1.0;
+    double counterPeriod_s_ = 0.0;
+    bool fatal_ = false;  ///< a problem that makes the earlier samples wrong too (time going backwards)
     std::size_t lineNumber_ = 0;
     std::size_t bytesRead_ = 0;
     std::vector<std::string> cells_;
@@ -164,15 +145,15 @@ bool TextParser::layoutFromMap()
     if (!options_.referenceColumns.empty())
         return fail(0, "reference columns are named by the header row; this file is read with a column map");
     for (const std::string& entry : options_.columnMap) {
-        const std::optional<Role> role = roleByName(lower(trim(entry)));
-        if (!role) {
+        const std::optional<ColumnMeaning> meaning = columnMapRole(trim(entry));
+        if (!meaning) {
             std::string known;
             for (const std::string& name : columnRoleNames())
                 known += (known.empty() ? "" : ", ") + name;
             return fail(0, "unknown column role '" + entry + "' in the column map; expected one of " + known);
         }
-        layout_.columns.push_back({*role, timeScale(*role)});
-        layout_.names.push_back(entry);
+        columns_.push_back({*meaning, 1.0, false});
+        names_.push_back(trim(entry));
     }
     return true;
 }
@@ -182,16 +163,15 @@ bool TextParser::layoutFromHeader(const std::string& header)
     splitLine(header, delimiter_, cells_);
     for (const std::string& cell : cells_) {
         const std::string name = trim(cell);
-        const std::optional<Role> role = roleByName(lower(name));
-        layout_.columns.push_back({role.value_or(Role::Skip), role ? timeScale(*role) : 1.0});
-        layout_.names.push_back(name);
+        columns_.push_back({recogniseHeaderName(name).value_or(ColumnMeaning{}), 1.0, false});
+        names_.push_back(name);
     }
     return addReferenceColumns();
 }
 
 bool TextParser::addReferenceColumns()
 {
-    const Role axes[] = {Role::RefX, Role::RefY, Role::RefZ};
+    const ColumnRole axes[] = {ColumnRole::RefX, ColumnRole::RefY, ColumnRole::RefZ};
     if (options_.referenceColumns.empty())
         return true;
     if (options_.referenceColumns.size() != 3)
@@ -201,78 +181,133 @@ bool TextParser::addReferenceColumns()
         const bool negate = !name.empty() && name.front() == '-';
         if (negate)
             name.erase(0, 1);
-        const auto found = std::find(layout_.names.begin(), layout_.names.end(), name);
-        if (found == layout_.names.end())
+        const auto found = std::find(names_.begin(), names_.end(), name);
+        if (found == names_.end())
             return fail(0, "reference column '" + name + "' is not in the header");
-        layout_.columns[static_cast<std::size_t>(found - layout_.names.begin())] = {axes[axis], negate ? -1.0 : 1.0};
+        Column& column = columns_[static_cast<std::size_t>(found - names_.begin())];
+        column.meaning = ColumnMeaning{};
+        column.meaning.role = axes[axis];
+        column.sign = negate ? -1.0 : 1.0;
     }
-    layout_.hasReference = true;
+    hasReference_ = true;
     return true;
 }
 
 bool TextParser::checkRequiredRoles()
 {
-    std::map<Role, int> counts;
-    for (const Column& column : layout_.columns)
-        ++counts[column.role];
-    const int times = counts[Role::TimeS] + counts[Role::TimeMs] + counts[Role::TimeUs];
+    std::vector<int> counts(static_cast<std::size_t>(ColumnRole::RefZ) + 1, 0);
+    for (const Column& column : columns_)
+        ++counts[static_cast<std::size_t>(column.meaning.role)];
+    const auto count = [&counts](ColumnRole role) { return counts[static_cast<std::size_t>(role)]; };
     std::string missing;
-    if (times != 1)
-        missing += times == 0 ? " time_s (or t_s, time_ms)" : " exactly one time column";
-    const std::pair<Role, const char*> required[] = {{Role::AccX, "acc_x"}, {Role::AccY, "acc_y"}, {Role::AccZ, "acc_z"},
-                                                     {Role::GyrX, "gyr_x"}, {Role::GyrY, "gyr_y"}, {Role::GyrZ, "gyr_z"}};
+    const int clocks = count(ColumnRole::Time) + count(ColumnRole::Counter);
+    if (clocks == 0)
+        missing += " time (or a counter with --rate)";
+    else if (count(ColumnRole::Time) > 1 || count(ColumnRole::Counter) > 1)
+        missing += " exactly one time column";
+    const std::pair<ColumnRole, const char*> required[] = {
+        {ColumnRole::AccX, "acc_x"}, {ColumnRole::AccY, "acc_y"}, {ColumnRole::AccZ, "acc_z"},
+        {ColumnRole::GyrX, "gyr_x"}, {ColumnRole::GyrY, "gyr_y"}, {ColumnRole::GyrZ, "gyr_z"}};
     for (const auto& [role, name] : required)
-        if (counts[role] != 1)
+        if (count(role) != 1)
             missing += std::string(" ") + name;
     if (!missing.empty()) {
         std::string found;
-        for (const std::string& name : layout_.names)
+        for (const std::string& name : names_)
             found += (found.empty() ? "" : ", ") + name;
         if (!options_.columnMap.empty())
             return fail(0, "the column map lacks:" + missing + "; it has: " + found);
-        return fail(0, "missing column(s):" + missing + "; the header has: " + found);
+        const std::string hint = names_.size() == 1 ? " (one column only: columns must be separated by commas, "
+                                                      "semicolons, tabs or blanks)"
+                                                    : "";
+        return fail(0, "missing column(s):" + missing + "; the header has: " + found + hint);
     }
-    layout_.hasMag = counts[Role::MagX] == 1 && counts[Role::MagY] == 1 && counts[Role::MagZ] == 1;
-    layout_.hasPressure = counts[Role::Pressure] == 1;
+    hasMag_ = count(ColumnRole::MagX) == 1 && count(ColumnRole::MagY) == 1 && count(ColumnRole::MagZ) == 1;
+    hasPressure_ = count(ColumnRole::Pressure) == 1;
+    for (Column& column : columns_) {
+        const ColumnRole role = column.meaning.role;
+        column.needed = role != ColumnRole::Skip && !(role >= ColumnRole::MagX && role <= ColumnRole::MagZ && !hasMag_)
+                        && !(role == ColumnRole::Pressure && !hasPressure_)
+                        && !(role == ColumnRole::Counter && count(ColumnRole::Time) == 1);
+    }
+    return resolveUnits();
+}
+
+/// Records the units the names state; time is converted here because gaps need seconds.
+bool TextParser::resolveUnits()
+{
+    RecordingInfo& info = result_.info;
+    for (const Column& column : columns_) {
+        const ColumnMeaning& m = column.meaning;
+        if (m.role >= ColumnRole::AccX && m.role <= ColumnRole::AccZ && m.accUnit != AccUnit::Unknown)
+            info.accUnitAsRead = m.accUnit;
+        if (m.role >= ColumnRole::GyrX && m.role <= ColumnRole::GyrZ && m.gyrUnit != GyrUnit::Unknown)
+            info.gyrUnitAsRead = m.gyrUnit;
+        if (m.role == ColumnRole::Time && column.needed) {
+            info.timeUnitAsRead = options_.timeUnit != TimeUnit::Unknown ? options_.timeUnit : m.timeUnit;
+            info.timeSource = "time column '" + names_[static_cast<std::size_t>(&column - columns_.data())] + "'";
+        }
+        if (m.role == ColumnRole::Counter && column.needed) {
+            if (!(options_.rate_hz > 0.0))
+                return fail(0, "time comes from a counter column: the sample rate is needed (--rate HZ)");
+            counterPeriod_s_ = 1.0 / options_.rate_hz;
+            info.timeUnitAsRead = TimeUnit::Seconds;
+            info.rate_hz = options_.rate_hz;
+            info.timeSource = "counter at " + std::to_string(options_.rate_hz) + " Hz";
+        }
+    }
+    switch (info.timeUnitAsRead) {
+    case TimeUnit::Milliseconds: timeScale_ = 1e-3; break;
+    case TimeUnit::Microseconds: timeScale_ = 1e-6; break;
+    default: timeScale_ = 1.0; break;
+    }
     return true;
 }
 
 bool TextParser::parseRow(const std::string& line)
 {
     splitLine(line, delimiter_, cells_);
-    if (cells_.size() < layout_.columns.size())
-        return fail(cells_.size() + 1, "expected " + std::to_string(layout_.columns.size()) + " columns, found "
+    if (cells_.size() < columns_.size())
+        return fail(cells_.size() + 1, "expected " + std::to_string(columns_.size()) + " columns, found "
                                            + std::to_string(cells_.size()));
     ImuSample sample;
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-    for (std::size_t c = 0; c < layout_.columns.size(); ++c) {
-        const Column& column = layout_.columns[c];
-        if (column.role == Role::Skip || (column.role >= Role::MagX && column.role <= Role::Pressure
-                                          && !(column.role == Role::Pressure ? layout_.hasPressure : layout_.hasMag)))
+    double counter = 0.0;
+    for (std::size_t c = 0; c < columns_.size(); ++c) {
+        const Column& column = columns_[c];
+        if (!column.needed)
             continue;
         double value = 0.0;
-        if (!parseNumber(cells_[c], value))
-            return fail(c + 1, "expected a number in column '" + layout_.names[c] + "', got '" + trim(cells_[c]) + "'");
-        value *= column.scale;
-        switch (column.role) {
-        case Role::TimeS: case Role::TimeMs: case Role::TimeUs: sample.time_s = value; break;
-        case Role::AccX: case Role::AccY: case Role::AccZ: sample.acc_mps2[int(column.role) - int(Role::AccX)] = value; break;
-        case Role::GyrX: case Role::GyrY: case Role::GyrZ: sample.gyr_radps[int(column.role) - int(Role::GyrX)] = value; break;
-        case Role::MagX: case Role::MagY: case Role::MagZ: sample.mag[int(column.role) - int(Role::MagX)] = value; break;
-        case Role::Pressure: sample.pressure_pa = value; break;
-        case Role::RefX: case Role::RefY: case Role::RefZ: reference[int(column.role) - int(Role::RefX)] = value; break;
-        case Role::Skip: break;
-        }
+        if (!parseNumber(cells_[c], decimalComma_, value))
+            return fail(c + 1, "expected a number in column '" + names_[c] + "', got '" + trim(cells_[c]) + "'");
+        const ColumnRole role = column.meaning.role;
+        if (role == ColumnRole::Time)
+            sample.time_s = value * timeScale_;
+        else if (role == ColumnRole::Counter)
+            counter = value;
+        else if (role <= ColumnRole::AccZ)
+            sample.acc_mps2[axisOf(role, ColumnRole::AccX)] = value;
+        else if (role <= ColumnRole::GyrZ)
+            sample.gyr_radps[axisOf(role, ColumnRole::GyrX)] = value;
+        else if (role <= ColumnRole::MagZ)
+            sample.mag[axisOf(role, ColumnRole::MagX)] = value;
+        else if (role == ColumnRole::Pressure)
+            sample.pressure_pa = value * column.meaning.pressureToPa;
+        else
+            reference[axisOf(role, ColumnRole::RefX)] = value * column.sign;
     }
+    if (counterPeriod_s_ > 0.0)
+        sample.time_s = counter * counterPeriod_s_;
     std::vector<ImuSample>& samples = result_.recording.samples;
     if (!samples.empty() && sample.time_s < samples.back().time_s) {
         std::ostringstream message;
         message.precision(12);
-        message << "time goes backwards: " << sample.time_s << " s after " << samples.back().time_s << " s";
+        message << "time goes backwards: " << sample.time_s << " after " << samples.back().time_s;
+        fatal_ = true;
         return fail(0, message.str());
     }
     samples.push_back(sample);
-    if (layout_.hasReference)
+    if (hasReference_)
         result_.recording.reference.positions_m.push_back(reference);
     return true;
 }
@@ -286,7 +321,35 @@ bool TextParser::reportProgress()
     return fail(0, "reading cancelled");
 }
 
-TextReadResult TextParser::run()
+/// A damaged row after good ones (a file cut off mid-line, a corrupted block): keep the samples
+/// before it and say where reading stopped, instead of losing the whole recording.
+bool TextParser::keepWhatCameBefore()
+{
+    if (fatal_ || result_.recording.samples.empty() || !result_.error)
+        return false;
+    const ReadError& damage = *result_.error;
+    std::string where = "line " + std::to_string(damage.line);
+    if (damage.column > 0)
+        where += ", column " + std::to_string(damage.column);
+    result_.recording.warnings.push_back("reading stopped at " + where + " (" + damage.message + "); the "
+                                         + std::to_string(result_.recording.samples.size())
+                                         + " samples before it were kept");
+    result_.info.truncated = true;
+    result_.error.reset();
+    return true;
+}
+
+void TextParser::reserveSamples(std::size_t firstLineLength)
+{
+    // Growing a vector by doubling holds old and new copies at once; an estimate from the file size
+    // with a margin avoids that (pages reserved but never written cost no memory).
+    if (totalBytes_ > 0 && firstLineLength > 0) {
+        const std::size_t estimate = totalBytes_ / (firstLineLength + 1) + 16;
+        result_.recording.samples.reserve(std::min(estimate + estimate / 8, totalBytes_ / 8 + 16));
+    }
+}
+
+ImportResult TextParser::run()
 {
     std::string line;
     if (!nextContentLine(line)) {
@@ -294,8 +357,7 @@ TextReadResult TextParser::run()
         fail(0, "the file is empty: expected a header row and numeric samples");
         return std::move(result_);
     }
-    // Spreadsheet "CSV UTF-8" exports start with a byte-order mark.
-    if (line.rfind("\xEF\xBB\xBF", 0) == 0)
+    if (line.rfind("\xEF\xBB\xBF", 0) == 0)  // spreadsheet "CSV UTF-8" exports start with a BOM
         line.erase(0, 3);
     delimiter_ = detectDelimiter(line);
     const bool hasHeader = options_.columnMap.empty();
@@ -307,9 +369,20 @@ TextReadResult TextParser::run()
         return std::move(result_);
     lineNumber_ = firstLine;
     bool more = hasHeader ? nextContentLine(line) : true;
-    for (; more; more = nextContentLine(line))
-        if (!parseRow(line) || !reportProgress())
+    if (more) {
+        // "9,81" with a semicolon or tab delimiter is a decimal comma, not two cells.
+        decimalComma_ = delimiter_ != ',' && line.find(',') != std::string::npos;
+        reserveSamples(line.size());
+    }
+    for (; more; more = nextContentLine(line)) {
+        if (!parseRow(line)) {
+            if (!keepWhatCameBefore())
+                return std::move(result_);
+            break;
+        }
+        if (!reportProgress())
             return std::move(result_);
+    }
     if (result_.recording.samples.empty())
         fail(0, "no samples after the header");
     return std::move(result_);
@@ -327,34 +400,32 @@ std::string ReadError::text() const
     return out + ": " + message;
 }
 
-const std::vector<std::string>& columnRoleNames()
+std::size_t columnCount(const std::string& line)
 {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> list;
-        for (std::size_t i = 0; i < kCanonicalRoleCount; ++i)
-            list.emplace_back(kRoleNames[i].name);
-        return list;
-    }();
-    return names;
+    std::vector<std::string> cells;
+    splitLine(line, detectDelimiter(line), cells);
+    return cells.size();
 }
 
-TextReadResult parseDelimitedText(std::istream& in, const std::string& sourceName, const TextReadOptions& options,
-                                  std::size_t totalBytes)
+bool startsWithHeaderRow(const std::string& firstKilobytes)
+{
+    std::istringstream in(firstKilobytes);
+    std::string line;
+    while (std::getline(in, line) && isBlank(line)) {
+    }
+    if (line.rfind("\xEF\xBB\xBF", 0) == 0)
+        line.erase(0, 3);
+    std::vector<std::string> cells;
+    splitLine(line, detectDelimiter(line), cells);
+    return std::any_of(cells.begin(), cells.end(), [](const std::string& cell) {
+        return !trim(cell).empty() && !isNumeric(cell);
+    });
+}
+
+ImportResult readDelimitedText(std::istream& in, const std::string& sourceName, const ImportOptions& options,
+                               std::size_t totalBytes)
 {
     return TextParser(in, sourceName, options, totalBytes).run();
-}
-
-TextReadResult readDelimitedText(const std::string& path, const TextReadOptions& options)
-{
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) {
-        TextReadResult result;
-        result.error = ReadError{path, 0, 0, "cannot open the file for reading"};
-        return result;
-    }
-    const auto size = static_cast<std::size_t>(std::max<std::streamoff>(0, in.tellg()));
-    in.seekg(0);
-    return parseDelimitedText(in, path, options, size);
 }
 
 }  // namespace footpath

@@ -2,11 +2,8 @@
 
 #include "Recording.h"
 
-#include <functional>
 #include <istream>
-#include <optional>
 #include <string>
-#include <vector>
 
 namespace footpath {
 
@@ -20,32 +17,23 @@ struct ReadError {
     std::string text() const;
 };
 
-struct TextReadOptions {
-    /// Column roles for a file without a header row, in file order ("time_ms", "acc_x", ...,
-    /// "skip"); empty means the first non-empty line is a header naming the columns.
-    std::vector<std::string> columnMap;
-    /// Header names of reference position columns x,y,z; a leading '-' negates that axis
-    /// (pyshoe-vicon's mirrored y: "vicon_x_m,-vicon_y_m,vicon_z_m").
-    std::vector<std::string> referenceColumns;
-    /// Called with the fraction of bytes read; return false to cancel.
-    std::function<bool(double)> progress;
-};
+struct ImportOptions;
+struct ImportResult;
 
-struct TextReadResult {
-    Recording recording;
-    std::optional<ReadError> error;
-    bool ok() const { return !error.has_value(); }
-};
+/// Reads delimited numeric text: comma, semicolon, tab or blank separated, detected from the first
+/// line; a decimal comma is recognised when the delimiter is not a comma. With a header, columns
+/// are recognised by common names and the units those names state (see recogniseHeaderName);
+/// without one, options.columnMap gives one role per column. The numbers are kept as in the file
+/// except time (converted to seconds when its unit is known) and pressure (to Pa);
+/// importRecording() resolves and applies the acc/gyr units. Every cell a role needs must be a
+/// number, and time must not go backwards.
+ImportResult readDelimitedText(std::istream& in, const std::string& sourceName, const ImportOptions& options,
+                               std::size_t totalBytes = 0);
 
-/// Reads delimited numeric text: comma, semicolon, tab or whitespace separated, detected from the
-/// first data line. With a header, recognised names are time_s/t_s/time_ms, acc_x..z (or
-/// acc_x_mps2), gyr_x..z (or gyr_x_radps), mag_x..z, pressure_pa; other columns are ignored unless
-/// named as reference columns. Time must not go backwards; every cell must be a number.
-TextReadResult readDelimitedText(const std::string& path, const TextReadOptions& options = {});
-TextReadResult parseDelimitedText(std::istream& in, const std::string& sourceName, const TextReadOptions& options = {},
-                                  std::size_t totalBytes = 0);
+/// Number of cells in one line, with the delimiter detected as the reader does.
+std::size_t columnCount(const std::string& line);
 
-/// The roles a column map may name, for messages and help texts.
-const std::vector<std::string>& columnRoleNames();
+/// True if the first non-empty line of the text looks like column names rather than numbers.
+bool startsWithHeaderRow(const std::string& firstKilobytes);
 
 }  // namespace footpath

@@ -134,4 +134,61 @@ DistanceError computeDistanceError(double estimatedPathLength_m, double referenc
     return error;
 }
 
+namespace {
+
+/// Reference stance per sample of [first, last]: 1 outside every swing.
+std::vector<std::uint8_t> referenceStance(const std::vector<SampleRange>& swings, std::size_t first, std::size_t last)
+{
+    std::vector<std::uint8_t> reference(last - first + 1, 1);
+    for (const SampleRange& swing : swings)
+        for (std::size_t k = std::max(swing.first, first); k <= std::min(swing.last, last); ++k)
+            reference[k - first] = 0;
+    return reference;
+}
+
+double ratio(std::size_t part, std::size_t whole)
+{
+    return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
+}
+
+}  // namespace
+
+StanceScore scoreStanceDetection(const std::vector<std::uint8_t>& stance, const std::vector<SampleRange>& swings,
+                                 const SampleRange* trialBoundaries)
+{
+    StanceScore score;
+    if (swings.empty() || stance.empty())
+        return score;
+    std::size_t first = swings.front().first, last = swings.back().last;
+    for (const SampleRange& swing : swings) {
+        first = std::min(first, swing.first);
+        last = std::max(last, swing.last);
+    }
+    if (trialBoundaries) {
+        first = std::max(first, trialBoundaries->first);
+        last = std::min(last, trialBoundaries->last);
+    }
+    last = std::min(last, stance.size() - 1);
+    if (first > last)
+        return score;
+    const std::vector<std::uint8_t> reference = referenceStance(swings, first, last);
+    std::size_t truePositive = 0, detected = 0, actual = 0;
+    for (std::size_t k = first; k <= last; ++k) {
+        const bool isStance = stance[k] != 0, isReference = reference[k - first] != 0;
+        truePositive += isStance && isReference;
+        detected += isStance;
+        actual += isReference;
+        score.detectedPhases += isStance && (k == first || !stance[k - 1]);
+        score.referencePhases += isReference && (k == first || !reference[k - first - 1]);
+    }
+    score.samplesCompared = last - first + 1;
+    score.precision = ratio(truePositive, detected);
+    score.recall = ratio(truePositive, actual);
+    score.f1 = score.precision + score.recall > 0.0
+                   ? 2.0 * score.precision * score.recall / (score.precision + score.recall)
+                   : 0.0;
+    score.stepCountError = static_cast<long>(score.detectedPhases) - static_cast<long>(score.referencePhases);
+    return score;
+}
+
 }  // namespace footpath

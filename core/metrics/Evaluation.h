@@ -1,5 +1,6 @@
 #pragma once
 
+#include "Recording.h"
 #include "Result.h"
 
 #include <Eigen/Core>
@@ -44,5 +45,20 @@ struct DistanceError {
     double errorPct = 0.0; ///< error_m / reference_m * 100; NaN when reference_m <= 0
 };
 DistanceError computeDistanceError(double estimatedPathLength_m, double referenceLength_m);
+
+/// Section 4: stance detection against hand-labelled gait events. Compared over the samples from
+/// the first labelled swing to the last (clipped to the trial boundaries when given), where every
+/// sample is either in a swing or between two swings (reference stance).
+struct StanceScore {
+    double precision = 0.0;  ///< of the detected stance samples, the share that are reference stance
+    double recall = 0.0;     ///< of the reference stance samples, the share detected
+    double f1 = 0.0;
+    std::size_t samplesCompared = 0;
+    std::size_t detectedPhases = 0;   ///< stance runs that start inside the window
+    std::size_t referencePhases = 0;  ///< gaps between consecutive swings
+    long stepCountError = 0;          ///< detected - reference
+};
+StanceScore scoreStanceDetection(const std::vector<std::uint8_t>& stance, const std::vector<SampleRange>& swings,
+                                 const SampleRange* trialBoundaries = nullptr);
 
 }  // namespace footpath

@@ -1,0 +1,119 @@
+#include "cli/CliSupport.h"
+
+#include "io/ImportPresets.h"
+#include "io/ParameterIo.h"
+#include "io/ResultWriters.h"
+#include "nav/Pipeline.h"
+
+#include <iostream>
+
+namespace footpath::cli {
+
+namespace {
+
+ImportOptions importOptionsOf(const CommandLine& cmd)
+{
+    ImportOptions options;
+    options.format = cmd.format;
+    options.columnMap = cmd.columnMap;
+    options.referenceColumns = cmd.referenceColumns;
+    options.rate_hz = cmd.rate_hz;
+    if (!cmd.accUnit.empty() && !parseAccUnit(cmd.accUnit, options.accUnit))
+        throw BadInput{"--acc-unit expects mps2 or g, got '" + cmd.accUnit + "'"};
+    if (!cmd.gyrUnit.empty() && !parseGyrUnit(cmd.gyrUnit, options.gyrUnit))
+        throw BadInput{"--gyr-unit expects radps or degps, got '" + cmd.gyrUnit + "'"};
+    if (!cmd.timeUnit.empty() && !parseTimeUnit(cmd.timeUnit, options.timeUnit))
+        throw BadInput{"--time-unit expects s, ms or us, got '" + cmd.timeUnit + "'"};
+    return options;
+}
+
+void saveImportPresetIfAsked(const CommandLine& cmd, const ImportOptions& options)
+{
+    if (cmd.saveImportPreset.empty())
+        return;
+    ImportPreset preset;
+    preset.name = cmd.saveImportPreset;
+    preset.format = options.format;
+    preset.columnMap = options.columnMap;
+    preset.accUnit = options.accUnit;
+    preset.gyrUnit = options.gyrUnit;
+    preset.timeUnit = options.timeUnit;
+    preset.rate_hz = options.rate_hz;
+    if (std::string problem = saveImportPreset(preset); !problem.empty())
+        throw BadInput{problem};
+    std::cerr << "saved import preset '" << preset.name << "' in " << importPresetDirectory() << "\n";
+}
+
+}  // namespace
+
+Parameters loadParameterSet(const CommandLine& cmd)
+{
+    Parameters params;
+    if (!cmd.paramsFile.empty())
+        if (std::string problem = loadParameters(cmd.paramsFile, params); !problem.empty())
+            throw BadInput{problem};
+    for (const std::string& assignment : cmd.sets) {
+        const auto eq = assignment.find('=');
+        if (std::string problem = setParameter(params, assignment.substr(0, eq), assignment.substr(eq + 1));
+            !problem.empty())
+            throw BadInput{"--set: " + problem};
+    }
+    std::string problems;
+    for (const std::string& problem : params.validate())
+        problems += "\n  " + problem;
+    if (!problems.empty())
+        throw BadInput{"invalid parameters:" + problems};
+    return params;
+}
+
+ImportResult importInput(const CommandLine& cmd, bool echoWarnings)
+{
+    ImportOptions options = importOptionsOf(cmd);
+    if (!cmd.importPreset.empty()) {
+        ImportPreset preset;
+        if (std::string problem = loadImportPreset(cmd.importPreset, preset); !problem.empty())
+            throw BadInput{problem};
+        applyImportPreset(preset, options);
+    }
+    ImportResult read = importRecording(cmd.input, options);
+    if (!read.ok())
+        throw BadInput{read.error->text()};
+    saveImportPresetIfAsked(cmd, options);
+    for (const std::string& warning : echoWarnings ? read.recording.warnings : std::vector<std::string>{})
+        std::cerr << "warning: " << cmd.input << ": " << warning << "\n";
+    return read;
+}
+
+Result estimate(const Recording& recording, const Parameters& params)
+{
+    PipelineOutput output = runPipeline(recording, params);
+    if (!output.error.empty())
+        throw BadInput{recording.source + ": " + output.error};
+    return std::move(output.result);
+}
+
+void writeIfAsked(const std::string& path, const std::function<void(std::ostream&)>& write)
+{
+    if (path.empty())
+        return;
+    if (std::string problem = writeFileAtomically(path, write); !problem.empty())
+        throw BadInput{problem};
+}
+
+std::string describeParameters(const CommandLine& cmd)
+{
+    std::string text = cmd.paramsFile.empty() ? "defaults" : cmd.paramsFile;
+    for (const std::string& assignment : cmd.sets)
+        text += " " + assignment;
+    return text;
+}
+
+std::string methodSet(const Parameters& params)
+{
+    std::string text = params.use_zupt ? "ZUPT" : "";
+    if (params.use_zaru)
+        text += text.empty() ? "ZARU" : "+ZARU";
+    return text.empty() ? "none" : text;
+}
+
+}  // namespace footpath::cli

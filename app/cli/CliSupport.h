@@ -1,0 +1,34 @@
+#pragma once
+
+#include "Recording.h"
+#include "Result.h"
+#include "cli/CommandLine.h"
+#include "io/Import.h"
+#include "nav/Parameters.h"
+
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace footpath::cli {
+
+/// A failure the user can fix: printed as it is, exit code 2.
+struct BadInput {
+    std::string message;
+};
+
+/// --params then --set, validated.
+Parameters loadParameterSet(const CommandLine& cmd);
+/// Reads INPUT with the import options (and a preset); saves the preset when asked; prints the
+/// import warnings to stderr when echoWarnings is set.
+ImportResult importInput(const CommandLine& cmd, bool echoWarnings = true);
+/// Runs the pipeline; a problem the user caused becomes BadInput.
+Result estimate(const Recording& recording, const Parameters& params);
+/// Writes through writeFileAtomically when a path is given.
+void writeIfAsked(const std::string& path, const std::function<void(std::ostream&)>& write);
+/// "defaults" or the preset path, followed by the --set assignments.
+std::string describeParameters(const CommandLine& cmd);
+/// "ZUPT+ZARU", as the method set of a results table.
+std::string methodSet(const Parameters& params);
+
+}  // namespace footpath::cli

@@ -1,0 +1,141 @@
+// footpath-cli info and the import options, run as a user would run them.
+#include "TestData.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+Run runCli(const QStringList& arguments, const QString& presetDir = {})
+{
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    if (!presetDir.isEmpty())
+        environment.insert("FOOTPATH_IMPORT_PRESETS", presetDir);
+    process.setProcessEnvironment(environment);
+    process.start(QString::fromUtf8(FOOTPATH_CLI), arguments);
+    if (!process.waitForFinished(60000))
+        return {};
+    return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput()),
+            QString::fromUtf8(process.readAllStandardError())};
+}
+
+QJsonObject infoJson(const QStringList& arguments, const QString& presetDir = {})
+{
+    const Run run = runCli(QStringList{"info"} + arguments + QStringList{"--json"}, presetDir);
+    return QJsonDocument::fromJson(run.out.toUtf8()).object();
+}
+
+const QStringList kEcgColumns{"--columns", "time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,pressure_pa"};
+
+}  // namespace
+
+class TestCliImport : public QObject {
+    Q_OBJECT
+private slots:
+    void infoJsonHasTheDocumentedKeys()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        const QJsonObject info = infoJson({datasetPath("pyshoe-vicon/2017-11-22-11-22-03.csv")});
+        for (const char* key : {"format", "samples", "rate_hz", "duration_s", "channels", "gaps", "warnings"})
+            QVERIFY2(info.contains(key), key);
+        QCOMPARE(info.value("format").toString(), QString("pyshoe-vicon"));
+        QCOMPARE(info.value("samples").toInt(), 6490);
+        QVERIFY(std::abs(info.value("rate_hz").toDouble() - 200.0) < 0.5);
+        QVERIFY(info.value("channels").toArray().contains("reference-position"));
+        QCOMPARE(info.value("gaps").toObject().value("count").toInt(), 0);
+    }
+
+    void infoTableForAHeaderlessFileWithColumns()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        const Run run = runCli(QStringList{"info", datasetPath("ecg-xmu/straight_40.4m.txt")} + kEcgColumns);
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY(run.out.contains("format      delimited"));
+        QVERIFY(run.out.contains("samples     4141"));
+        QVERIFY(run.out.contains("known length 40.4 m from the file name"));
+    }
+
+    void headerlessFileWithoutColumnsIsRefusedWithAHint()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        const Run run = runCli({"info", datasetPath("ecg-xmu/straight_40.4m.txt")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(run.err.contains("no header row: the first line has 8 numeric columns"));
+        QVERIFY(run.err.contains("--columns"));
+    }
+
+    void importPresetSavedAndReused()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        QTemporaryDir presets;
+        const QString file = datasetPath("ecg-xmu/straight_40.4m.txt");
+        const Run save = runCli(QStringList{"info", file} + kEcgColumns + QStringList{"--save-import-preset", "ecg"},
+                                presets.path());
+        QCOMPARE(save.exitCode, 0);
+        QVERIFY(QFile::exists(presets.filePath("ecg.json")));
+        const QJsonObject info = infoJson({file, "--import-preset", "ecg"}, presets.path());
+        QCOMPARE(info.value("samples").toInt(), 4141);
+        const Run unknown = runCli({"info", file, "--import-preset", "nope"}, presets.path());
+        QCOMPARE(unknown.exitCode, 2);
+        QVERIFY(unknown.err.contains("saved presets: ecg"));
+    }
+
+    void unitOverridesAndFormatOverride()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("walk.csv");
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("time,ax,ay,az,wx,wy,wz\n");
+        for (int k = 0; k < 300; ++k)
+            file.write(QByteArray::number(k * 10) + ",0.01,0.02,1.0," + QByteArray::number(100.0 * std::sin(k * 0.05))
+                       + ",0,0\n");
+        file.close();
+        const QJsonObject detected = infoJson({path});
+        QCOMPARE(detected.value("units").toObject().value("acc").toString(), QString("g"));
+        QCOMPARE(detected.value("units").toObject().value("gyr").toString(), QString("deg/s"));
+        QCOMPARE(detected.value("units").toObject().value("time").toString(), QString("ms"));
+        const QJsonObject overridden = infoJson({path, "--acc-unit", "mps2", "--time-unit", "s"});
+        QCOMPARE(overridden.value("units").toObject().value("acc").toString(), QString("m/s^2"));
+        bool warned = false;
+        for (const QJsonValue& warning : overridden.value("warnings").toArray())
+            warned = warned || warning.toString().contains("looks like g");
+        QVERIFY(warned);
+        const Run badUnit = runCli({"info", path, "--gyr-unit", "rpm"});
+        QCOMPARE(badUnit.exitCode, 2);
+        QVERIFY(badUnit.err.contains("--gyr-unit expects radps or degps"));
+        const Run wrongFormat = runCli({"info", path, "--format", "xsens-mtb"});
+        QCOMPARE(wrongFormat.exitCode, 2);
+    }
+
+    void evalUsesTheReferenceTheFileCarries()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        const Run run = runCli({"eval", datasetPath("pyshoe-vicon/2017-11-22-11-22-03.csv"), "--json"});
+        QCOMPARE(run.exitCode, 0);
+        const QJsonObject metrics = QJsonDocument::fromJson(run.out.toUtf8()).object();
+        QVERIFY(metrics.contains("armse_2d_m"));
+        QVERIFY(metrics.value("armse_2d_m").toDouble() < 0.1);
+        QVERIFY(metrics.contains("dbse_m"));  // pyshoe trials are closed loops
+        const Run rectangle = runCli(QStringList{"eval", datasetPath("ecg-xmu/rectangle_72m.TXT"), "--columns",
+                                                 "time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", "--closed-loop",
+                                                 "--json"});
+        const QJsonObject closure = QJsonDocument::fromJson(rectangle.out.toUtf8()).object();
+        QCOMPARE(closure.value("reference_length_m").toDouble(), 72.0);  // from the file name
+        QVERIFY(closure.value("dbse_pct").toDouble() < 2.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliImport)
+#include "tst_cli_import.moc"

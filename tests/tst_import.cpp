@@ -1,0 +1,413 @@
+// importRecording(): format detection, units, time base and reference data, on every shared
+// recording and on crafted files. Expected counts and rates were read off the files with
+// independent scripts (awk / Python: rows, median time step, median |a|), not with Footpath.
+#include "TestData.h"
+#include "io/ColumnNames.h"
+#include "io/Import.h"
+#include "io/ImportPresets.h"
+#include "io/ReferenceSidecar.h"
+#include "nav/Pipeline.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace footpath;
+
+namespace {
+
+QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& content)
+{
+    const QString path = dir.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(content) != content.size())
+        return {};
+    return path;
+}
+
+ImportResult importOrFail(const QString& path, const ImportOptions& options = {})
+{
+    ImportResult read = importRecording(path.toStdString(), options);
+    if (!read.ok())
+        qWarning("%s", read.error->text().c_str());
+    return read;
+}
+
+bool hasWarning(const Recording& recording, const QString& part)
+{
+    for (const std::string& warning : recording.warnings)
+        if (QString::fromStdString(warning).contains(part))
+            return true;
+    return false;
+}
+
+/// A walk-like synthetic text: 100 Hz, |a| about g, rates up to ~5 rad/s.
+QByteArray syntheticText(const QByteArray& header, double accScale, double gyrScale, double timeScale,
+                         int rows = 400, int dropEvery = 0)
+{
+    QByteArray text = header + "\n";
+    int written = 0;
+    for (int k = 0; k < rows; ++k) {
+        if (dropEvery > 0 && k % dropEvery == dropEvery - 1)
+            continue;  // a lost packet
+        const double t = k * 0.01;
+        const double swing = std::sin(2.0 * M_PI * t);
+        text += QByteArray::number(t * timeScale, 'g', 12) + "," + QByteArray::number(0.5 * swing * accScale) + ","
+                + QByteArray::number(0.2 * accScale) + "," + QByteArray::number(9.8 * accScale) + ","
+                + QByteArray::number(0.1 * gyrScale) + "," + QByteArray::number(5.0 * swing * gyrScale) + ","
+                + QByteArray::number(0.05 * gyrScale) + "\n";
+        ++written;
+    }
+    return text;
+}
+
+/// The import feeds the pipeline: an estimate for every sample, finite throughout. Whether the
+/// walk is plausible depends on the stance detector (the fixed C1/C2/C3 thresholds miss the
+/// strides of several ecg-xmu walks); the figures are printed so a regression shows.
+bool estimatesEverySample(const Recording& recording, const QString& name)
+{
+    const PipelineOutput output = runPipeline(recording, Parameters());
+    if (!output.error.empty() || output.result.position_m.size() != recording.samples.size())
+        return false;
+    for (const Eigen::Vector3d& p : output.result.position_m)
+        if (!p.allFinite())
+            return false;
+    const Summary& s = output.result.summary;
+    qInfo("%-26s %6zu samples %7.1f s %5zu steps path %9.1f m end-to-start %9.1f m", qPrintable(name), s.samples,
+          s.duration_s, s.steps, s.pathLength_m, s.endToStart_m);
+    return true;
+}
+
+}  // namespace
+
+class TestImport : public QObject {
+    Q_OBJECT
+private slots:
+    // ---- the shared recordings ------------------------------------------------------------
+    void pyshoeVicon_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("samples");
+        QTest::addColumn<int>("gaps");
+        // Gaps: steps longer than 1.5 sample periods (7.5 ms), counted with awk; two files have one
+        // 8.6 ms step each.
+        const std::tuple<const char*, int, int> files[] = {
+            {"2017-11-22-11-22-03.csv", 6490, 0}, {"2017-11-22-11-22-46.csv", 6753, 0},
+            {"2017-11-22-11-23-25.csv", 7117, 0}, {"2017-11-22-11-25-20.csv", 5323, 0},
+            {"2017-11-22-11-26-05.csv", 7525, 1}, {"2017-11-22-11-26-46.csv", 6555, 0},
+            {"2017-11-22-11-27-30.csv", 5684, 0}, {"2017-11-22-11-28-03.csv", 5204, 0},
+            {"2017-11-27-11-11-24.csv", 4203, 0}, {"2017-11-27-11-17-28.csv", 5117, 1},
+            {"2017-11-27-11-22-22.csv", 5203, 0}, {"2017-12-15-17-59-50.csv", 3402, 0}};
+        for (const auto& [file, samples, gaps] : files)
+            QTest::newRow(file) << QString(file) << samples << gaps;
+    }
+    void pyshoeVicon()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        QFETCH(QString, file);
+        QFETCH(int, samples);
+        QFETCH(int, gaps);
+        const ImportResult read = importOrFail(datasetPath("pyshoe-vicon/" + file));
+        QVERIFY(read.ok());
+        QCOMPARE(read.info.format, std::string("pyshoe-vicon"));
+        QCOMPARE(read.recording.samples.size(), std::size_t(samples));
+        QVERIFY(std::abs(read.info.rate_hz - 200.0) < 0.5);
+        QCOMPARE(read.info.accUnitAsRead, AccUnit::MetresPerSecond2);
+        QCOMPARE(read.info.gyrUnitAsRead, GyrUnit::RadiansPerSecond);
+        QCOMPARE(read.info.gaps.count, std::size_t(gaps));
+        QCOMPARE(read.recording.reference.positions_m.size(), std::size_t(samples));
+        QVERIFY(read.recording.reference.closedLoop);
+        QVERIFY(estimatesEverySample(read.recording, file));
+    }
+
+    void ecgXmu_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("samples");
+        QTest::addColumn<int>("columns");
+        QTest::addColumn<double>("length");
+        QTest::newRow("Height") << "Height.txt" << 15330 << 11 << 0.0;
+        QTest::newRow("data") << "data.txt" << 20433 << 8 << 0.0;
+        QTest::newRow("freewalking") << "freewalking_88.8m.txt" << 8561 << 8 << 88.8;
+        QTest::newRow("juxing") << "mage_juxing_1.txt" << 2992 << 11 << 0.0;
+        QTest::newRow("sanjiaoxing") << "mage_sanjiaoxing_1.txt" << 3044 << 11 << 0.0;
+        QTest::newRow("yuan") << "mage_yuan_1.txt" << 2062 << 11 << 0.0;
+        QTest::newRow("zhixian") << "mage_zhixian_1.txt" << 3213 << 11 << 0.0;
+        QTest::newRow("rectangle") << "rectangle_72m.TXT" << 10051 << 7 << 72.0;
+        QTest::newRow("shanglou") << "shanglou041601.TXT" << 13349 << 8 << 0.0;
+        QTest::newRow("step_34") << "step_34.txt" << 4916 << 8 << 0.0;
+        QTest::newRow("straight") << "straight_40.4m.txt" << 4141 << 8 << 40.4;
+    }
+    void ecgXmu()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        QFETCH(QString, file);
+        QFETCH(int, samples);
+        QFETCH(int, columns);
+        QFETCH(double, length);
+        const QString path = datasetPath("ecg-xmu/" + file);
+        // Without a column map a headerless file is refused with a message that counts the columns.
+        const ImportResult refused = importRecording(path.toStdString());
+        QVERIFY(!refused.ok());
+        QVERIFY(QString::fromStdString(refused.error->message)
+                    .contains(QString("the first line has %1 numeric columns").arg(columns)));
+
+        ImportOptions options;
+        options.columnMap = {"time_ms", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"};
+        if (columns >= 8)
+            options.columnMap.push_back("pressure_pa");
+        while (static_cast<int>(options.columnMap.size()) < columns)
+            options.columnMap.push_back("skip");
+        const ImportResult read = importOrFail(path, options);
+        QVERIFY(read.ok());
+        QCOMPARE(read.info.format, std::string("delimited"));
+        QCOMPARE(read.recording.samples.size(), std::size_t(samples));
+        QVERIFY(std::abs(read.info.rate_hz - 100.0) < 0.5);
+        QCOMPARE(read.info.accUnitAsRead, AccUnit::MetresPerSecond2);
+        QCOMPARE(read.info.gyrUnitAsRead, GyrUnit::RadiansPerSecond);
+        QCOMPARE(read.info.gaps.count, std::size_t(0));
+        QCOMPARE(read.recording.hasPressure(), columns >= 8);
+        QCOMPARE(read.recording.reference.knownLength_m, length);
+        if (columns >= 8)
+            QVERIFY(read.recording.samples.front().pressure_pa > 90000.0);
+        QVERIFY(estimatesEverySample(read.recording, file));
+    }
+
+    // ---- units ------------------------------------------------------------------------------
+    void unitsFromNamesOrData_data()
+    {
+        QTest::addColumn<QByteArray>("header");
+        QTest::addColumn<double>("accScale");
+        QTest::addColumn<double>("gyrScale");
+        QTest::addColumn<double>("timeScale");
+        QTest::addColumn<int>("acc");
+        QTest::addColumn<int>("gyr");
+        QTest::addColumn<int>("time");
+        QTest::addColumn<QString>("warning");
+        const QByteArray plain = "time,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z";
+        const int mps2 = int(AccUnit::MetresPerSecond2), g = int(AccUnit::StandardGravity);
+        const int rad = int(GyrUnit::RadiansPerSecond), deg = int(GyrUnit::DegreesPerSecond);
+        const int s = int(TimeUnit::Seconds), ms = int(TimeUnit::Milliseconds), us = int(TimeUnit::Microseconds);
+        QTest::newRow("SI stated") << QByteArray("t_s,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x_radps,gyr_y_radps,gyr_z_radps")
+                                   << 1.0 << 1.0 << 1.0 << mps2 << rad << s << "";
+        QTest::newRow("g and deg/s stated")
+            << QByteArray("Time (ms),Acc X [g],Acc Y [g],Acc Z [g],Gyr X (deg/s),Gyr Y (deg/s),Gyr Z (deg/s)")
+            << 1.0 / 9.80665 << 180.0 / M_PI << 1000.0 << g << deg << ms << "";
+        QTest::newRow("g found from |a|, seconds from spacing") << plain << 1.0 / 9.80665 << 1.0 << 1.0 << g << rad << s
+                                                                << "median step of 0.01 is read as s";
+        QTest::newRow("deg/s found from the rates, ms from spacing")
+            << plain << 1.0 << 180.0 / M_PI << 1000.0 << mps2 << deg << ms << "read as deg/s";
+        QTest::newRow("microseconds from spacing") << plain << 1.0 << 1.0 << 1e6 << mps2 << rad << us << "read as us";
+        QTest::newRow("stated m/s^2 that looks like g is warned")
+            << QByteArray("time_s,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x,gyr_y,gyr_z") << 1.0 / 9.80665 << 1.0 << 1.0
+            << mps2 << rad << s << "looks like g";
+    }
+    void unitsFromNamesOrData()
+    {
+        QFETCH(QByteArray, header);
+        QFETCH(double, accScale);
+        QFETCH(double, gyrScale);
+        QFETCH(double, timeScale);
+        QFETCH(int, acc);
+        QFETCH(int, gyr);
+        QFETCH(int, time);
+        QFETCH(QString, warning);
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, "walk.csv", syntheticText(header, accScale, gyrScale, timeScale));
+        const ImportResult read = importOrFail(path);
+        QVERIFY(read.ok());
+        QCOMPARE(int(read.info.accUnitAsRead), acc);
+        QCOMPARE(int(read.info.gyrUnitAsRead), gyr);
+        QCOMPARE(int(read.info.timeUnitAsRead), time);
+        // After conversion every file is the same walk in SI.
+        const ImuSample& sample = read.recording.samples[25];  // t = 0.25 s: sin = 1
+        QVERIFY(std::abs(sample.time_s - 0.25) < 1e-9);
+        QVERIFY(std::abs(sample.acc_mps2.z() - 9.8 * accScale * (acc == int(AccUnit::StandardGravity) ? 9.80665 : 1.0))
+                < 1e-3);
+        QVERIFY(std::abs(sample.gyr_radps.y() - (gyr == int(GyrUnit::DegreesPerSecond) ? 5.0 : 5.0 * gyrScale)) < 1e-3);
+        if (!warning.isEmpty())
+            QVERIFY2(hasWarning(read.recording, warning), qPrintable(warning));
+    }
+
+    void overridesWin()
+    {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, "walk.csv",
+                                       syntheticText("time,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1.0 / 9.80665, 1.0, 1.0));
+        ImportOptions options;
+        options.accUnit = AccUnit::MetresPerSecond2;  // wrong on purpose: it is g
+        const ImportResult read = importOrFail(path, options);
+        QCOMPARE(read.info.accUnitAsRead, AccUnit::MetresPerSecond2);
+        QVERIFY(std::abs(read.recording.samples[0].acc_mps2.z() - 1.0) < 1e-3);  // not scaled
+        QVERIFY(hasWarning(read.recording, "looks like g"));
+    }
+
+    // ---- time base ----------------------------------------------------------------------------
+    void gapsAreCountedAndReported()
+    {
+        QTemporaryDir dir;
+        // Every 50th packet lost: of 400 rows, samples 49, 99, ..., 399 are missing; the last one
+        // ends the file, so 7 gaps of 20 ms show.
+        const QString path = writeFile(dir, "gaps.csv", syntheticText("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1.0,
+                                                                      1.0, 1.0, 400, 50));
+        const ImportResult read = importOrFail(path);
+        QCOMPARE(read.info.gaps.count, std::size_t(7));
+        QCOMPARE(read.info.gaps.missingSamples, std::size_t(7));
+        QVERIFY(std::abs(read.info.gaps.longest_s - 0.02) < 1e-9);
+        QVERIFY(std::abs(read.info.rate_hz - 100.0) < 0.01);
+        QVERIFY(hasWarning(read.recording, "7 gap(s) in the time base, about 7 samples lost"));
+    }
+
+    void counterTimeBaseNeedsARate()
+    {
+        QTemporaryDir dir;
+        QByteArray text = "counter,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
+        for (int k : {0, 1, 2, 4, 5})  // packet 3 lost
+            text += QByteArray::number(k) + ",0,0,9.81,0,0,0\n";
+        const QString path = writeFile(dir, "counter.csv", text);
+        const ImportResult noRate = importRecording(path.toStdString());
+        QVERIFY(!noRate.ok());
+        QVERIFY(QString::fromStdString(noRate.error->message).contains("--rate"));
+        ImportOptions options;
+        options.rate_hz = 50.0;
+        const ImportResult read = importOrFail(path, options);
+        QCOMPARE(read.recording.samples.back().time_s, 0.1);
+        QCOMPARE(read.info.gaps.count, std::size_t(1));
+    }
+
+    void decimalCommaWithSemicolons()
+    {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, "excel.csv",
+                                       "time_s;acc_x;acc_y;acc_z;gyr_x;gyr_y;gyr_z\n0,00;0,1;0,2;9,81;0;0;0,5\n"
+                                       "0,01;0,1;0,2;9,81;0;0;0,5\n");
+        const ImportResult read = importOrFail(path);
+        QVERIFY(read.ok());
+        QCOMPARE(read.recording.samples[1].time_s, 0.01);
+        QCOMPARE(read.recording.samples[1].acc_mps2.z(), 9.81);
+    }
+
+    // ---- reference data -----------------------------------------------------------------------
+    void lengthFromFileNames_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<double>("length");
+        QTest::newRow("rectangle_72m.TXT") << "rectangle_72m.TXT" << 72.0;
+        QTest::newRow("straight_40.4m.txt") << "straight_40.4m.txt" << 40.4;
+        QTest::newRow("walk-12m_2.csv") << "walk-12m_2.csv" << 12.0;
+        QTest::newRow("no length") << "mage_juxing_1.txt" << 0.0;
+        QTest::newRow("mm is not m") << "walk_72mm.csv" << 0.0;
+    }
+    void lengthFromFileNames()
+    {
+        QFETCH(QString, name);
+        QFETCH(double, length);
+        QCOMPARE(lengthFromFileName(("/some/dir/" + name).toStdString()), length);
+    }
+
+    void sidecarGivesClosedLoopAndLength()
+    {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, "loop.csv", syntheticText("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, 1, 1));
+        writeFile(dir, "loop.csv.reference.json", R"({"closed_loop": true, "length_m": 25.8})");
+        const ImportResult read = importOrFail(path);
+        QVERIFY(read.recording.reference.closedLoop);
+        QCOMPARE(read.recording.reference.knownLength_m, 25.8);
+        QVERIFY(!read.recording.reference.notes.empty());
+
+        writeFile(dir, "broken.csv.reference.json", "{closed_loop: yes");
+        const QString broken = writeFile(dir, "broken.csv", syntheticText("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, 1, 1));
+        const ImportResult withBrokenSidecar = importOrFail(broken);
+        QVERIFY(withBrokenSidecar.ok());
+        QVERIFY(hasWarning(withBrokenSidecar.recording, "reference sidecar ignored"));
+    }
+
+    // ---- presets ------------------------------------------------------------------------------
+    void importPresetRoundTripAndApply()
+    {
+        QTemporaryDir dir;
+        ImportPreset preset;
+        preset.name = "ecg-xmu";
+        preset.columnMap = {"time_ms", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "pressure_pa"};
+        preset.accUnit = AccUnit::MetresPerSecond2;
+        preset.gyrUnit = GyrUnit::RadiansPerSecond;
+        QCOMPARE(saveImportPreset(preset, dir.path().toStdString()), std::string());
+        ImportPreset loaded;
+        QCOMPARE(loadImportPreset("ecg-xmu", loaded, dir.path().toStdString()), std::string());
+        QCOMPARE(loaded.columnMap, preset.columnMap);
+        QCOMPARE(loaded.accUnit, preset.accUnit);
+        QCOMPARE(listImportPresets(dir.path().toStdString()).size(), std::size_t(1));
+
+        ImportOptions options;
+        options.gyrUnit = GyrUnit::DegreesPerSecond;  // the user's own setting wins
+        applyImportPreset(loaded, options);
+        QCOMPARE(options.columnMap, preset.columnMap);
+        QCOMPARE(options.gyrUnit, GyrUnit::DegreesPerSecond);
+
+        ImportPreset missing;
+        const std::string problem = loadImportPreset("nope", missing, dir.path().toStdString());
+        QVERIFY(QString::fromStdString(problem).contains("saved presets: ecg-xmu"));
+        QVERIFY(!saveImportPreset(ImportPreset{"../evil", {}, {}, {}, {}, {}, 0.0}, dir.path().toStdString()).empty());
+    }
+
+    // ---- header names -------------------------------------------------------------------------
+    void headerNames_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("role");
+        QTest::addColumn<int>("acc");
+        QTest::addColumn<int>("gyr");
+        QTest::addColumn<int>("time");
+        const int none = 0;
+        const auto r = [](ColumnRole role) { return int(role); };
+        QTest::newRow("acc_x") << "acc_x" << r(ColumnRole::AccX) << none << none << none;
+        QTest::newRow("AccY") << "AccY" << r(ColumnRole::AccY) << none << none << none;
+        QTest::newRow("az") << "az" << r(ColumnRole::AccZ) << none << none << none;
+        QTest::newRow("accel_x_g") << "accel_x_g" << r(ColumnRole::AccX) << int(AccUnit::StandardGravity) << none << none;
+        QTest::newRow("Accelerometer X (m/s^2)") << "Accelerometer X (m/s^2)" << r(ColumnRole::AccX)
+                                                 << int(AccUnit::MetresPerSecond2) << none << none;
+        QTest::newRow("gyro_z_dps") << "gyro_z_dps" << r(ColumnRole::GyrZ) << none << int(GyrUnit::DegreesPerSecond) << none;
+        QTest::newRow("wx") << "wx" << r(ColumnRole::GyrX) << none << none << none;
+        QTest::newRow("gy") << "gy" << r(ColumnRole::GyrY) << none << none << none;
+        QTest::newRow("Gyr_Z [rad/s]") << "Gyr_Z [rad/s]" << r(ColumnRole::GyrZ) << none << int(GyrUnit::RadiansPerSecond) << none;
+        QTest::newRow("mag_y") << "mag_y" << r(ColumnRole::MagY) << none << none << none;
+        QTest::newRow("timestamp") << "timestamp" << r(ColumnRole::Time) << none << none << none;
+        QTest::newRow("t_s") << "t_s" << r(ColumnRole::Time) << none << none << int(TimeUnit::Seconds);
+        QTest::newRow("Time (us)") << "Time (us)" << r(ColumnRole::Time) << none << none << int(TimeUnit::Microseconds);
+        QTest::newRow("baro") << "baro" << r(ColumnRole::Pressure) << none << none << none;
+        QTest::newRow("PacketCounter") << "PacketCounter" << r(ColumnRole::Counter) << none << none << none;
+        QTest::newRow("FreeAcc_X is not acc") << "FreeAcc_X" << -1 << none << none << none;
+        QTest::newRow("temperature is not time") << "temperature" << -1 << none << none << none;
+        QTest::newRow("vicon_x_m is not data") << "vicon_x_m" << -1 << none << none << none;
+        QTest::newRow("accuracy is not acc") << "accuracy" << -1 << none << none << none;
+    }
+    void headerNames()
+    {
+        QFETCH(QString, name);
+        QFETCH(int, role);
+        QFETCH(int, acc);
+        QFETCH(int, gyr);
+        QFETCH(int, time);
+        const std::optional<ColumnMeaning> meaning = recogniseHeaderName(name.toStdString());
+        QCOMPARE(meaning.has_value(), role >= 0);
+        if (!meaning)
+            return;
+        QCOMPARE(int(meaning->role), role);
+        QCOMPARE(int(meaning->accUnit), acc);
+        QCOMPARE(int(meaning->gyrUnit), gyr);
+        QCOMPARE(int(meaning->timeUnit), time);
+    }
+
+    void pressureUnitsConvertToPascal()
+    {
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, "baro.csv",
+                                       "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,pressure_hpa\n"
+                                       "0,0,0,9.81,0,0,0,1013.25\n0.01,0,0,9.81,0,0,0,1013.2\n");
+        const ImportResult read = importOrFail(path);
+        QVERIFY(read.recording.hasPressure());
+        QCOMPARE(read.recording.samples[0].pressure_pa, 101325.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestImport)
+#include "tst_import.moc"
