@@ -315,19 +315,6 @@ const std::vector<std::string>& importFormatNames()
     return names;
 }
 
-std::uint64_t CounterUnwrapper::next(std::uint64_t raw)
-{
-    if (!started_) {
-        started_ = true;
-        lastRaw_ = raw;
-        total_ = raw;
-        return total_;
-    }
-    total_ += (raw + modulus_ - lastRaw_) % modulus_;
-    lastRaw_ = raw;
-    return total_;
-}
-
 ImportResult importStream(std::istream& in, std::size_t size, const std::string& name, const ImportOptions& options)
 {
     ImportResult failed;

@@ -2,6 +2,7 @@
 
 #include "Recording.h"
 #include "io/DelimitedTextReader.h"
+#include "io/TickClock.h"
 
 #include <functional>
 #include <istream>
@@ -76,19 +77,5 @@ ImportResult importStream(std::istream& in, std::size_t size, const std::string&
 /// The names --format accepts: "xsens-text", "xsens-mtb", "delimited", "pyshoe-vicon".
 const std::vector<std::string>& importFormatNames();
 
-/// Unwraps a counter that wraps at `modulus` (PacketCounter: 65536; SampleTimeFine: 2^32) into a
-/// monotonic 64-bit count. The first value is taken as is; each step forward is (new - old) mod
-/// modulus, so one wrap per step is handled and a step of 0 stays 0.
-class CounterUnwrapper {
-public:
-    explicit CounterUnwrapper(std::uint64_t modulus) : modulus_(modulus) {}
-    std::uint64_t next(std::uint64_t raw);
-
-private:
-    std::uint64_t modulus_;
-    bool started_ = false;
-    std::uint64_t lastRaw_ = 0;
-    std::uint64_t total_ = 0;
-};
 
 }  // namespace footpath

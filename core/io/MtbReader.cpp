@@ -16,7 +16,6 @@ namespace footpath {
 namespace {
 
 constexpr std::size_t kChunkSize = 64 * 1024;
-constexpr double kSampleTimeFineHz = 10000.0;
 constexpr std::uint64_t kSampleTimeFineModulus = std::uint64_t{1} << 32;
 constexpr std::uint64_t kPacketCounterModulus = 65536;
 /// A stated rate further than this (relative) from the SampleTimeFine steps is not trusted.
@@ -426,23 +425,16 @@ bool MtbParser::resolveRate()
 /// The median step is the nominal period even when some packets are lost.
 std::optional<double> MtbParser::rateFromSampleTimeFine() const
 {
-    if (timeBase_ != TimeBase::SampleTimeFine || ticks_.size() < 2)
+    if (timeBase_ != TimeBase::SampleTimeFine)
         return std::nullopt;
-    std::vector<std::uint64_t> steps(ticks_.size() - 1);
-    for (std::size_t i = 1; i < ticks_.size(); ++i)
-        steps[i - 1] = ticks_[i] - ticks_[i - 1];
-    const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-    std::nth_element(steps.begin(), middle, steps.end());
-    return kSampleTimeFineHz / static_cast<double>(*middle);
+    return rateFromMedianTickStep(ticks_, kSampleTimeFineHz);
 }
 
 void MtbParser::assignTimes()
 {
     const bool fromSampleTimeFine = timeBase_ == TimeBase::SampleTimeFine;
     const double ticksPerSecond = fromSampleTimeFine ? kSampleTimeFineHz : result_.info.rate_hz;
-    std::vector<ImuSample>& samples = result_.recording.samples;
-    for (std::size_t i = 0; i < samples.size(); ++i)
-        samples[i].time_s = static_cast<double>(ticks_[i] - ticks_.front()) / ticksPerSecond;
+    assignTimesFromTicks(result_.recording.samples, ticks_, ticksPerSecond);
     const std::string rate = formatNumber(result_.info.rate_hz) + " Hz";
     switch (timeBase_) {
     case TimeBase::SampleTimeFine: result_.info.timeSource = "SampleTimeFine (10 kHz)"; break;

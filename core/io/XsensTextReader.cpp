@@ -18,7 +18,6 @@ namespace {
 
 constexpr std::uint64_t kPacketCounterModulus = 65536;           // u16 (MTData2 0x1020)
 constexpr std::uint64_t kSampleTimeFineModulus = 4294967296ULL;  // u32 (MTData2 0x1060)
-constexpr double kSampleTimeFineHz = 10000.0;
 // Counters are read as doubles ("0.0" in the IPOL files); above 2^53 they are no longer exact.
 constexpr double kLargestExactCounter = 9007199254740992.0;
 // No export line comes near this; a file without newlines (binary, or not an export) stops here
@@ -620,23 +619,16 @@ bool XsensTextParser::resolveRate()
 /// The median step is the nominal period even when some packets are lost.
 std::optional<double> XsensTextParser::rateFromSampleTimeFine() const
 {
-    if (!layout_.has(Field::SampleTimeFine) || ticks_.size() < 2)
+    if (!layout_.has(Field::SampleTimeFine))
         return std::nullopt;
-    std::vector<std::uint64_t> steps(ticks_.size() - 1);
-    for (std::size_t i = 1; i < ticks_.size(); ++i)
-        steps[i - 1] = ticks_[i] - ticks_[i - 1];
-    const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
-    std::nth_element(steps.begin(), middle, steps.end());
-    return kSampleTimeFineHz / static_cast<double>(*middle);
+    return rateFromMedianTickStep(ticks_, kSampleTimeFineHz);
 }
 
 void XsensTextParser::assignTimes()
 {
     const bool fromSampleTimeFine = layout_.has(Field::SampleTimeFine);
     const double ticksPerSecond = fromSampleTimeFine ? kSampleTimeFineHz : result_.info.rate_hz;
-    std::vector<ImuSample>& samples = result_.recording.samples;
-    for (std::size_t i = 0; i < samples.size(); ++i)
-        samples[i].time_s = static_cast<double>(ticks_[i] - ticks_.front()) / ticksPerSecond;
+    assignTimesFromTicks(result_.recording.samples, ticks_, ticksPerSecond);
     result_.info.timeSource = fromSampleTimeFine ? "SampleTimeFine (10 kHz)"
                                                  : "PacketCounter at " + formatNumber(result_.info.rate_hz) + " Hz";
 }
