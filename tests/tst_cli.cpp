@@ -31,8 +31,11 @@ namespace {
 constexpr int kTimeoutMs = 120000;
 constexpr int kExitBadInput = 2;
 
+// The foundation issue fixes these first columns; the bias estimates follow them.
 const QString kTrajectoryHeader =
-    QStringLiteral("time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance");
+    QStringLiteral("time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance,"
+                   "gyro_bias_x_radps,gyro_bias_y_radps,gyro_bias_z_radps,acc_bias_x_mps2,acc_bias_y_mps2,"
+                   "acc_bias_z_mps2");
 const QString kStepsHeader =
     QStringLiteral("step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s");
 const QByteArray kImuHeader = "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
@@ -216,7 +219,7 @@ void TestCli::process_writesTrajectoryStepsAndSummary()
     QVERIFY2(run.out.contains(walkCsv_) && run.out.contains(QStringLiteral("%1 samples").arg(sampleCount_)),
              qPrintable(run.out));
 
-    // Trajectory: the exact header, then one row of 14 numbers per input sample, in input time.
+    // Trajectory: the exact header, then one row of 20 numbers per input sample, in input time.
     const QStringList rows = readLines(trajectory);
     QVERIFY(!rows.isEmpty());
     QCOMPARE(rows.first(), kTrajectoryHeader);
@@ -224,7 +227,7 @@ void TestCli::process_writesTrajectoryStepsAndSummary()
     int stanceRows = 0;
     for (int r = 1; r < rows.size(); ++r) {
         const QStringList cells = rows[r].split(QLatin1Char(','));
-        QVERIFY2(cells.size() == 14, qPrintable(QStringLiteral("row %1: %2").arg(r).arg(rows[r])));
+        QVERIFY2(cells.size() == 20, qPrintable(QStringLiteral("row %1: %2").arg(r).arg(rows[r])));
         for (const QString& cell : cells) {
             bool ok = false;
             const double value = cell.toDouble(&ok);

@@ -1,13 +1,23 @@
 #include "TrajectoryView2D.h"
+#include "metrics/Evaluation.h"
 #include "nav/Pipeline.h"
 #include "sim/WalkSimulator.h"
 
+#include <Eigen/Geometry>
+#include <QElapsedTimer>
 #include <QImage>
+#include <QSignalSpy>
 #include <QtTest>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
 
 using namespace footpath;
 
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
 
 /// Pixels that differ from the background colour of the plot's corner.
 int paintedPixels(const QImage& image)
@@ -20,6 +30,110 @@ int paintedPixels(const QImage& image)
     return painted;
 }
 
+int differingPixels(const QImage& a, const QImage& b)
+{
+    if (a.size() != b.size())
+        return a.width() * a.height();
+    int differing = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x)
+            differing += a.pixel(x, y) != b.pixel(x, y);
+    return differing;
+}
+
+/// The 10 m x 5 m loop estimated by the real pipeline, computed once for all tests.
+const SimulatedWalk& rectangleWalk()
+{
+    static const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), WalkSimulatorConfig());
+    return walk;
+}
+
+const Result& rectangleResult()
+{
+    static const Result result = runPipeline(rectangleWalk().recording, Parameters()).result;
+    return result;
+}
+
+/// A walk of the given length built directly (no simulation): laps of a 20 m x 10 m rectangle with
+/// a speed that pulses like strides, drifting 0.3 m per lap so the laps do not overlap exactly.
+Result longWalk(double duration_s, double rate_hz)
+{
+    Result result;
+    const auto samples = static_cast<std::size_t>(duration_s * rate_hz);
+    const double perimeter_m = 60.0;
+    for (std::size_t k = 0; k < samples; ++k) {
+        const double t = static_cast<double>(k) / rate_hz;
+        const double s = 1.3 * t - 1.3 / (2.0 * kPi) * std::sin(2.0 * kPi * t);  // speed 0 .. 2.6 m/s
+        const double lap = std::floor(s / perimeter_m), along = s - lap * perimeter_m;
+        const double drift = 0.3 * lap;
+        Eigen::Vector3d p;
+        if (along < 20.0)
+            p = {along, drift, 0.0};
+        else if (along < 30.0)
+            p = {20.0 + drift, along - 20.0, 0.0};
+        else if (along < 50.0)
+            p = {50.0 - along, 10.0 + drift, 0.0};
+        else
+            p = {-drift, 60.0 - along, 0.0};
+        p.z() = 0.1 * std::max(0.0, std::sin(2.0 * kPi * t - kPi / 2.0));
+        result.time_s.push_back(t);
+        result.position_m.push_back(p);
+        result.flags.stance.push_back(std::fmod(t, 1.0) < 0.3 ? 1 : 0);
+    }
+    for (std::size_t k = 0; k < samples; ++k) {
+        const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(k + 1, samples - 1);
+        result.velocity_mps.push_back((result.position_m[b] - result.position_m[a]) * rate_hz / double(b - a));
+    }
+    for (std::size_t k = 0; k < samples; k += static_cast<std::size_t>(rate_hz)) {
+        Step step;
+        step.stanceStart_s = result.time_s[k];
+        step.position_m = result.position_m[k];
+        result.steps.push_back(step);
+    }
+    return result;
+}
+
+QCPGraph* graphNamed(QCustomPlot* plot, const QString& name)
+{
+    for (int i = 0; i < plot->graphCount(); ++i) {
+        if (plot->graph(i)->name() == name)
+            return plot->graph(i);
+    }
+    return nullptr;
+}
+
+QCPCurve* curveNamed(QCustomPlot* plot, const QString& name)
+{
+    for (int i = 0; i < plot->plottableCount(); ++i) {
+        if (auto* curve = qobject_cast<QCPCurve*>(plot->plottable(i)); curve && curve->name() == name)
+            return curve;
+    }
+    return nullptr;
+}
+
+QPoint toPixel(QCustomPlot* plot, const Eigen::Vector3d& position_m)
+{
+    return QPointF(plot->xAxis->coordToPixel(position_m.x()), plot->yAxis->coordToPixel(position_m.y())).toPoint();
+}
+
+/// Index of the sample with the greatest speed: samples there are far apart, so a click picks one.
+std::size_t fastestSample(const Result& result)
+{
+    std::size_t fastest = 0;
+    for (std::size_t k = 0; k < result.velocity_mps.size(); ++k) {
+        if (result.velocity_mps[k].norm() > result.velocity_mps[fastest].norm())
+            fastest = k;
+    }
+    return fastest;
+}
+
+double metresPerPixelRatio(QCustomPlot* plot)
+{
+    const double xPerPixel = plot->xAxis->range().size() / plot->axisRect()->width();
+    const double yPerPixel = plot->yAxis->range().size() / plot->axisRect()->height();
+    return xPerPixel / yPerPixel;
+}
+
 }  // namespace
 
 class TestTrajectoryView2D : public QObject {
@@ -27,12 +141,10 @@ class TestTrajectoryView2D : public QObject {
 private slots:
     void drawsThePathWithoutOpenGl()
     {
-        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), WalkSimulatorConfig());
-        const PipelineOutput output = runPipeline(walk.recording, Parameters());
         TrajectoryView2D view;
         view.resize(600, 400);
         const int emptyPixels = paintedPixels(view.grab().toImage());
-        view.showResult(output.result);
+        view.showResult(rectangleResult());
         const int drawnPixels = paintedPixels(view.grab().toImage());
         QVERIFY2(drawnPixels > emptyPixels + 200, qPrintable(QString("%1 vs %2").arg(drawnPixels).arg(emptyPixels)));
         view.clear();  // the axes keep their range; the path and markers go
@@ -44,7 +156,236 @@ private slots:
         TrajectoryView2D view;
         view.resize(300, 200);
         view.showResult(Result());
+        view.setColouring(TrajectoryView2D::Colouring::Speed);
+        view.setTimeCursor(1.0);
         QVERIFY(!view.grab().isNull());
+        view.setResult(nullptr);
+        QVERIFY(!view.grab().isNull());
+    }
+
+    void colouringModesChangeThePixels()
+    {
+        TrajectoryView2D view;
+        view.resize(700, 450);
+        view.setResult(std::make_shared<const Result>(rectangleResult()));
+        const QImage plain = view.grab().toImage();
+        view.setColouring(TrajectoryView2D::Colouring::Time);
+        const QImage byTime = view.grab().toImage();
+        view.setColouring(TrajectoryView2D::Colouring::Speed);
+        const QImage bySpeed = view.grab().toImage();
+        QCOMPARE(view.colouring(), TrajectoryView2D::Colouring::Speed);
+        QVERIFY2(differingPixels(plain, byTime) > 2000, "the time colouring (and its scale) is not drawn");
+        QVERIFY2(differingPixels(byTime, bySpeed) > 300, "speed and time colour the path alike");
+        view.setColouring(TrajectoryView2D::Colouring::None);
+        QCOMPARE(differingPixels(plain, view.grab().toImage()), 0);  // the colour scale leaves again
+    }
+
+    void colourScaleShowsOnlyWhenColouring()
+    {
+        TrajectoryView2D view;
+        view.resize(600, 400);
+        view.showResult(rectangleResult());
+        const auto scales = [&view] { return view.plot()->plotLayout()->hasElement(0, 1); };
+        QVERIFY(!scales());
+        view.setColouring(TrajectoryView2D::Colouring::Speed);
+        QVERIFY(scales());
+        auto* scale = qobject_cast<QCPColorScale*>(view.plot()->plotLayout()->element(0, 1));
+        QVERIFY(scale);
+        QVERIFY(scale->axis()->label().contains("m/s"));
+        QVERIFY(scale->dataRange().upper > 1.0);  // the simulated foot swings faster than 1 m/s
+        view.setColouring(TrajectoryView2D::Colouring::Time);
+        QVERIFY(scale->axis()->label().contains("(s)"));
+        QCOMPARE(scale->dataRange().upper, rectangleResult().time_s.back());
+    }
+
+    void timeCursorMarkerSitsAtThePositionOfTheNearestTime()
+    {
+        const Result& result = rectangleResult();
+        TrajectoryView2D view;
+        view.resize(700, 450);
+        view.showResult(result);
+        const std::size_t k = fastestSample(result);
+        // Just past sample k, nearer to it than to k + 1.
+        view.setTimeCursor(result.time_s[k] + 0.3 * (result.time_s[k + 1] - result.time_s[k]));
+        QCPGraph* cursor = graphNamed(view.plot(), "Time cursor");
+        QVERIFY(cursor);
+        QCOMPARE(cursor->data()->size(), 1);
+        QCOMPARE(cursor->data()->at(0)->key, result.position_m[k].x());
+        QCOMPARE(cursor->data()->at(0)->value, result.position_m[k].y());
+        const QImage image = view.grab().toImage();
+        const QColor centre = image.pixelColor(toPixel(view.plot(), result.position_m[k]));
+        QVERIFY2(centre.red() > 200 && centre.green() > 180 && centre.blue() < 80,
+                 qPrintable("no marker at the position: " + centre.name()));
+
+        view.setTimeCursor(result.time_s.back() + 100.0);  // past the end: the last sample
+        QCOMPARE(cursor->data()->at(0)->key, result.position_m.back().x());
+        view.setTimeCursor(std::nan(""));
+        QCOMPARE(cursor->data()->size(), 0);
+    }
+
+    void clickNearThePathEmitsTheTimeOfTheNearestSample()
+    {
+        const Result& result = rectangleResult();
+        TrajectoryView2D view;
+        view.resize(700, 450);
+        view.showResult(result);
+        (void)view.grab();  // lay out, so pixels map to metres as they will when clicked
+        QSignalSpy moved(&view, &TrajectoryView2D::timeCursorMoved);
+        const std::size_t k = fastestSample(result);
+        const QPoint pixel = toPixel(view.plot(), result.position_m[k]) + QPoint(2, 1);
+
+        QTest::mouseClick(view.plot(), Qt::LeftButton, Qt::NoModifier, pixel);
+        QCOMPARE(moved.count(), 1);
+        const Eigen::Vector2d clicked(view.plot()->xAxis->pixelToCoord(pixel.x()), view.plot()->yAxis->pixelToCoord(pixel.y()));
+        const auto nearest = std::min_element(result.position_m.cbegin(), result.position_m.cend(),
+                                              [&clicked](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+                                                  return (a.head<2>() - clicked).norm() < (b.head<2>() - clicked).norm();
+                                              });
+        const double expected = result.time_s[static_cast<std::size_t>(nearest - result.position_m.cbegin())];
+        QCOMPARE(moved.at(0).at(0).toDouble(), expected);
+        QVERIFY(std::abs(expected - result.time_s[k]) < 0.05);
+        QCOMPARE(view.timeCursor(), expected);  // the view moves its own marker too
+
+        QTest::mouseClick(view.plot(), Qt::LeftButton, Qt::NoModifier, QPoint(view.width() - 3, view.height() - 3));
+        QCOMPARE(moved.count(), 1);  // far from the path: nothing
+        QTest::mousePress(view.plot(), Qt::LeftButton, Qt::NoModifier, pixel);
+        QTest::mouseRelease(view.plot(), Qt::LeftButton, Qt::NoModifier, pixel + QPoint(40, 0));
+        QCOMPARE(moved.count(), 1);  // a drag pans, it does not move the cursor
+    }
+
+    void referenceOverlayIsPresentOnlyWhenGiven()
+    {
+        const Result& result = rectangleResult();
+        TrajectoryView2D view;
+        view.resize(700, 450);
+        view.showResult(result);
+        QCPCurve* reference = curveNamed(view.plot(), "Reference");
+        QVERIFY(reference);
+        QCOMPARE(reference->data()->size(), 0);
+        QVERIFY(!view.plot()->legend->hasItemWithPlottable(reference));
+        const QImage without = view.grab().toImage();
+
+        // Shift the truth so the overlay cannot hide under the path.
+        std::vector<Eigen::Vector3d> shifted = rectangleWalk().truePosition_m;
+        for (Eigen::Vector3d& p : shifted)
+            p += Eigen::Vector3d(0.0, -0.5, 0.0);
+        view.setReference(shifted);
+        QCOMPARE(reference->data()->size(), static_cast<int>(shifted.size()));
+        QVERIFY(view.plot()->legend->hasItemWithPlottable(reference));
+        QCOMPARE(reference->pen().style(), Qt::DashLine);
+        QVERIFY(differingPixels(without, view.grab().toImage()) > 500);
+
+        view.setReference({});
+        QCOMPARE(reference->data()->size(), 0);
+        QVERIFY(!view.plot()->legend->hasItemWithPlottable(reference));
+    }
+
+    void alignedReferenceAgreesWithTheArmse()
+    {
+        // A reference in another frame: turned 40 degrees and shifted, as a VICON room would be.
+        const Result& result = rectangleResult();
+        const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+        std::vector<Eigen::Vector3d> foreign;
+        for (const Eigen::Vector3d& p : rectangleWalk().truePosition_m)
+            foreign.push_back(turn * p + Eigen::Vector3d(3.0, -2.0, 0.5));
+
+        const std::vector<Eigen::Vector3d> aligned = alignReferenceToEstimate(foreign, result.position_m);
+        QCOMPARE(aligned.size(), foreign.size());
+        QVERIFY((aligned.front() - result.position_m.front()).norm() < 1e-12);
+        double sum = 0.0;
+        for (std::size_t k = 0; k < aligned.size(); ++k)
+            sum += (aligned[k] - result.position_m[k]).head<2>().norm() / std::sqrt(2.0);
+        const double overlayError = sum / static_cast<double>(aligned.size());
+        const ArmseResult armse = computeArmse(result.position_m, foreign);
+        QVERIFY2(std::abs(overlayError - armse.armse2d_m) < 1e-9,
+                 qPrintable(QString("%1 vs %2").arg(overlayError).arg(armse.armse2d_m)));
+        QVERIFY(armse.armse2d_m < 0.5);  // the overlay really lies on the path, not just consistently off
+
+        foreign.pop_back();
+        QVERIFY(alignReferenceToEstimate(foreign, result.position_m).empty());
+    }
+
+    void equalAspectHoldsAfterResize_data()
+    {
+        QTest::addColumn<QSize>("size");
+        QTest::addColumn<int>("colouring");
+        QTest::newRow("wide") << QSize(900, 300) << int(TrajectoryView2D::Colouring::None);
+        QTest::newRow("tall") << QSize(300, 800) << int(TrajectoryView2D::Colouring::None);
+        QTest::newRow("tall with colour scale") << QSize(350, 800) << int(TrajectoryView2D::Colouring::Speed);
+        QTest::newRow("small with colour scale") << QSize(260, 220) << int(TrajectoryView2D::Colouring::Time);
+    }
+
+    void equalAspectHoldsAfterResize()
+    {
+        QFETCH(QSize, size);
+        QFETCH(int, colouring);
+        TrajectoryView2D view;
+        view.resize(600, 400);
+        view.showResult(rectangleResult());
+        view.setColouring(static_cast<TrajectoryView2D::Colouring>(colouring));
+        (void)view.grab();
+        view.resize(size);
+        (void)view.grab();
+        const double ratio = metresPerPixelRatio(view.plot());
+        QVERIFY2(std::abs(ratio - 1.0) < 0.01, qPrintable(QString("x/y metres per pixel %1").arg(ratio)));
+        for (const Eigen::Vector3d& p : rectangleResult().position_m) {
+            QVERIFY(view.plot()->xAxis->range().contains(p.x()));
+            QVERIFY(view.plot()->yAxis->range().contains(p.y()));
+        }
+    }
+
+    void userZoomSurvivesResizeWithEqualAspect()
+    {
+        TrajectoryView2D view;
+        view.resize(600, 400);
+        view.showResult(rectangleResult());
+        (void)view.grab();
+        const double fittedWidth = view.plot()->xAxis->range().size();
+        QWheelEvent wheel(QPointF(300, 200), view.plot()->mapToGlobal(QPointF(300, 200)), QPoint(), QPoint(0, 240),
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(view.plot(), &wheel);
+        (void)view.grab();
+        const double zoomedWidth = view.plot()->xAxis->range().size();
+        QVERIFY(zoomedWidth < 0.9 * fittedWidth);
+        view.resize(640, 500);
+        (void)view.grab();
+        QVERIFY(std::abs(metresPerPixelRatio(view.plot()) - 1.0) < 0.01);
+        QVERIFY2(view.plot()->xAxis->range().size() < 0.95 * fittedWidth, "resizing undid the user's zoom");
+    }
+
+    void thirtyMinutePathRedrawsWellUnderHalfASecond()
+    {
+        const Result walk = longWalk(30.0 * 60.0, 100.0);
+        TrajectoryView2D view;
+        view.resize(1000, 700);
+        view.setResult(std::make_shared<const Result>(walk));
+        view.setReference(walk.position_m);
+        for (auto colouring : {TrajectoryView2D::Colouring::None, TrajectoryView2D::Colouring::Time,
+                               TrajectoryView2D::Colouring::Speed}) {
+            view.setColouring(colouring);
+            qint64 fastest_ms = std::numeric_limits<qint64>::max();
+            for (int attempt = 0; attempt < 3; ++attempt) {
+                QElapsedTimer timer;
+                timer.start();
+                view.plot()->replot();
+                fastest_ms = std::min(fastest_ms, timer.elapsed());
+            }
+            qInfo("180k samples, colouring %d: replot %lld ms", int(colouring), fastest_ms);
+            QVERIFY2(fastest_ms < 250, qPrintable(QString("%1 ms").arg(fastest_ms)));
+        }
+        // Zoomed in, no two samples share a pixel and most segments lie outside the view.
+        view.plot()->xAxis->scaleRange(0.05);
+        view.plot()->yAxis->scaleRange(0.05);
+        QElapsedTimer zoomed;
+        zoomed.start();
+        view.plot()->replot();
+        qInfo("180k samples, zoomed in 20x: replot %lld ms", zoomed.elapsed());
+        QVERIFY2(zoomed.elapsed() < 250, qPrintable(QString("%1 ms").arg(zoomed.elapsed())));
+        QElapsedTimer timer;
+        timer.start();
+        view.setTimeCursor(600.0);  // its own layer: the path is not drawn again
+        qInfo("time cursor move: %lld ms", timer.elapsed());
+        QVERIFY(timer.elapsed() < 50);
     }
 };
 

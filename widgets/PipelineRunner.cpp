@@ -23,8 +23,19 @@ bool PipelineRunner::isRunning() const
     return watcher_.isRunning();
 }
 
+void PipelineRunner::cancel()
+{
+    hasPending_ = false;
+    pendingRecording_.reset();
+    if (!watcher_.isRunning())
+        return;
+    cancelCurrent_->store(true);
+    discardCurrent_ = true;
+}
+
 void PipelineRunner::run(std::shared_ptr<const Recording> recording, const Parameters& params)
 {
+    discardCurrent_ = false;
     if (watcher_.isRunning()) {
         // Start the newest request once the old run has stopped; older pending ones are dropped.
         cancelCurrent_->store(true);
@@ -49,6 +60,10 @@ void PipelineRunner::run(std::shared_ptr<const Recording> recording, const Param
 void PipelineRunner::onRunFinished()
 {
     const Outcome outcome = watcher_.result();
+    if (discardCurrent_) {
+        discardCurrent_ = false;
+        return;
+    }
     if (hasPending_) {
         hasPending_ = false;
         run(std::move(pendingRecording_), pendingParams_);

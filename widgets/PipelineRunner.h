@@ -21,6 +21,8 @@ public:
     ~PipelineRunner() override;
 
     void run(std::shared_ptr<const Recording> recording, const Parameters& params);
+    /// Stops the current run and drops a pending one; nothing is reported for them.
+    void cancel();
     bool isRunning() const;
 
 signals:
@@ -40,6 +42,7 @@ private:
     std::shared_ptr<const Recording> pendingRecording_;
     Parameters pendingParams_;
     bool hasPending_ = false;
+    bool discardCurrent_ = false;  ///< cancelled: its outcome, even if complete, is not reported
 };
 
 }  // namespace footpath

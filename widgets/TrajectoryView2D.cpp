@@ -1,13 +1,59 @@
 #include "TrajectoryView2D.h"
 
+#include "metrics/Evaluation.h"
+
+#include <Eigen/Geometry>
+#include <QMouseEvent>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <optional>
 
 namespace footpath {
 
 namespace {
+
+/// Few enough that the coloured path is a few dozen drawLines calls, enough that the bands read as
+/// a smooth scale.
+constexpr int kColourLevels = 40;
+/// A click this close (pixels) to the path moves the time cursor; farther away it is ignored.
+constexpr double kClickTolerance_px = 15.0;
+/// A press and release farther apart than this (pixels) was a pan, not a click.
+constexpr int kClickMaxMovement_px = 4;
+/// Speeds above this quantile are drawn in the top colour, so one divergent sample does not
+/// squeeze every real stride into the bottom of the scale.
+constexpr double kSpeedScaleQuantile = 0.99;
+
+const QColor kPathColour(40, 90, 170);
+
+// Functions, not globals: a QCPScatterStyle holds a QPixmap, which needs the application first.
+QCPScatterStyle stanceDot()
+{
+    return QCPScatterStyle(QCPScatterStyle::ssDisc, QColor(230, 120, 20), 5);
+}
+
+QCPScatterStyle stanceRing()
+{
+    return QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(QColor(40, 40, 40), 1.2), Qt::white, 6);
+}
+
+/// Plasma without its pale yellow end, which would vanish on the white background.
+QCPColorGradient pathGradient()
+{
+    QCPColorGradient gradient;
+    gradient.setColorStopAt(0.0, QColor(13, 8, 135));
+    gradient.setColorStopAt(0.25, QColor(106, 0, 168));
+    gradient.setColorStopAt(0.5, QColor(177, 42, 144));
+    gradient.setColorStopAt(0.75, QColor(225, 100, 98));
+    gradient.setColorStopAt(1.0, QColor(245, 150, 40));
+    gradient.setLevelCount(kColourLevels);
+    return gradient;
+}
 
 QCPGraph* addMarkerGraph(QCustomPlot* plot, const QString& name, QCPScatterStyle style)
 {
@@ -18,88 +64,487 @@ QCPGraph* addMarkerGraph(QCustomPlot* plot, const QString& name, QCPScatterStyle
     return graph;
 }
 
+/// Smallest rectangle holding every horizontal position; nullopt for none. (A QRectF alone cannot
+/// tell "nothing" from one point or a straight walk along x, which have zero width or height.)
+std::optional<QRectF> horizontalBounds(const std::vector<Eigen::Vector3d>& positions)
+{
+    if (positions.empty())
+        return std::nullopt;
+    double xMin = positions.front().x(), xMax = xMin, yMin = positions.front().y(), yMax = yMin;
+    for (const Eigen::Vector3d& p : positions) {
+        xMin = std::min(xMin, p.x());
+        xMax = std::max(xMax, p.x());
+        yMin = std::min(yMin, p.y());
+        yMax = std::max(yMax, p.y());
+    }
+    return QRectF(QPointF(xMin, yMin), QPointF(xMax, yMax));
+}
+
+std::optional<QRectF> unite(const std::optional<QRectF>& a, const std::optional<QRectF>& b)
+{
+    if (!a || !b)
+        return a ? a : b;
+    return QRectF(QPointF(std::min(a->left(), b->left()), std::min(a->top(), b->top())),
+                  QPointF(std::max(a->right(), b->right()), std::max(a->bottom(), b->bottom())));
+}
+
+double quantile(std::vector<double> values, double q)
+{
+    if (values.empty())
+        return 0.0;
+    const auto k = static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
+    std::nth_element(values.begin(), values.begin() + k, values.end());
+    return values[static_cast<std::size_t>(k)];
+}
+
 }  // namespace
 
+/// The foot path as line segments grouped by colour level: one drawLines call per level, and
+/// consecutive samples less than a pixel apart merged, so a 30-minute 100 Hz path redraws in a few
+/// tens of milliseconds however it is coloured (QCPCurve would need one curve per colour run, and
+/// speed changes colour several times per stride).
+class ColouredPathPlottable : public QCPAbstractPlottable {
+public:
+    ColouredPathPlottable(QCPAxis* keyAxis, QCPAxis* valueAxis) : QCPAbstractPlottable(keyAxis, valueAxis) {}
+
+    void setPoints(const std::vector<Eigen::Vector3d>& positions_m)
+    {
+        points_m_.clear();
+        points_m_.reserve(positions_m.size());
+        for (const Eigen::Vector3d& p : positions_m)
+            points_m_.emplace_back(p.x(), p.y());
+        levels_.clear();
+        levelColours_.clear();
+        bounds_ = horizontalBounds(positions_m).value_or(QRectF());
+    }
+
+    /// One value per point mapped onto gradient over range; empty values: the pen colour throughout.
+    /// The gradient is a copy because QCPColorGradient::color() updates a cache.
+    void setValues(const std::vector<double>& values, const QCPRange& range, QCPColorGradient gradient)
+    {
+        levels_.clear();
+        levelColours_.clear();
+        if (values.size() != points_m_.size() || range.size() <= 0.0)
+            return;
+        levels_.reserve(values.size());
+        for (double value : values) {
+            const double fraction = (value - range.lower) / range.size();
+            levels_.push_back(static_cast<std::uint8_t>(std::clamp(static_cast<int>(fraction * kColourLevels), 0, kColourLevels - 1)));
+        }
+        for (int level = 0; level < kColourLevels; ++level)
+            levelColours_.push_back(QColor::fromRgb(gradient.color((level + 0.5) / kColourLevels, QCPRange(0.0, 1.0))));
+    }
+
+    double selectTest(const QPointF&, bool, QVariant*) const override { return -1.0; }
+
+    QCPRange getKeyRange(bool& foundRange, QCP::SignDomain) const override
+    {
+        foundRange = !points_m_.empty();
+        return QCPRange(bounds_.left(), bounds_.right());
+    }
+
+    QCPRange getValueRange(bool& foundRange, QCP::SignDomain, const QCPRange&) const override
+    {
+        foundRange = !points_m_.empty();
+        return QCPRange(bounds_.top(), bounds_.bottom());
+    }
+
+protected:
+    void draw(QCPPainter* painter) override
+    {
+        if (points_m_.size() < 2)
+            return;
+        const std::vector<QVector<QLineF>> linesByLevel = segmentsInPixels();
+        applyDefaultAntialiasingHint(painter);
+        QPen pen = mPen;
+        for (std::size_t level = 0; level < linesByLevel.size(); ++level) {
+            if (!levelColours_.empty())
+                pen.setColor(levelColours_[level]);
+            painter->setPen(pen);
+            painter->drawLines(linesByLevel[level]);
+        }
+    }
+
+    void drawLegendIcon(QCPPainter* painter, const QRectF& rect) const override
+    {
+        const int pieces = levelColours_.empty() ? 1 : 3;
+        QPen pen = mPen;
+        for (int piece = 0; piece < pieces; ++piece) {
+            if (!levelColours_.empty())
+                pen.setColor(levelColours_[static_cast<std::size_t>(piece * (kColourLevels - 1) / 2)]);
+            painter->setPen(pen);
+            const double x0 = rect.left() + rect.width() * piece / pieces;
+            const double x1 = rect.left() + rect.width() * (piece + 1) / pieces;
+            painter->drawLine(QLineF(x0, rect.center().y(), x1, rect.center().y()));
+        }
+    }
+
+private:
+    std::vector<QVector<QLineF>> segmentsInPixels() const
+    {
+        std::vector<QVector<QLineF>> linesByLevel(levels_.empty() ? 1 : kColourLevels);
+        QPointF previous = coordsToPixels(points_m_.front().x(), points_m_.front().y());
+        for (std::size_t k = 1; k < points_m_.size(); ++k) {
+            const QPointF pixel = coordsToPixels(points_m_[k].x(), points_m_[k].y());
+            const std::size_t level = levels_.empty() ? 0 : levels_[k];
+            // A foot at rest puts hundreds of samples on one pixel: skip samples within a pixel of
+            // the last drawn point; the next drawn segment spans the gap, so the line stays whole.
+            if ((pixel - previous).manhattanLength() < 1.0 && k + 1 < points_m_.size())
+                continue;
+            linesByLevel[level].append(QLineF(previous, pixel));
+            previous = pixel;
+        }
+        return linesByLevel;
+    }
+
+    std::vector<QPointF> points_m_;
+    std::vector<std::uint8_t> levels_;  ///< per point; empty when drawn in the pen colour
+    std::vector<QColor> levelColours_;
+    QRectF bounds_;
+};
+
+std::size_t nearestSampleAtTime(const std::vector<double>& times_s, double time_s)
+{
+    if (times_s.size() < 2)
+        return 0;
+    const auto after = std::lower_bound(times_s.cbegin(), times_s.cend(), time_s);
+    if (after == times_s.cbegin())
+        return 0;
+    if (after == times_s.cend())
+        return times_s.size() - 1;
+    const auto before = after - 1;
+    const auto index = std::distance(times_s.cbegin(), time_s - *before <= *after - time_s ? before : after);
+    return static_cast<std::size_t>(index);
+}
+
+std::vector<Eigen::Vector3d> alignReferenceToEstimate(const std::vector<Eigen::Vector3d>& reference,
+                                                      const std::vector<Eigen::Vector3d>& estimate)
+{
+    const ArmseResult armse = computeArmse(estimate, reference);
+    if (std::isnan(armse.rotation_rad))
+        return {};
+    // computeArmse turns the estimate onto the reference; the overlay needs the inverse turn.
+    const Eigen::Matrix3d toEstimateFrame =
+        Eigen::AngleAxisd(-armse.rotation_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    std::vector<Eigen::Vector3d> aligned;
+    aligned.reserve(reference.size());
+    for (const Eigen::Vector3d& p : reference)
+        aligned.push_back(estimate.front() + toEstimateFrame * (p - reference.front()));
+    return aligned;
+}
+
 TrajectoryView2D::TrajectoryView2D(QWidget* parent)
-    : QWidget(parent), plot_(new QCustomPlot(this))
+    : QWidget(parent), plot_(new QCustomPlot(this)), timeCursor_s_(std::numeric_limits<double>::quiet_NaN())
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(plot_);
 
-    path_ = new QCPCurve(plot_->xAxis, plot_->yAxis);
+    // Created in drawing order: the reference under the path, the markers on top.
+    reference_ = new QCPCurve(plot_->xAxis, plot_->yAxis);
+    reference_->setName(tr("Reference"));
+    reference_->setPen(QPen(QColor(150, 150, 150), 1.5, Qt::DashLine));
+    reference_->removeFromLegend();
+    path_ = new ColouredPathPlottable(plot_->xAxis, plot_->yAxis);
     path_->setName(tr("Foot path"));
-    path_->setPen(QPen(QColor(40, 90, 170), 1.5));
-    stances_ = addMarkerGraph(plot_, tr("Stance"), QCPScatterStyle(QCPScatterStyle::ssDisc, QColor(230, 120, 20), 5));
+    path_->setPen(QPen(kPathColour, 1.5));
+    stances_ = addMarkerGraph(plot_, tr("Stance"), stanceDot());
     start_ = addMarkerGraph(plot_, tr("Start"), QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(Qt::darkGreen, 2), Qt::white, 11));
     end_ = addMarkerGraph(plot_, tr("End"), QCPScatterStyle(QCPScatterStyle::ssCross, QPen(Qt::red, 2), Qt::NoBrush, 11));
 
+    plot_->addLayer(QStringLiteral("cursor"), plot_->layer(QStringLiteral("main")), QCustomPlot::limAbove);
+    cursorLayer_ = plot_->layer(QStringLiteral("cursor"));
+    cursorLayer_->setMode(QCPLayer::lmBuffered);
+    cursor_ = addMarkerGraph(plot_, tr("Time cursor"),
+                             QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 2), QColor(255, 215, 0), 13));
+    cursor_->setLayer(cursorLayer_);
+    cursor_->removeFromLegend();
+
     plot_->xAxis->setLabel(tr("x (m)"));
     plot_->yAxis->setLabel(tr("y (m)"));
-    plot_->legend->setVisible(true);
-    plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
     plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    createLegendRow();
+    createColourScale();
+
+    connect(plot_, &QCustomPlot::afterLayout, this, &TrajectoryView2D::keepEqualAxisScales);
+    connect(plot_, &QCustomPlot::mousePress, this, &TrajectoryView2D::onMousePress);
+    connect(plot_, &QCustomPlot::mouseRelease, this, &TrajectoryView2D::onMouseRelease);
+}
+
+void TrajectoryView2D::createLegendRow()
+{
+    // Below the plot, not over it: a legend inside the axes hides part of any path that fills them.
+    QCPLegend* legend = plot_->legend;
+    legend->setVisible(true);
+    plot_->axisRect()->insetLayout()->take(legend);
+    plot_->plotLayout()->addElement(1, 0, legend);
+    plot_->plotLayout()->setRowStretchFactor(1, 0.001);
+    plot_->plotLayout()->setRowSpacing(0);
+    legend->setFillOrder(QCPLegend::foColumnsFirst);
+    legend->setBorderPen(Qt::NoPen);
+    legend->setBrush(Qt::NoBrush);
+    legend->setMargins(QMargins(6, 0, 6, 4));
+    legend->setColumnSpacing(18);
+    legend->setMinimumSize(1, 0);  // its width never sets the widget's: it wraps instead (height: as needed)
+}
+
+void TrajectoryView2D::wrapLegendToWidth()
+{
+    // As many items per row as fit (rows share column widths); in a narrow view more rows rather
+    // than a legend wider than the plot.
+    QCPLegend* legend = plot_->legend;
+    std::vector<int> itemWidths;
+    for (int i = 0; i < legend->itemCount(); ++i) {
+        if (const QCPAbstractLegendItem* item = legend->item(i))  // null: a cell left by a removed item
+            itemWidths.push_back(item->minimumOuterSizeHint().width());
+    }
+    const int available = width() - legend->margins().left() - legend->margins().right();
+    int perRow = static_cast<int>(itemWidths.size());
+    for (; perRow > 1; --perRow) {
+        std::vector<int> columnWidths(static_cast<std::size_t>(perRow), 0);
+        for (std::size_t i = 0; i < itemWidths.size(); ++i)
+            columnWidths[i % columnWidths.size()] = std::max(columnWidths[i % columnWidths.size()], itemWidths[i]);
+        const int needed = std::accumulate(columnWidths.cbegin(), columnWidths.cend(), 0) + (perRow - 1) * legend->columnSpacing();
+        if (needed <= available)
+            break;
+    }
+    legend->setWrap(std::max(1, perRow));
+    legend->setFillOrder(QCPLegend::foColumnsFirst, true);
+    // Pack the items to the left: a trailing empty column takes the spare width (the next
+    // rearrangement simplifies it away again).
+    legend->insertColumn(legend->columnCount());
+    legend->setColumnStretchFactor(legend->columnCount() - 1, 1000.0);
+}
+
+void TrajectoryView2D::resizeEvent(QResizeEvent* event)
+{
+    wrapLegendToWidth();  // before the plot lays itself out at the new size
+    QWidget::resizeEvent(event);
+}
+
+void TrajectoryView2D::createColourScale()
+{
+    // Built once and moved in and out of the layout, so None gives the path its full width.
+    colourScale_ = new QCPColorScale(plot_);
+    colourScale_->setGradient(pathGradient());
+    colourScale_->setBarWidth(12);
+    colourScale_->setVisible(false);
+    colourScaleMargins_ = new QCPMarginGroup(plot_);
+}
+
+void TrajectoryView2D::showColourScale(bool show)
+{
+    QCPLayoutGrid* grid = plot_->plotLayout();
+    if (show && !grid->hasElement(0, 1)) {
+        grid->addElement(0, 1, colourScale_);
+        // Same top and bottom margins as the plot, so the scale spans exactly the axis rect.
+        plot_->axisRect()->setMarginGroup(QCP::msTop | QCP::msBottom, colourScaleMargins_);
+        colourScale_->setMarginGroup(QCP::msTop | QCP::msBottom, colourScaleMargins_);
+    } else if (!show && grid->hasElement(0, 1)) {
+        plot_->axisRect()->setMarginGroup(QCP::msTop | QCP::msBottom, nullptr);
+        colourScale_->setMarginGroup(QCP::msTop | QCP::msBottom, nullptr);
+        grid->take(colourScale_);
+        grid->simplify();
+    }
+    colourScale_->setVisible(show);
 }
 
 void TrajectoryView2D::clear()
 {
-    path_->data()->clear();
-    for (QCPGraph* graph : {stances_, start_, end_})
-        graph->data()->clear();
-    dataBounds_ = QRectF();
+    result_.reset();
+    referencePositions_m_.clear();
+    showReferenceCurve();
+    showPathAndMarkers();
     plot_->replot();
 }
 
 void TrajectoryView2D::showResult(const Result& result)
 {
-    QVector<double> t, x, y;
-    t.reserve(static_cast<qsizetype>(result.position_m.size()));
-    x.reserve(t.capacity());
-    y.reserve(t.capacity());
-    for (std::size_t k = 0; k < result.position_m.size(); ++k) {
-        t << static_cast<double>(k);
-        x << result.position_m[k].x();
-        y << result.position_m[k].y();
+    setResult(std::make_shared<const Result>(result));
+}
+
+void TrajectoryView2D::setResult(std::shared_ptr<const Result> result)
+{
+    if (!result) {
+        clear();
+        return;
     }
-    path_->setData(t, x, y, true);
-    stances_->data()->clear();
-    for (const Step& step : result.steps)
-        stances_->addData(step.position_m.x(), step.position_m.y());
-    start_->data()->clear();
-    end_->data()->clear();
-    if (!x.isEmpty()) {
-        start_->addData(x.front(), y.front());
-        end_->addData(x.back(), y.back());
-    }
-    dataBounds_ = QRectF();
-    if (!x.isEmpty()) {
-        const auto [xMin, xMax] = std::minmax_element(x.cbegin(), x.cend());
-        const auto [yMin, yMax] = std::minmax_element(y.cbegin(), y.cend());
-        dataBounds_ = QRectF(QPointF(*xMin, *yMin), QPointF(*xMax, *yMax));
-    }
-    keepEqualAxisScales();
+    result_ = std::move(result);
+    showPathAndMarkers();
+    fitViewToData();
     plot_->replot();
 }
 
-void TrajectoryView2D::resizeEvent(QResizeEvent* event)
+void TrajectoryView2D::setReference(const std::vector<Eigen::Vector3d>& positions_m)
 {
-    QWidget::resizeEvent(event);
-    keepEqualAxisScales();
+    referencePositions_m_ = positions_m;
+    showReferenceCurve();
+    fitViewToData();
     plot_->replot();
+}
+
+void TrajectoryView2D::showReferenceCurve()
+{
+    QVector<double> x, y;
+    for (const Eigen::Vector3d& p : referencePositions_m_) {
+        x << p.x();
+        y << p.y();
+    }
+    reference_->setData(x, y);
+    if (referencePositions_m_.empty())
+        reference_->removeFromLegend();
+    else if (!plot_->legend->hasItemWithPlottable(reference_))
+        reference_->addToLegend();
+    wrapLegendToWidth();
+}
+
+void TrajectoryView2D::setColouring(Colouring colouring)
+{
+    colouring_ = colouring;
+    updateColouring();
+    plot_->replot();
+}
+
+void TrajectoryView2D::setTimeCursor(double time_s)
+{
+    timeCursor_s_ = time_s;
+    updateTimeCursorMarker();
+    cursorLayer_->replot();
+}
+
+void TrajectoryView2D::showPathAndMarkers()
+{
+    const std::vector<Eigen::Vector3d> none;
+    const std::vector<Eigen::Vector3d>& positions = result_ ? result_->position_m : none;
+    path_->setPoints(positions);
+    for (QCPGraph* graph : {stances_, start_, end_})
+        graph->data()->clear();
+    if (result_) {
+        for (const Step& step : result_->steps)
+            stances_->addData(step.position_m.x(), step.position_m.y());
+    }
+    if (!positions.empty()) {
+        start_->addData(positions.front().x(), positions.front().y());
+        end_->addData(positions.back().x(), positions.back().y());
+    }
+    updateColouring();
+    updateTimeCursorMarker();
+}
+
+void TrajectoryView2D::updateColouring()
+{
+    std::vector<double> values;
+    QCPRange range;
+    if (result_ && colouring_ == Colouring::Time && result_->time_s.size() == result_->position_m.size()) {
+        values = result_->time_s;
+        range = QCPRange(values.empty() ? 0.0 : values.front(), values.empty() ? 0.0 : values.back());
+        colourScale_->axis()->setLabel(tr("time (s)"));
+    } else if (result_ && colouring_ == Colouring::Speed && result_->velocity_mps.size() == result_->position_m.size()) {
+        for (const Eigen::Vector3d& v : result_->velocity_mps)
+            values.push_back(v.norm());
+        range = QCPRange(0.0, quantile(values, kSpeedScaleQuantile));
+        colourScale_->axis()->setLabel(tr("foot speed (m/s)"));
+    }
+    path_->setValues(values, range, pathGradient());
+    // Orange dots vanish on the warm end of the gradient; open circles read on every colour.
+    stances_->setScatterStyle(values.empty() ? stanceDot() : stanceRing());
+    colourScale_->setDataRange(range);
+    showColourScale(!values.empty() && range.size() > 0.0);
+}
+
+void TrajectoryView2D::updateTimeCursorMarker()
+{
+    cursor_->data()->clear();
+    if (!result_ || std::isnan(timeCursor_s_) || result_->position_m.empty() || result_->time_s.empty())
+        return;
+    const std::size_t index =
+        std::min(nearestSampleAtTime(result_->time_s, timeCursor_s_), result_->position_m.size() - 1);
+    cursor_->addData(result_->position_m[index].x(), result_->position_m[index].y());
+}
+
+void TrajectoryView2D::fitViewToData()
+{
+    const std::optional<QRectF> bounds =
+        unite(horizontalBounds(result_ ? result_->position_m : std::vector<Eigen::Vector3d>()),
+              horizontalBounds(referencePositions_m_));
+    if (!bounds)
+        return;  // nothing to show: keep whatever the axes show
+    // The fixed part keeps a single point or a straight line from filling the view edge to edge.
+    const double margin = 0.05 * std::max(bounds->width(), bounds->height()) + 0.1;
+    viewRegion_ = bounds->adjusted(-margin, -margin, margin, margin);
+    // The current ranges count as ours, so the next layout fits viewRegion_ instead of keeping them.
+    lastFitted_ = visibleRegion();
+    keepEqualAxisScales();
 }
 
 void TrajectoryView2D::keepEqualAxisScales()
 {
-    // Widen whichever axis is shorter in metres per pixel so one metre is as long on both axes.
-    const QRect rect = plot_->axisRect()->rect();
-    if (rect.width() <= 0 || rect.height() <= 0 || dataBounds_.isNull())
+    // Runs after every layout, so the axis rect is the one about to be drawn. Ranges that differ
+    // from our last fit were panned or zoomed by the user: that becomes the region to keep.
+    if (plot_->axisRect()->rect().isEmpty())
         return;
-    const double margin = 0.05 * std::max(dataBounds_.width(), dataBounds_.height()) + 0.1;
-    const QCPRange xRange(dataBounds_.left() - margin, dataBounds_.right() + margin);
-    const QCPRange yRange(dataBounds_.top() - margin, dataBounds_.bottom() + margin);
-    const double perPixel = std::max(xRange.size() / rect.width(), yRange.size() / rect.height());
-    plot_->xAxis->setRange(xRange.center(), perPixel * rect.width(), Qt::AlignCenter);
-    plot_->yAxis->setRange(yRange.center(), perPixel * rect.height(), Qt::AlignCenter);
+    if (visibleRegion() != lastFitted_ || viewRegion_.isEmpty())
+        viewRegion_ = visibleRegion();
+    fitViewRegionIntoAxisRect();
+    // New ranges mean new tick labels, which may widen the margins: lay out once more and fit
+    // into the final rect, so equal scales hold for what is drawn, not for the previous frame.
+    for (auto phase : {QCPLayoutElement::upPreparation, QCPLayoutElement::upMargins, QCPLayoutElement::upLayout})
+        plot_->plotLayout()->update(phase);
+    fitViewRegionIntoAxisRect();
+    plot_->axisRect()->update(QCPLayoutElement::upPreparation);  // ticks for the final ranges
+    lastFitted_ = visibleRegion();
+}
+
+void TrajectoryView2D::fitViewRegionIntoAxisRect()
+{
+    const QRect rect = plot_->axisRect()->rect();
+    if (rect.width() <= 0 || rect.height() <= 0)
+        return;
+    const double perPixel = std::max(viewRegion_.width() / rect.width(), viewRegion_.height() / rect.height());
+    plot_->xAxis->setRange(viewRegion_.center().x(), perPixel * rect.width(), Qt::AlignCenter);
+    plot_->yAxis->setRange(viewRegion_.center().y(), perPixel * rect.height(), Qt::AlignCenter);
+}
+
+QRectF TrajectoryView2D::visibleRegion() const
+{
+    const QCPRange x = plot_->xAxis->range(), y = plot_->yAxis->range();
+    return QRectF(QPointF(x.lower, y.lower), QPointF(x.upper, y.upper));
+}
+
+void TrajectoryView2D::onMousePress(QMouseEvent* event)
+{
+    pressPosition_ = event->position().toPoint();
+}
+
+void TrajectoryView2D::onMouseRelease(QMouseEvent* event)
+{
+    // Left-drag pans, so only a press and release in the same place counts as a click.
+    if (event->button() != Qt::LeftButton
+        || (event->position().toPoint() - pressPosition_).manhattanLength() > kClickMaxMovement_px)
+        return;
+    std::size_t index = 0;
+    if (!nearestPathSampleToPixel(event->position(), index) || index >= result_->time_s.size())
+        return;
+    setTimeCursor(result_->time_s[index]);
+    emit timeCursorMoved(result_->time_s[index]);
+}
+
+bool TrajectoryView2D::nearestPathSampleToPixel(const QPointF& pixel, std::size_t& index) const
+{
+    if (!result_ || result_->position_m.empty())
+        return false;
+    const Eigen::Vector2d clicked(plot_->xAxis->pixelToCoord(pixel.x()), plot_->yAxis->pixelToCoord(pixel.y()));
+    double bestSquared = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < result_->position_m.size(); ++k) {
+        const double squared = (result_->position_m[k].head<2>() - clicked).squaredNorm();
+        if (squared < bestSquared) {
+            bestSquared = squared;
+            index = k;
+        }
+    }
+    // Equal scales: one tolerance in metres holds in both directions.
+    const double metresPerPixel = plot_->xAxis->range().size() / plot_->axisRect()->width();
+    return std::sqrt(bestSquared) <= kClickTolerance_px * metresPerPixel;
 }
 
 }  // namespace footpath

@@ -2,37 +2,112 @@
 
 #include "Result.h"
 
+#include <Eigen/Core>
+
+#include <QPoint>
 #include <QRectF>
 #include <QWidget>
 
+#include <cstddef>
+#include <memory>
+#include <vector>
+
 class QCustomPlot;
+class QCPColorScale;
 class QCPCurve;
 class QCPGraph;
+class QCPLayer;
+class QCPMarginGroup;
+class QMouseEvent;
 
 namespace footpath {
 
-/// Top view of the estimated foot path: the path, one dot per stance, start and end marked, equal
-/// scales on both axes so a rectangle looks like one. Drawn by QCustomPlot without OpenGL.
+class ColouredPathPlottable;
+
+/// Index of the sample whose time is closest to time_s (0 for an empty or one-sample series).
+/// Shared by the trajectory views so both put the time cursor on the same sample.
+std::size_t nearestSampleAtTime(const std::vector<double>& times_s, double time_s);
+
+/// The reference positions moved into the estimate's frame the way evaluation.md section 1 aligns
+/// the estimate to the reference (same start, rotation about z fixed at the 0.8 m sample, via
+/// computeArmse), so the distance between an estimate sample and its overlaid reference sample is
+/// the error the ARMSE averages. Empty when the lengths differ or either is empty: no overlay is
+/// better than a misleading one.
+std::vector<Eigen::Vector3d> alignReferenceToEstimate(const std::vector<Eigen::Vector3d>& reference,
+                                                      const std::vector<Eigen::Vector3d>& estimate);
+
+/// Top view of the estimated foot path: the path (one colour, or coloured by time or speed with a
+/// colour scale), one dot per stance, start and end marked, a time cursor, an optional reference
+/// overlay, equal scales on both axes so a rectangle looks like one. Drawn by QCustomPlot without
+/// OpenGL. Plain setters and signals: MainWindow wires it to the session.
 class TrajectoryView2D : public QWidget {
     Q_OBJECT
 public:
+    enum class Colouring { None, Time, Speed };
+    Q_ENUM(Colouring)
+
     explicit TrajectoryView2D(QWidget* parent = nullptr);
 
-    void showResult(const Result& result);
-    void clear();
+    void setResult(std::shared_ptr<const Result> result);
+    void showResult(const Result& result);  ///< copies; prefer setResult with the session's pointer
+    void clear();  ///< removes path, markers and reference; the axes keep their range
+
+    void setColouring(Colouring colouring);
+    Colouring colouring() const { return colouring_; }
+
+    /// Positions already in the estimate's frame (see alignReferenceToEstimate); empty hides it.
+    void setReference(const std::vector<Eigen::Vector3d>& positions_m);
+
+    /// Moves the marker to the path sample nearest in time; NaN hides the marker.
+    void setTimeCursor(double time_s);
+    double timeCursor() const { return timeCursor_s_; }
+
+    QCustomPlot* plot() const { return plot_; }  ///< for the report and for tests
+
+signals:
+    /// The user clicked near the path: time of the nearest path sample.
+    void timeCursorMoved(double time_s);
 
 protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
+    void createLegendRow();
+    void wrapLegendToWidth();
+    void createColourScale();
+    void showColourScale(bool show);
+    void showReferenceCurve();
+    void showPathAndMarkers();
+    void updateColouring();
+    void updateTimeCursorMarker();
+    void fitViewToData();
     void keepEqualAxisScales();
+    void fitViewRegionIntoAxisRect();
+    QRectF visibleRegion() const;  ///< metres
+    void onMousePress(QMouseEvent* event);
+    void onMouseRelease(QMouseEvent* event);
+    bool nearestPathSampleToPixel(const QPointF& pixel, std::size_t& index) const;
 
     QCustomPlot* plot_;
-    QCPCurve* path_;
+    ColouredPathPlottable* path_;
+    QCPCurve* reference_;
     QCPGraph* stances_;
     QCPGraph* start_;
     QCPGraph* end_;
-    QRectF dataBounds_;  ///< extent of the path, kept so resizing never compounds margins
+    QCPGraph* cursor_;
+    QCPLayer* cursorLayer_;  ///< buffered on its own, so moving the cursor does not redraw the path
+    QCPColorScale* colourScale_;
+    QCPMarginGroup* colourScaleMargins_;
+
+    std::shared_ptr<const Result> result_;
+    std::vector<Eigen::Vector3d> referencePositions_m_;
+    Colouring colouring_ = Colouring::None;
+    double timeCursor_s_;
+    QPoint pressPosition_;
+    /// What must stay visible (metres): the data on a new result, else what the user panned or
+    /// zoomed to. Every layout fits it with equal scales, so resizing never compounds margins.
+    QRectF viewRegion_;
+    QRectF lastFitted_;  ///< the axis ranges we set last, to tell the user's pan/zoom from our fit
 };
 
 }  // namespace footpath

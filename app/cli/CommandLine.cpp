@@ -25,6 +25,7 @@ std::string usageText()
   footpath-cli eval INPUT [import options] [--params preset.json] [--set name=value ...]
                           [--reference-columns x,y,z] [--closed-loop] [--length METRES] [--json]
   footpath-cli info INPUT [import options] [--json]
+  footpath-cli record --port PATH [--baud N] [--rate HZ] [--duration S] --out FILE.mtb [--csv FILE.csv]
 
 Import options (every format is detected from the content; these override or complete it):
   --format NAME              xsens-text, xsens-mtb, delimited, pyshoe-vicon
@@ -37,7 +38,12 @@ Reference data the file carries (VICON columns, gait events beside an Xsens expo
 file name like rectangle_72m.TXT, a <file>.reference.json sidecar) is used by eval unless
 --reference-columns, --closed-loop or --length say otherwise; a leading '-' in
 --reference-columns negates an axis.
-Exit codes: 0 success, 2 bad input or options, 1 internal error.
+record talks to a live Xsens MTi (or footpath-mti-sim) on a serial port: the init sequence, then
+the raw bytes to FILE.mtb and the decoded samples to FILE.csv as they arrive, flushed every second,
+until --duration seconds of device time (default: until Ctrl+C). Without --baud it starts at 115200
+and probes the common rates; --rate is the output rate (default 100 Hz). It prints the device and
+the counters (samples, lost packets, checksum errors, resyncs).
+Exit codes: 0 success, 2 bad input or options or a device problem, 1 internal error.
 )";
 }
 
@@ -102,12 +108,45 @@ const std::map<std::string, Handler>& valueOptions()
                                                    : "--reference-columns expects three names x,y,z, got '" + v + "'";
          }},
         {"--length", storePositive(&CommandLine::length_m, "--length", "metres")},
+        {"--port", storeText(&CommandLine::port)},
+        {"--baud", storePositive(&CommandLine::baud, "--baud", "a baud rate")},
+        {"--duration", storePositive(&CommandLine::duration_s, "--duration", "seconds")},
+        {"--out", storeText(&CommandLine::mtbOut)},
+        {"--csv", storeText(&CommandLine::csvOut)},
     };
     return options;
 }
 
+std::string checkRecordCombination(const CommandLine& c)
+{
+    if (!c.input.empty())
+        return "record reads a serial port, not a file: pass it with --port (got '" + c.input + "')";
+    if (c.port.empty())
+        return "record needs --port PATH (e.g. /dev/ttyUSB0, or the emulator's /tmp/ttyMTi0)";
+    if (c.mtbOut.empty())
+        return "record needs --out FILE.mtb";
+    const bool otherOptions = !c.paramsFile.empty() || !c.sets.empty() || !c.format.empty() || !c.columnMap.empty()
+                              || !c.importPreset.empty() || !c.saveImportPreset.empty() || !c.accUnit.empty()
+                              || !c.gyrUnit.empty() || !c.timeUnit.empty() || !c.trajectoryOut.empty()
+                              || !c.stepsOut.empty() || !c.summaryOut.empty() || !c.referenceColumns.empty()
+                              || c.closedLoop || c.length_m > 0.0 || c.json;
+    if (otherOptions)
+        return "record takes only --port, --baud, --rate, --duration, --out and --csv";
+    if (c.baud > 0.0 && c.baud != std::floor(c.baud))
+        return "--baud expects a whole number, got " + std::to_string(c.baud);
+    if (c.rate_hz > 0.0 && (c.rate_hz != std::floor(c.rate_hz) || c.rate_hz > 2000.0))
+        return "record's --rate expects a whole number of Hz up to 2000";
+    return {};
+}
+
 std::string checkCombination(const CommandLine& c)
 {
+    const bool recordOptions = !c.port.empty() || c.baud > 0.0 || c.duration_s > 0.0 || !c.mtbOut.empty()
+                               || !c.csvOut.empty();
+    if (c.command == "record")
+        return checkRecordCombination(c);
+    if (recordOptions)
+        return "--port, --baud, --duration, --out and --csv belong to record";
     if (c.input.empty())
         return "missing INPUT file";
     const bool evaluation = !c.referenceColumns.empty() || c.closedLoop || c.length_m > 0.0;
@@ -133,8 +172,8 @@ std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& 
         return {};
     }
     out.command = args[0];
-    if (out.command != "process" && out.command != "eval" && out.command != "info")
-        return "unknown command '" + out.command + "'; expected process, eval or info";
+    if (out.command != "process" && out.command != "eval" && out.command != "info" && out.command != "record")
+        return "unknown command '" + out.command + "'; expected process, eval, info or record";
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& arg = args[i];
         if (arg == "--closed-loop") {

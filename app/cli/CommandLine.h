@@ -7,7 +7,7 @@ namespace footpath::cli {
 
 /// What the user asked for, before any file is touched.
 struct CommandLine {
-    std::string command;  ///< "process", "eval", "info" or "help"
+    std::string command;  ///< "process", "eval", "info", "record" or "help"
     std::string input;
     // Parameters
     std::string paramsFile;
@@ -28,6 +28,12 @@ struct CommandLine {
     bool closedLoop = false;
     double length_m = 0.0;
     bool json = false;
+    // Live recording (record)
+    std::string port;
+    double baud = 0.0;      ///< 0: 115200 with a probe of the common rates
+    double duration_s = 0.0;  ///< device seconds; 0: until Ctrl+C
+    std::string mtbOut;
+    std::string csvOut;
 };
 
 /// Parses argv; returns an error message (naming the bad option) or empty.

@@ -1,6 +1,7 @@
 // footpath-cli: runs the estimation pipeline on recordings in batch.
 #include "cli/CliSupport.h"
 #include "cli/Commands.h"
+#include "cli/RecordCommand.h"
 
 #include <exception>
 #include <iostream>
@@ -23,6 +24,8 @@ int dispatch(const std::vector<std::string>& args)
     }
     if (cmd.command == "info")
         return runInfo(cmd);
+    if (cmd.command == "record")
+        return runRecord(cmd);
     return cmd.command == "process" ? runProcess(cmd) : runEval(cmd);
 }
 

@@ -1,94 +1,408 @@
 #include "MainWindow.h"
 
-#include "PipelineRunner.h"
+#include "AnalysisSession.h"
+#include "AppSettings.h"
+#include "ImportDialog.h"
+#include "ParameterPanel.h"
+#include "RecordedInputPanel.h"
+#include "RecordingLoader.h"
+#include "SignalPlots.h"
+#include "StanceFlagsPlot.h"
+#include "SummaryPanel.h"
 #include "TrajectoryView2D.h"
-#include "io/Import.h"
+#include "TrajectoryView3D.h"
+#include "ReportWriter.h"
+#include "io/ResultWriters.h"
 
+#include <QActionGroup>
 #include <QApplication>
-#include <QFile>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
+#include <QSplitter>
+#include <QStandardPaths>
 #include <QStatusBar>
-
-#include <sstream>
+#include <QTabWidget>
+#include <QUndoStack>
 
 namespace footpath {
 
-MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent),
-      trajectory_(new TrajectoryView2D(this)),
-      summary_(new QLabel(this)),
-      runner_(new PipelineRunner(this))
+namespace {
+
+/// Importers read files, not Qt resources: an embedded sample is copied to the cache once.
+QString fileForResource(const QString& path)
+{
+    if (!path.startsWith(QStringLiteral(":/")))
+        return path;
+    const QString cache = QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + "/samples";
+    QDir().mkpath(cache);
+    const QString copy = cache + "/" + QFileInfo(path).fileName();
+    if (!QFileInfo::exists(copy))
+        QFile::copy(path, copy);
+    return copy;
+}
+
+QDockWidget* dock(QMainWindow* window, const QString& title, const QString& name, QWidget* content,
+                  Qt::DockWidgetArea area)
+{
+    auto* widget = new QDockWidget(title, window);
+    widget->setObjectName(name);  // saveState() needs stable names
+    widget->setWidget(content);
+    window->addDockWidget(area, widget);
+    return widget;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(AppSettings& settings, QWidget* parent)
+    : QMainWindow(parent), settings_(settings), session_(new AnalysisSession(this)), loader_(new RecordingLoader(this))
 {
     setWindowTitle(tr("Footpath"));
-    setCentralWidget(trajectory_);
-    statusBar()->addWidget(summary_, 1);
+    setAcceptDrops(true);
+    createViews();
+    createDocks();
     createMenus();
-    connect(runner_, &PipelineRunner::finished, this, &MainWindow::showResult);
-    connect(runner_, &PipelineRunner::failed, this, &MainWindow::showError);
-    resize(1000, 720);
+    wireSession();
+    wireViews();
+    status_ = new QLabel(tr("Ready"), this);
+    statusBar()->addWidget(status_, 1);
+    input_->setRecentFiles(settings_.recentFiles());
+    parameters_->setParameters(session_->parameters());
+    restoreLayout();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createViews()
+{
+    signalPlots_ = new SignalPlots(this);
+    flags_ = new StanceFlagsPlot(this);
+    trajectory2D_ = new TrajectoryView2D(this);
+    trajectory3D_ = new TrajectoryView3D(this);
+    signalTabs_ = new QTabWidget(this);
+    signalTabs_->addTab(signalPlots_, tr("Signals"));
+    signalTabs_->addTab(flags_, tr("Stance detector"));
+    trajectoryTabs_ = new QTabWidget(this);
+    trajectoryTabs_->addTab(trajectory2D_, tr("Trajectory 2D"));
+    trajectoryTabs_->addTab(trajectory3D_, tr("Trajectory 3D"));
+    auto* splitter = new QSplitter(Qt::Horizontal, this);
+    splitter->setObjectName(QStringLiteral("viewsSplitter"));
+    splitter->addWidget(trajectoryTabs_);
+    splitter->addWidget(signalTabs_);
+    splitter->setStretchFactor(0, 1);
+    splitter->setStretchFactor(1, 1);
+    setCentralWidget(splitter);
+}
+
+void MainWindow::createDocks()
+{
+    input_ = new RecordedInputPanel(this);
+    parameters_ = new ParameterPanel(this);
+    summary_ = new SummaryPanel(this);
+    auto* live = new QLabel(tr("Live input from an Xsens MTi over a serial port comes here."), this);
+    live->setWordWrap(true);
+    live->setAlignment(Qt::AlignCenter);
+    QDockWidget* inputDock = dock(this, tr("Recorded input"), "inputDock", input_, Qt::LeftDockWidgetArea);
+    QDockWidget* liveDock = dock(this, tr("Live input"), "liveDock", live, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(inputDock, liveDock);
+    inputDock->raise();
+    dock(this, tr("Parameters"), "parametersDock", parameters_, Qt::RightDockWidgetArea);
+    dock(this, tr("Summary"), "summaryDock", summary_, Qt::BottomDockWidgetArea);
 }
 
 void MainWindow::createMenus()
 {
+    createFileMenu();
+    createEditMenu();
+    createViewMenu();
+    createSettingsMenu();
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About Footpath"), this, [this] {
+        QMessageBox::about(this, tr("About Footpath"),
+                           tr("<b>Footpath %1</b><p>Foot-mounted inertial navigation: stance detection, "
+                              "strapdown mechanization and an error-state Kalman filter with zero-velocity "
+                              "updates (Guo et al. 2015).</p><p>Sample walk: PyShoe VICON dataset, MIT licence, "
+                              "Copyright (c) 2024 T\u0101-H\u0101.</p>")
+                               .arg(QApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::createFileMenu()
+{
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(tr("&Open recording..."), QKeySequence::Open, this, &MainWindow::chooseRecording);
+    file->addAction(tr("Open with &import settings..."), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open recording"), settings_.lastFolder());
+        if (path.isEmpty())
+            return;
+        ImportDialog dialog(path, tr("Say how to read this file."), ImportOptions(), this);
+        if (dialog.exec() == QDialog::Accepted)
+            openRecording(path, dialog.options());
+    });
     file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, qApp, &QApplication::quit);
+    file->addAction(tr("Export &report (PDF)..."), QKeySequence(Qt::CTRL | Qt::Key_P), this, &MainWindow::exportReport);
+    file->addAction(tr("Export &CSV..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), this, &MainWindow::exportCsv);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+}
+
+void MainWindow::createEditMenu()
+{
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = session_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = session_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    edit->addAction(tr("Reset parameters to &defaults"), this,
+                    [this] { session_->setParameters(Parameters(), tr("Reset to defaults")); });
+}
+
+void MainWindow::createViewMenu()
+{
+    viewMenu_ = menuBar()->addMenu(tr("&View"));
+    viewMenu_->addAction(tr("&Trajectory 2D"), QKeySequence(Qt::CTRL | Qt::Key_1), this,
+                         [this] { trajectoryTabs_->setCurrentWidget(trajectory2D_); });
+    viewMenu_->addAction(tr("Trajectory &3D"), QKeySequence(Qt::CTRL | Qt::Key_2), this,
+                         [this] { trajectoryTabs_->setCurrentWidget(trajectory3D_); });
+    viewMenu_->addAction(tr("&Signals"), QKeySequence(Qt::CTRL | Qt::Key_3), this,
+                         [this] { signalTabs_->setCurrentWidget(signalPlots_); });
+    viewMenu_->addAction(tr("Stance &detector"), QKeySequence(Qt::CTRL | Qt::Key_4), this,
+                         [this] { signalTabs_->setCurrentWidget(flags_); });
+    viewMenu_->addSeparator();
+    for (QDockWidget* widget : findChildren<QDockWidget*>())
+        viewMenu_->addAction(widget->toggleViewAction());
+}
+
+void MainWindow::createSettingsMenu()
+{
+    QMenu* settings = menuBar()->addMenu(tr("&Settings"));
+    QMenu* language = settings->addMenu(tr("&Language"));
+    auto* group = new QActionGroup(this);
+    const QList<QPair<QString, QString>> languages{
+        {QString(), tr("System default")}, {"en", QStringLiteral("English")}, {"de", QStringLiteral("Deutsch")},
+        {"zh_CN", QStringLiteral("\u7b80\u4f53\u4e2d\u6587")}};
+    for (const auto& [code, name] : languages) {
+        QAction* action = language->addAction(name, this, [this, code = code] { chooseLanguage(code); });
+        action->setCheckable(true);
+        action->setChecked(settings_.language() == code);
+        group->addAction(action);
+    }
+}
+
+void MainWindow::chooseLanguage(const QString& language)
+{
+    settings_.setLanguage(language);
+    QMessageBox::information(this, tr("Language"), tr("The new language is used from the next start of Footpath."));
+}
+
+void MainWindow::wireSession()
+{
+    connect(loader_, &RecordingLoader::progress, input_, &RecordedInputPanel::setProgress);
+    connect(loader_, &RecordingLoader::loaded, this, &MainWindow::onLoaded);
+    connect(loader_, &RecordingLoader::failed, this, &MainWindow::onLoadFailed);
+    connect(loader_, &RecordingLoader::cancelled, this, [this] { input_->showProblem(tr("Loading cancelled.")); });
+    connect(input_, &RecordedInputPanel::openRequested, this, &MainWindow::chooseRecording);
+    connect(input_, &RecordedInputPanel::recentFileChosen, this, [this](const QString& path) { openRecording(path); });
+    connect(input_, &RecordedInputPanel::cancelRequested, loader_, &RecordingLoader::cancel);
+    connect(session_, &AnalysisSession::resultChanged, this, &MainWindow::showResult);
+    connect(session_, &AnalysisSession::estimatingChanged, this, &MainWindow::showEstimating);
+    connect(session_, &AnalysisSession::estimateFailed, this,
+            [this](const QString& message) { status_->setText(tr("Estimate failed: %1").arg(message)); });
+    connect(session_, &AnalysisSession::parametersChanged, this, [this] {
+        parameters_->setParameters(session_->parameters());
+        flags_->setParameters(session_->parameters());
+    });
+    connect(parameters_, &ParameterPanel::parameterEdited, session_, &AnalysisSession::setParameter);
+    connect(parameters_, &ParameterPanel::parametersReplaced, session_, &AnalysisSession::setParameters);
+    parameters_->setUndoStack(session_->undoStack());
+}
+
+void MainWindow::wireViews()
+{
+    // One time cursor for every view: a click anywhere moves it everywhere.
+    connect(signalPlots_, &SignalPlots::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
+    connect(flags_, &StanceFlagsPlot::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
+    connect(trajectory2D_, &TrajectoryView2D::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
+    connect(session_, &AnalysisSession::timeCursorChanged, this, [this](double t) {
+        signalPlots_->setTimeCursor(t);
+        flags_->setTimeCursor(t);
+        trajectory2D_->setTimeCursor(t);
+        trajectory3D_->setTimeCursor(t);
+    });
+    // The signal and detector plots share their time axis.
+    connect(signalPlots_, &SignalPlots::timeRangeChanged, flags_, &StanceFlagsPlot::setTimeRange);
+    connect(flags_, &StanceFlagsPlot::timeRangeChanged, signalPlots_, &SignalPlots::setTimeRange);
+}
+
+ReportContent MainWindow::reportContent() const
+{
+    ReportContent content;
+    content.recordingPath = session_->recordingPath();
+    content.info = session_->recordingInfo();
+    content.recording = session_->recording();
+    content.result = session_->result();
+    content.parameters = session_->parameters();
+    content.parameterSource = content.parameters == Parameters() ? tr("defaults") : tr("adjusted in the window");
+    return content;
+}
+
+void MainWindow::exportReport()
+{
+    if (!session_->result()) {
+        QMessageBox::information(this, tr("Export report"), tr("There is no estimate to report yet."));
+        return;
+    }
+    const QString suggested = QFileInfo(session_->recordingPath()).completeBaseName() + QStringLiteral("-report.pdf");
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export report"),
+                                                      QDir(settings_.lastFolder()).filePath(suggested),
+                                                      tr("PDF (*.pdf)"));
+    if (path.isEmpty())
+        return;
+    const bool letter = QLocale().measurementSystem() == QLocale::ImperialUSSystem;
+    if (const QString problem = writePdfReport(reportContent(), path, letter ? QPageSize::Letter : QPageSize::A4);
+        !problem.isEmpty())
+        QMessageBox::warning(this, tr("Export report"), problem);
+    else
+        status_->setText(tr("Report written to %1").arg(path));
+}
+
+void MainWindow::exportCsv()
+{
+    const std::shared_ptr<const Result> result = session_->result();
+    if (!result) {
+        QMessageBox::information(this, tr("Export CSV"), tr("There is no estimate to export yet."));
+        return;
+    }
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Export CSV into folder"), settings_.lastFolder());
+    if (folder.isEmpty())
+        return;
+    const QString base = QDir(folder).filePath(QFileInfo(session_->recordingPath()).completeBaseName());
+    const Parameters params = session_->parameters();
+    const std::pair<QString, std::function<void(std::ostream&)>> files[] = {
+        {base + "-trajectory.csv", [&](std::ostream& out) { writeTrajectoryCsv(out, *result); }},
+        {base + "-steps.csv", [&](std::ostream& out) { writeStepsCsv(out, *result); }},
+        {base + "-summary.csv", [&](std::ostream& out) { writeSummaryCsv(out, result->summary); }},
+        {base + "-parameters.csv", [&](std::ostream& out) { writeParametersCsv(out, params); }}};
+    for (const auto& [path, write] : files)
+        if (const std::string problem = writeFileAtomically(path.toStdString(), write); !problem.empty()) {
+            QMessageBox::warning(this, tr("Export CSV"), QString::fromStdString(problem));
+            return;
+        }
+    status_->setText(tr("Trajectory, steps, summary and parameters written to %1").arg(folder));
 }
 
 void MainWindow::chooseRecording()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open recording"), QString(),
-                                                      tr("Delimited text (*.csv *.txt);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open recording"), settings_.lastFolder(),
+        tr("Recordings (*.txt *.csv *.mtb *.TXT *.CSV);;All files (*)"));
     if (!path.isEmpty())
         openRecording(path);
 }
 
-bool MainWindow::openRecording(const QString& path)
+void MainWindow::openRecording(const QString& path, const ImportOptions& options)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        showError(tr("%1: cannot open the file: %2").arg(path, file.errorString()));
-        return false;
-    }
-    // Through a stream so embedded samples (":/...") open like files.
-    const QByteArray bytes = file.readAll();
-    std::istringstream text(bytes.toStdString());
-    ImportResult read = importStream(text, static_cast<std::size_t>(bytes.size()), path.toStdString());
-    if (!read.ok()) {
-        showError(QString::fromStdString(read.error->text()));
-        return false;
-    }
-    recording_ = std::make_shared<const Recording>(std::move(read.recording));
-    setWindowTitle(tr("Footpath - %1").arg(QString::fromStdString(recording_->source)));
-    summary_->setText(tr("Estimating %1 samples...").arg(recording_->samples.size()));
-    trajectory_->clear();
-    runner_->run(recording_, params_);
-    return true;
+    const QString file = fileForResource(path);
+    input_->showLoading(file);
+    status_->setText(tr("Reading %1...").arg(QFileInfo(file).fileName()));
+    loader_->load(file, options);
 }
 
-void MainWindow::showResult(const std::shared_ptr<const Result>& result)
+void MainWindow::onLoaded(const QString& path, const std::shared_ptr<const ImportResult>& result)
 {
-    trajectory_->showResult(*result);
+    input_->showInfo(path, *result);
+    if (!path.startsWith(QStandardPaths::writableLocation(QStandardPaths::CacheLocation))) {
+        settings_.addRecentFile(path);
+        settings_.setLastFolder(QFileInfo(path).absolutePath());
+        input_->setRecentFiles(settings_.recentFiles());
+    }
+    auto recording = std::make_shared<const Recording>(result->recording);
+    setWindowTitle(tr("Footpath - %1").arg(QFileInfo(path).fileName()));
+    signalPlots_->setRecording(recording);
+    flags_->setRecording(recording);
+    summary_->setRecording(recording);
+    trajectory2D_->setReference(recording->reference.positions_m);
+    session_->setRecording(recording, result->info, path);
+}
+
+void MainWindow::onLoadFailed(const QString& path, const QString& message, const ImportOptions& options)
+{
+    input_->showProblem(message);
+    status_->setText(message);
+    // A file that does not describe itself gets the import dialog instead of a dead end.
+    const bool needsColumnMap = message.contains(QStringLiteral("no header row"))
+                                || message.contains(QStringLiteral("missing column"))
+                                || message.contains(QStringLiteral("column map"));
+    if (!needsColumnMap)
+        return;
+    ImportDialog dialog(path, message, options, this);
+    if (dialog.exec() == QDialog::Accepted)
+        openRecording(path, dialog.options());
+}
+
+void MainWindow::showResult()
+{
+    const std::shared_ptr<const Result> result = session_->result();
+    signalPlots_->setResult(result);
+    flags_->setResult(result);
+    summary_->setResult(result);
+    if (!result) {
+        trajectory2D_->clear();
+        trajectory3D_->clear();
+        return;
+    }
+    trajectory2D_->setResult(result);
+    trajectory3D_->setResult(result);
     const Summary& s = result->summary;
-    summary_->setText(tr("%1 samples, %2 s, %3 steps, path %4 m, end to start %5 m (%6 %), estimated in %7 ms")
-                          .arg(s.samples)
-                          .arg(s.duration_s, 0, 'f', 1)
-                          .arg(s.steps)
-                          .arg(s.pathLength_m, 0, 'f', 2)
-                          .arg(s.endToStart_m, 0, 'f', 2)
-                          .arg(s.endToStartPct, 0, 'f', 2)
-                          .arg(s.runtime_s * 1000.0, 0, 'f', 1));
+    status_->setText(tr("%1 samples, %2 steps, path %3 m, end to start %4 m (%5 %), estimated in %6 ms")
+                         .arg(s.samples)
+                         .arg(s.steps)
+                         .arg(s.pathLength_m, 0, 'f', 2)
+                         .arg(s.endToStart_m, 0, 'f', 2)
+                         .arg(s.endToStartPct, 0, 'f', 2)
+                         .arg(s.runtime_s * 1000.0, 0, 'f', 0));
+    emit resultShown();
 }
 
-void MainWindow::showError(const QString& message)
+void MainWindow::showEstimating(bool running)
 {
-    summary_->setText(message);
-    QMessageBox::warning(this, tr("Footpath"), message);
+    if (running)
+        status_->setText(tr("Estimating..."));
+}
+
+void MainWindow::restoreLayout()
+{
+    if (!restoreGeometry(settings_.windowGeometry()))
+        resize(1400, 900);
+    restoreState(settings_.windowState());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    settings_.setWindowGeometry(saveGeometry());
+    settings_.setWindowState(saveState());
+    QMainWindow::closeEvent(event);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (event->mimeData()->hasUrls() && event->mimeData()->urls().first().isLocalFile())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+    openRecording(event->mimeData()->urls().first().toLocalFile());
+    event->acceptProposedAction();
 }
 
 }  // namespace footpath

@@ -1,40 +1,85 @@
 #pragma once
 
-#include "Recording.h"
-#include "Result.h"
-#include "nav/Parameters.h"
+#include "ReportWriter.h"
+#include "io/Import.h"
 
 #include <QMainWindow>
 
 #include <memory>
 
+class QAction;
 class QLabel;
+class QMenu;
+class QTabWidget;
 
 namespace footpath {
 
-class PipelineRunner;
+class AnalysisSession;
+class AppSettings;
+class ParameterPanel;
+class RecordedInputPanel;
+class RecordingLoader;
+class SignalPlots;
+class StanceFlagsPlot;
+class SummaryPanel;
 class TrajectoryView2D;
+class TrajectoryView3D;
 
-/// Assembles the panels and menus; holds no algorithm.
+/// Assembles the panels, docks and menus and wires them to the session; holds no algorithm.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    explicit MainWindow(QWidget* parent = nullptr);
+    explicit MainWindow(AppSettings& settings, QWidget* parent = nullptr);
+    ~MainWindow() override;
 
-    /// Opens a delimited text recording (a file path or a ":/" resource); errors are shown in words.
-    bool openRecording(const QString& path);
+    /// Starts loading a recording (a file path or a ":/" resource) in the background.
+    void openRecording(const QString& path, const ImportOptions& options = {});
+    AnalysisSession* session() const { return session_; }
+
+signals:
+    /// A result is on screen (after each estimate); screenshots and tests wait for it.
+    void resultShown();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
+    void createViews();
+    void createDocks();
     void createMenus();
+    void createFileMenu();
+    void createEditMenu();
+    void createViewMenu();
+    void createSettingsMenu();
+    void wireSession();
+    void wireViews();
     void chooseRecording();
-    void showResult(const std::shared_ptr<const Result>& result);
-    void showError(const QString& message);
+    void exportReport();
+    void exportCsv();
+    ReportContent reportContent() const;
+    void onLoaded(const QString& path, const std::shared_ptr<const ImportResult>& result);
+    void onLoadFailed(const QString& path, const QString& message, const ImportOptions& options);
+    void showResult();
+    void showEstimating(bool running);
+    void chooseLanguage(const QString& language);
+    void restoreLayout();
 
-    TrajectoryView2D* trajectory_;
-    QLabel* summary_;
-    PipelineRunner* runner_;
-    std::shared_ptr<const Recording> recording_;
-    Parameters params_;
+    AppSettings& settings_;
+    AnalysisSession* session_;
+    RecordingLoader* loader_;
+    RecordedInputPanel* input_ = nullptr;
+    ParameterPanel* parameters_ = nullptr;
+    SummaryPanel* summary_ = nullptr;
+    SignalPlots* signalPlots_ = nullptr;
+    StanceFlagsPlot* flags_ = nullptr;
+    TrajectoryView2D* trajectory2D_ = nullptr;
+    TrajectoryView3D* trajectory3D_ = nullptr;
+    QTabWidget* signalTabs_ = nullptr;
+    QTabWidget* trajectoryTabs_ = nullptr;
+    QLabel* status_ = nullptr;
+    QMenu* viewMenu_ = nullptr;
 };
 
 }  // namespace footpath

@@ -1,36 +1,67 @@
 // footpath: the desktop application. With no argument it opens the bundled sample walk.
+#include "AppSettings.h"
 #include "MainWindow.h"
+#include "Result.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QLibraryInfo>
+#include <QLocale>
 #include <QTimer>
+#include <QTranslator>
+
+namespace {
+
+const char* const kSampleWalk = ":/samples/pyshoe-vicon-2017-11-22-11-27-30.csv";
+
+/// The chosen language, or the system's; Qt's own strings (dialog buttons) too.
+void installTranslations(QApplication& app, const QString& language)
+{
+    const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
+    auto* own = new QTranslator(&app);
+    if (own->load(locale, QStringLiteral("footpath"), QStringLiteral("_"), QStringLiteral(":/i18n")))
+        QApplication::installTranslator(own);
+    auto* qt = new QTranslator(&app);
+    if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                 QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        QApplication::installTranslator(qt);
+}
+
+}  // namespace
 
 int main(int argc, char** argv)
 {
     QApplication app(argc, argv);
-    QApplication::setApplicationName("Footpath");
-    QApplication::setOrganizationName("Footpath");
+    QApplication::setApplicationName(QStringLiteral("Footpath"));
+    QApplication::setOrganizationName(QStringLiteral("Footpath"));
+    QApplication::setApplicationVersion(QStringLiteral(FOOTPATH_VERSION));
     qRegisterMetaType<std::shared_ptr<const footpath::Result>>();
 
+    footpath::AppSettings settings;
     QCommandLineParser parser;
     parser.setApplicationDescription(QApplication::translate("main", "Foot-mounted inertial navigation"));
     parser.addHelpOption();
-    parser.addPositionalArgument("recording", QApplication::translate("main", "Recording to open (CSV)"));
-    QCommandLineOption screenshot("screenshot",
-                                  QApplication::translate("main", "Save a PNG of the window once estimated, then quit"),
-                                  "file");
+    parser.addVersionOption();
+    parser.addPositionalArgument("recording", QApplication::translate("main", "Recording to open"));
+    const QCommandLineOption screenshot(
+        "screenshot", QApplication::translate("main", "Save a PNG of the window once estimated, then quit"), "file");
+    const QCommandLineOption language("language", QApplication::translate("main", "Language (en, de, zh_CN)"), "code");
     parser.addOption(screenshot);
+    parser.addOption(language);
     parser.process(app);
+    installTranslations(app, parser.isSet(language) ? parser.value(language) : settings.language());
 
-    footpath::MainWindow window;
+    footpath::MainWindow window(settings);
     window.show();
     const QStringList files = parser.positionalArguments();
-    window.openRecording(files.isEmpty() ? ":/samples/pyshoe-vicon-2017-11-22-11-27-30.csv" : files.first());
+    window.openRecording(files.isEmpty() ? QString::fromUtf8(kSampleWalk) : files.first());
     if (parser.isSet(screenshot)) {
-        // For documentation and visual checks under xvfb-run: wait for the estimate, grab, quit.
-        QTimer::singleShot(3000, &window, [&window, path = parser.value(screenshot)] {
-            window.grab().save(path);
-            QApplication::quit();
+        // For documentation and visual checks under xvfb-run: grab once the first result is drawn.
+        QObject::connect(&window, &footpath::MainWindow::resultShown, &window, [&window, path = parser.value(screenshot)] {
+            QTimer::singleShot(500, &window, [&window, path] {
+                window.grab().save(path);
+                QApplication::quit();
+            });
         });
     }
     return app.exec();

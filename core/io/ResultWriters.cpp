@@ -1,6 +1,7 @@
 #include "io/ResultWriters.h"
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -10,31 +11,51 @@ namespace footpath {
 
 namespace {
 
-// 9 significant digits keep sub-millimetre positions of a kilometre walk; %g keeps files small.
+// 10 significant digits keep sub-millimetre positions of a 100 km walk and the biases' last
+// digits; std::to_chars writes a dot whatever the C locale says (Qt sets it from the
+// environment, which would give "9,81" under a German locale with printf).
 void put(std::ostream& out, double value, char separator)
 {
-    char buffer[32];
-    const int length = std::snprintf(buffer, sizeof buffer, "%.9g", value);
-    out.write(buffer, length);
+    char buffer[40];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 10).ptr;
+    out.write(buffer, end - buffer);
     out.put(separator);
+}
+
+void putVector(std::ostream& out, const Eigen::Vector3d& v, char lastSeparator = ',')
+{
+    put(out, v.x(), ',');
+    put(out, v.y(), ',');
+    put(out, v.z(), lastSeparator);
+}
+
+/// A CSV cell that may hold commas or quotes.
+std::string quoted(const std::string& text)
+{
+    if (text.find_first_of(",\"\n") == std::string::npos)
+        return text;
+    std::string out = "\"";
+    for (char ch : text)
+        out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    return out + "\"";
 }
 
 }  // namespace
 
 void writeTrajectoryCsv(std::ostream& out, const Result& result)
 {
-    out << "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance\n";
+    out << "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance,"
+           "gyro_bias_x_radps,gyro_bias_y_radps,gyro_bias_z_radps,acc_bias_x_mps2,acc_bias_y_mps2,acc_bias_z_mps2\n";
     const StanceFlags& flags = result.flags;
     for (std::size_t k = 0; k < result.time_s.size(); ++k) {
         put(out, result.time_s[k], ',');
-        for (int axis = 0; axis < 3; ++axis)
-            put(out, result.position_m[k][axis], ',');
-        for (int axis = 0; axis < 3; ++axis)
-            put(out, result.velocity_mps[k][axis], ',');
-        for (int axis = 0; axis < 3; ++axis)
-            put(out, result.rollPitchYaw_rad[k][axis], ',');
+        putVector(out, result.position_m[k]);
+        putVector(out, result.velocity_mps[k]);
+        putVector(out, result.rollPitchYaw_rad[k]);
         out << int(flags.c1[k]) << ',' << int(flags.c2[k]) << ',' << int(flags.c3[k]) << ',' << int(flags.stance[k])
-            << '\n';
+            << ',';
+        putVector(out, result.gyroBias_radps[k]);
+        putVector(out, result.accBias_mps2[k], '\n');
     }
 }
 
@@ -46,8 +67,7 @@ void writeStepsCsv(std::ostream& out, const Result& result)
         out << i << ',';
         put(out, step.stanceStart_s, ',');
         put(out, step.stanceEnd_s, ',');
-        for (int axis = 0; axis < 3; ++axis)
-            put(out, step.position_m[axis], ',');
+        putVector(out, step.position_m);
         put(out, step.strideLength_m, ',');
         put(out, step.strideDuration_s, '\n');
     }
@@ -68,6 +88,33 @@ std::string summaryToJson(const Summary& s)
         << "  \"runtime_s\": " << s.runtime_s << "\n"
         << "}\n";
     return out.str();
+}
+
+void writeSummaryCsv(std::ostream& out, const Summary& s)
+{
+    out << "samples,duration_s,stance_phases,steps,path_length_m,end_to_start_m,end_to_start_pct,runtime_s\n";
+    out << s.samples << ',';
+    put(out, s.duration_s, ',');
+    out << s.stancePhases << ',' << s.steps << ',';
+    put(out, s.pathLength_m, ',');
+    put(out, s.endToStart_m, ',');
+    put(out, s.endToStartPct, ',');
+    put(out, s.runtime_s, '\n');
+}
+
+void writeParametersCsv(std::ostream& out, const Parameters& params)
+{
+    const Parameters defaults;
+    out << "name,value,unit,default,differs_from_default,group,description\n";
+    for (const ParameterField& field : parameterFields()) {
+        const double value = parameterValue(params, field);
+        const double standard = parameterValue(defaults, field);
+        out << field.name << ',';
+        put(out, value, ',');
+        out << quoted(field.unit) << ',';
+        put(out, standard, ',');
+        out << (value != standard ? 1 : 0) << ',' << quoted(field.group) << ',' << quoted(field.description) << '\n';
+    }
 }
 
 std::string writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Result.h"
+#include "nav/Parameters.h"
 
 #include <functional>
 #include <ostream>
@@ -9,10 +10,15 @@
 namespace footpath {
 
 /// Trajectory CSV, one row per sample, z up:
-/// time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance
+/// time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance, then the
+/// bias estimates gyro_bias_{x,y,z}_radps, acc_bias_{x,y,z}_mps2. Numbers always use a dot.
 void writeTrajectoryCsv(std::ostream& out, const Result& result);
 /// Steps CSV: step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s
 void writeStepsCsv(std::ostream& out, const Result& result);
+/// Summary as a header row and one value row.
+void writeSummaryCsv(std::ostream& out, const Summary& summary);
+/// Every parameter: name,value,unit,default,differs_from_default,group,description.
+void writeParametersCsv(std::ostream& out, const Parameters& params);
 /// Summary as one JSON object (samples, duration_s, steps, path_length_m, end_to_start_m, ...).
 std::string summaryToJson(const Summary& summary);
 

@@ -104,6 +104,14 @@ double parameterValue(const Parameters& params, const ParameterField& field)
     return field.kind == K::Real ? params.*field.real : (params.*field.flag ? 1.0 : 0.0);
 }
 
+bool operator==(const Parameters& a, const Parameters& b)
+{
+    for (const ParameterField& field : parameterFields())
+        if (parameterValue(a, field) != parameterValue(b, field))
+            return false;
+    return true;
+}
+
 std::string setParameter(Parameters& params, const std::string& name, const std::string& text)
 {
     const ParameterField* field = findParameterField(name);

@@ -67,6 +67,10 @@ struct ParameterField {
 const std::vector<ParameterField>& parameterFields();
 const ParameterField* findParameterField(const std::string& name);
 
+/// Equal in every field of parameterFields().
+bool operator==(const Parameters& a, const Parameters& b);
+inline bool operator!=(const Parameters& a, const Parameters& b) { return !(a == b); }
+
 /// Reads a field by name as a number (flags as 0/1).
 double parameterValue(const Parameters& params, const ParameterField& field);
 /// Sets a field from text ("0.5", "1e-4", "true", "off"); returns an error message or empty.

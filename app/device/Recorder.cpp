@@ -1,0 +1,203 @@
+#include "Recorder.h"
+
+#include "xbus/XbusControl.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+
+#include <charconv>
+#include <unistd.h>
+
+namespace footpath {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("Recorder", text);
+}
+
+/// The shortest text that reads back as the same double: CSV and .mtb re-import bit-identical.
+void appendNumber(QByteArray& out, double value)
+{
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    out.append(text, static_cast<int>(result.ptr - text));
+}
+
+void appendVector(QByteArray& out, const Eigen::Vector3d& v)
+{
+    for (int axis = 0; axis < 3; ++axis) {
+        out.append(',');
+        appendNumber(out, v[axis]);
+    }
+}
+
+QByteArray configurationFrame(const DeviceInfo& device)
+{
+    XbusConfiguration configuration = mtData2Configuration(device.deviceId, device.rate_hz, device.firmware);
+    const QDateTime now = QDateTime::currentDateTime();  // loggers stamp the file's creation
+    configuration.date = now.toString(QStringLiteral("yyyyMMdd")).toStdString();
+    configuration.time = now.toString(QStringLiteral("hhmmss")).toStdString() + "00";
+    const std::vector<std::uint8_t> frame =
+        encodeFrame(xbusMessage(XbusMid::Configuration, encodeConfiguration(configuration)));
+    return QByteArray(reinterpret_cast<const char*>(frame.data()), static_cast<int>(frame.size()));
+}
+
+}  // namespace
+
+bool Recorder::open(const RecordingPaths& paths)
+{
+    close();
+    paths_ = paths;
+    error_.clear();
+    headerWritten_ = false;
+    rawBytes_ = rows_ = 0;
+    if (!openFile(mtb_, paths.mtb) || (!paths.csv.isEmpty() && !openFile(csv_, paths.csv))) {
+        close();
+        return false;
+    }
+    return true;
+}
+
+bool Recorder::writeHeader(const DeviceInfo& device)
+{
+    assembler_ = SampleAssembler(device.rate_hz > 0 ? device.rate_hz : 100.0);
+    return isOpen() && writeAll(mtb_, configurationFrame(device));
+}
+
+void Recorder::discard()
+{
+    close();
+    for (const QString& path : {paths_.mtb, paths_.csv})
+        if (!path.isEmpty())
+            QFile::remove(path);
+}
+
+bool Recorder::openFile(QFile& file, const QString& path)
+{
+    const QFileInfo folder(QFileInfo(path).absolutePath());
+    if (!folder.isDir()) {
+        error_ = tr("cannot record to %1: the folder %2 does not exist").arg(path, folder.filePath());
+        return false;
+    }
+    file.setFileName(path);
+    // Unbuffered: each write is a system call, so the data is safe from a crash of this program
+    // and a full disk is noticed by the write that hits it, not at the end.
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered)) {
+        error_ = tr("cannot record to %1: %2 (is the folder %3 writable?)")
+                     .arg(path, file.errorString(), QDir::toNativeSeparators(folder.filePath()));
+        return false;
+    }
+    return true;
+}
+
+bool Recorder::writeRaw(const QByteArray& bytes)
+{
+    if (!mtb_.isOpen() || bytes.isEmpty())
+        return mtb_.isOpen();
+    if (!writeAll(mtb_, bytes))
+        return false;
+    rawBytes_ += static_cast<std::uint64_t>(bytes.size());
+    return true;
+}
+
+bool Recorder::writeData(const std::vector<MtData2Sample>& messages)
+{
+    if (!isOpen())
+        return false;
+    QByteArray text;
+    const std::uint64_t rowsBefore = assembler_.samples();
+    appendRows(text, messages);
+    if (csv_.isOpen() && !text.isEmpty() && !writeAll(csv_, text))
+        return false;
+    rows_ += assembler_.samples() - rowsBefore;
+    return true;
+}
+
+void Recorder::appendRows(QByteArray& out, const std::vector<MtData2Sample>& messages)
+{
+    for (const MtData2Sample& message : messages) {
+        const std::optional<LiveSample> sample = assembler_.add(message);
+        if (!sample)
+            continue;
+        if (!headerWritten_) {
+            out += csvHeader(*sample);
+            headerWritten_ = true;
+        }
+        appendRow(out, *sample);
+    }
+}
+
+QByteArray Recorder::csvHeader(const LiveSample& first)
+{
+    withMag_ = first.imu.hasMag();
+    withPressure_ = first.imu.hasPressure();
+    QByteArray header = "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z";
+    if (withMag_)
+        header += ",mag_x,mag_y,mag_z";
+    if (withPressure_)
+        header += ",pressure_pa";
+    return header + ",packet_counter\n";
+}
+
+void Recorder::appendRow(QByteArray& out, const LiveSample& sample) const
+{
+    appendNumber(out, sample.imu.time_s);
+    appendVector(out, sample.imu.acc_mps2);
+    appendVector(out, sample.imu.gyr_radps);
+    if (withMag_)
+        appendVector(out, sample.imu.mag);
+    if (withPressure_) {
+        out.append(',');
+        appendNumber(out, sample.imu.pressure_pa);
+    }
+    out.append(',');
+    if (sample.packetCounter)  // readers take time from time_s; an empty counter cell is ignored
+        out.append(QByteArray::number(*sample.packetCounter));
+    out.append('\n');
+}
+
+bool Recorder::writeAll(QFile& file, const QByteArray& bytes)
+{
+    if (file.write(bytes) != bytes.size())
+        return fail(file, tr("writing failed"));
+    dirty_ = true;
+    return true;
+}
+
+bool Recorder::sync()
+{
+    if (!dirty_)
+        return isOpen();
+    for (QFile* file : {&mtb_, &csv_}) {
+        if (file->isOpen() && ::fsync(file->handle()) != 0)
+            return fail(*file, tr("flushing to the disk failed"));
+    }
+    dirty_ = false;
+    return true;
+}
+
+bool Recorder::fail(QFile& file, const QString& what)
+{
+    error_ = tr("%1 for %2: %3 (disk full or removed?); the recording stopped, everything before was kept")
+                 .arg(what, file.fileName(), file.errorString());
+    close();
+    return false;
+}
+
+void Recorder::close()
+{
+    if (dirty_) {
+        dirty_ = false;  // one attempt: a failing disk must not make close() loop
+        for (QFile* file : {&mtb_, &csv_})
+            if (file->isOpen())
+                ::fsync(file->handle());
+    }
+    mtb_.close();
+    csv_.close();
+}
+
+}  // namespace footpath

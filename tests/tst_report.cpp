@@ -1,0 +1,159 @@
+// The PDF report and the CSV exports: the PDF opens, holds the figures the summary computed as
+// real text, comes in A4 and Letter; the CSV files read back to the numbers they were written from.
+// Set FOOTPATH_REPORT_KEEP=dir to keep the generated PDFs for looking at them.
+#include "ReportWriter.h"
+#include "SummaryPanel.h"
+#include "TestData.h"
+#include "io/ResultWriters.h"
+#include "nav/Pipeline.h"
+#include "sim/WalkSimulator.h"
+
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <sstream>
+
+using namespace footpath;
+
+namespace {
+
+ReportContent contentFor(const QString& path, const ImportOptions& options = {})
+{
+    ImportResult read = importRecording(path.toStdString(), options);
+    ReportContent content;
+    if (!read.ok())
+        return content;
+    content.recordingPath = path;
+    content.info = read.info;
+    content.recording = std::make_shared<const Recording>(std::move(read.recording));
+    content.result = std::make_shared<const Result>(runPipeline(*content.recording, content.parameters).result);
+    return content;
+}
+
+QString run(const QString& program, const QStringList& arguments)
+{
+    QProcess process;
+    process.start(program, arguments);
+    process.waitForFinished(60000);
+    return QString::fromUtf8(process.readAllStandardOutput());
+}
+
+QString outputDir(const QTemporaryDir& temporary)
+{
+    const QByteArray keep = qgetenv("FOOTPATH_REPORT_KEEP");
+    return keep.isEmpty() ? temporary.path() : QString::fromLocal8Bit(keep);
+}
+
+}  // namespace
+
+class TestReport : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        if (QStandardPaths::findExecutable("pdftotext").isEmpty() || QStandardPaths::findExecutable("pdfinfo").isEmpty())
+            QSKIP("pdftotext/pdfinfo (Debian: poppler-utils) are not installed");
+    }
+
+    void pdfHoldsTheSummaryFiguresAsText()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        QTemporaryDir dir;
+        const ReportContent content = contentFor(datasetPath("pyshoe-vicon/2017-11-22-11-22-03.csv"));
+        QVERIFY(content.result);
+        const QString pdf = outputDir(dir) + "/pyshoe-report.pdf";
+        QCOMPARE(writePdfReport(content, pdf), QString());
+        const QString info = run("pdfinfo", {pdf});
+        QVERIFY2(info.contains("A4"), qPrintable(info));
+        const int pages = info.section("Pages:", 1).trimmed().section('\n', 0, 0).toInt();
+        QVERIFY2(pages >= 5, qPrintable(info));
+        const QString text = run("pdftotext", {"-layout", pdf, "-"});
+        const GaitStatistics g = computeGaitStatistics(*content.result, content.recording.get());
+        QVERIFY(g.armse.has_value());
+        for (const QString& figure : {QString::number(g.pathLength_m, 'f', 2) + " m",
+                                      QString::number(g.armse->armse2d_m, 'f', 3) + " m",
+                                      QString::number(content.result->summary.steps),
+                                      QStringLiteral("2017-11-22-11-22-03.csv"), QStringLiteral("ZUPT+ZARU"),
+                                      QStringLiteral("acc_std_max_mps2"), QStringLiteral("Figure 5")})
+            QVERIFY2(text.contains(figure), qPrintable(figure));
+        // Every step is in the table, paged as needed: the last step's number appears.
+        QVERIFY(text.contains(QString::number(content.result->steps.size() - 1)));
+    }
+
+    void changedParametersAreMarkedAndLetterWorks()
+    {
+        QTemporaryDir dir;
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), WalkSimulatorConfig());
+        ReportContent content;
+        content.recordingPath = "simulated.csv";
+        content.recording = std::make_shared<const Recording>(walk.recording);
+        content.parameters.acc_std_max_mps2 = 0.7;
+        content.parameters.use_zaru = false;
+        content.result = std::make_shared<const Result>(runPipeline(*content.recording, content.parameters).result);
+        const QString pdf = outputDir(dir) + "/letter-report.pdf";
+        QCOMPARE(writePdfReport(content, pdf, QPageSize::Letter), QString());
+        QVERIFY(run("pdfinfo", {pdf}).contains("letter"));
+        const QString text = run("pdftotext", {"-layout", pdf, "-"});
+        QVERIFY(text.contains("0.7"));
+        QVERIFY(text.contains("ZUPT"));
+        QVERIFY(!text.contains("ZUPT+ZARU"));
+    }
+
+    void nothingToReportIsAnErrorNotACrash()
+    {
+        QTemporaryDir dir;
+        QVERIFY(!writePdfReport(ReportContent(), dir.filePath("empty.pdf")).isEmpty());
+    }
+
+    void trajectoryCsvRoundTrips()
+    {
+        const SimulatedWalk walk = simulateWalk(straightLinePath(5.0), WalkSimulatorConfig());
+        const Result result = runPipeline(walk.recording, Parameters()).result;
+        std::ostringstream out;
+        writeTrajectoryCsv(out, result);
+        std::istringstream in(out.str());
+        std::string line;
+        std::getline(in, line);
+        QVERIFY(QString::fromStdString(line).startsWith("time_s,x_m,y_m,z_m,"));
+        QVERIFY(QString::fromStdString(line).endsWith("acc_bias_z_mps2"));
+        for (std::size_t k = 0; std::getline(in, line); ++k) {
+            const QStringList cells = QString::fromStdString(line).split(',');
+            QCOMPARE(cells.size(), 20);
+            // 10 significant digits: sub-micrometre here.
+            QVERIFY(std::abs(cells[1].toDouble() - result.position_m[k].x()) <= 1e-9 * (1 + std::abs(result.position_m[k].x())));
+            QVERIFY(std::abs(cells[16].toDouble() - result.gyroBias_radps[k].z()) <= 1e-12 + 1e-9 * std::abs(result.gyroBias_radps[k].z()));
+        }
+    }
+
+    void csvUsesADotWhateverTheLocale()
+    {
+        // Qt sets the C locale from the environment; a German one writes "9,81" with printf.
+        const char* previous = std::setlocale(LC_ALL, nullptr);
+        const std::string saved = previous ? previous : "C";
+        if (!std::setlocale(LC_ALL, "de_DE.UTF-8"))
+            std::setlocale(LC_NUMERIC, "de_DE");
+        Parameters params;
+        params.acc_std_max_mps2 = 0.25;
+        std::ostringstream out;
+        writeParametersCsv(out, params);
+        std::setlocale(LC_ALL, saved.c_str());
+        QVERIFY(QString::fromStdString(out.str()).contains("acc_std_max_mps2,0.25,m/s^2,0.5,1,"));
+    }
+
+    void summaryCsvHasUnitsInItsHeader()
+    {
+        Summary summary;
+        summary.samples = 10;
+        summary.pathLength_m = 12.5;
+        std::ostringstream out;
+        writeSummaryCsv(out, summary);
+        QVERIFY(QString::fromStdString(out.str())
+                    .startsWith("samples,duration_s,stance_phases,steps,path_length_m,end_to_start_m,"
+                                "end_to_start_pct,runtime_s\n10,0,0,0,12.5,"));
+    }
+};
+
+QTEST_MAIN(TestReport)
+#include "tst_report.moc"

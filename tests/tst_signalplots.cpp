@@ -1,0 +1,425 @@
+#include "SignalPlots.h"
+#include "detect/StanceDetector.h"
+#include "nav/Pipeline.h"
+#include "sim/WalkSimulator.h"
+
+#include <QCheckBox>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QPainter>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace footpath;
+using Channel = SignalPlots::Channel;
+using Row = SignalPlots::Row;
+
+namespace {
+
+struct Walk {
+    SimulatedWalk simulated;
+    std::shared_ptr<const Recording> recording;
+    std::shared_ptr<const Result> result;
+};
+
+Walk simulatedWalk(bool withMagnetometer, bool withPressure,
+                   const std::vector<Eigen::Vector3d>& path = closedRectanglePath(10.0, 5.0))
+{
+    WalkSimulatorConfig config;
+    config.withMagnetometer = withMagnetometer;
+    config.withPressure = withPressure;
+    Walk walk;
+    walk.simulated = simulateWalk(path, config);
+    walk.recording = std::make_shared<const Recording>(walk.simulated.recording);
+    walk.result = std::make_shared<const Result>(runPipeline(*walk.recording, Parameters()).result);
+    return walk;
+}
+
+QCPAxis* timeAxisOf(const SignalPlots& plots, Row row) { return plots.axisRect(row)->axis(QCPAxis::atBottom); }
+
+QCPLegend* legendOf(const SignalPlots& plots, Row row)
+{
+    return qobject_cast<QCPLegend*>(plots.axisRect(row)->insetLayout()->elementAt(0));
+}
+
+/// Shows the widget and lays the plot out, so pixels map to coordinates as on screen.
+bool showLaidOut(SignalPlots& plots, int width = 900)
+{
+    plots.resize(width, 700);
+    plots.show();
+    const bool exposed = QTest::qWaitForWindowExposed(&plots);
+    plots.plot()->replot();
+    return exposed;
+}
+
+/// Pixels of the stance band's colour (pale amber over white) in the column of time_s in a row.
+int bandPixelsAt(const SignalPlots& plots, Row row, double time_s)
+{
+    plots.plot()->replot();
+    const QImage image = plots.plot()->toPixmap().toImage();
+    const QCPAxisRect* rect = plots.axisRect(row);
+    const int x = static_cast<int>(std::lround(rect->axis(QCPAxis::atBottom)->coordToPixel(time_s)));
+    int count = 0;
+    for (int y = rect->top() + 1; y < rect->bottom(); ++y) {
+        const QColor pixel = image.pixelColor(x, y);
+        count += pixel.red() >= 250 && std::abs(pixel.green() - 236) <= 6 && std::abs(pixel.blue() - 204) <= 6;
+    }
+    return count;
+}
+
+int paintedPixels(const QImage& image)
+{
+    int painted = 0;
+    for (int y = 0; y < image.height(); y += 2)
+        for (int x = 0; x < image.width(); x += 2)
+            painted += image.pixel(x, y) != qRgb(255, 255, 255);
+    return painted;
+}
+
+constexpr std::array<Channel, SignalPlots::kChannelCount> kAllChannels = {
+    Channel::AccX, Channel::AccY, Channel::AccZ, Channel::AccNorm, Channel::GyrX, Channel::GyrY,
+    Channel::GyrZ, Channel::MagX, Channel::MagY, Channel::MagZ, Channel::Pressure, Channel::Height};
+constexpr std::array<Row, SignalPlots::kRowCount> kAllRows = {Row::Acceleration, Row::AngularRate, Row::MagneticField,
+                                                              Row::Pressure, Row::Height};
+
+}  // namespace
+
+class TestSignalPlots : public QObject {
+    Q_OBJECT
+private slots:
+    void recordedChannels_data()
+    {
+        QTest::addColumn<bool>("withMagnetometer");
+        QTest::addColumn<bool>("withPressure");
+        QTest::newRow("inertial only") << false << false;
+        QTest::newRow("with magnetometer") << true << false;
+        QTest::newRow("with pressure") << false << true;
+        QTest::newRow("with both") << true << true;
+    }
+
+    void plotsExactlyTheRecordingsSamples_data() { recordedChannels_data(); }
+    void plotsExactlyTheRecordingsSamples()
+    {
+        QFETCH(bool, withMagnetometer);
+        QFETCH(bool, withPressure);
+        const Walk walk = simulatedWalk(withMagnetometer, withPressure);
+        const std::vector<ImuSample>& samples = walk.recording->samples;
+        SignalPlots plots;
+        plots.setRecording(walk.recording);
+
+        for (const Channel channel : kAllChannels) {
+            const QCPGraph* graph = plots.graph(channel);
+            const bool magChannel = channel == Channel::MagX || channel == Channel::MagY || channel == Channel::MagZ;
+            const bool baroChannel = channel == Channel::Pressure || channel == Channel::Height;
+            const bool recorded = magChannel ? withMagnetometer : baroChannel ? withPressure : true;
+            if (!recorded) {
+                QVERIFY2(graph->data()->isEmpty(), qPrintable(graph->name()));
+                continue;
+            }
+            QCOMPARE(static_cast<std::size_t>(graph->dataCount()), samples.size());
+            QCOMPARE(graph->data()->constBegin()->key, samples.front().time_s);
+            QCOMPARE((graph->data()->constEnd() - 1)->key, samples.back().time_s);
+        }
+        const std::size_t middle = samples.size() / 2;
+        const auto at = [&](Channel channel) { return plots.graph(channel)->data()->at(static_cast<int>(middle))->value; };
+        QCOMPARE(at(Channel::AccY), samples[middle].acc_mps2.y());
+        QCOMPARE(at(Channel::AccNorm), samples[middle].acc_mps2.norm());
+        QCOMPARE(at(Channel::GyrZ), samples[middle].gyr_radps.z());
+        if (withMagnetometer)
+            QCOMPARE(at(Channel::MagX), samples[middle].mag.x());
+        if (withPressure)
+            QCOMPARE(at(Channel::Pressure), samples[middle].pressure_pa / 100.0);  // hPa
+    }
+
+    void showsMagneticAndPressureRowsOnlyWhenRecorded_data() { recordedChannels_data(); }
+    void showsMagneticAndPressureRowsOnlyWhenRecorded()
+    {
+        QFETCH(bool, withMagnetometer);
+        QFETCH(bool, withPressure);
+        SignalPlots plots;
+        plots.setRecording(simulatedWalk(withMagnetometer, withPressure).recording);
+        QVERIFY(showLaidOut(plots, 1400));  // the toolbar lays its widgets out when shown, if they fit
+        QVERIFY(plots.isRowShown(Row::Acceleration));
+        QVERIFY(plots.isRowShown(Row::AngularRate));
+        QCOMPARE(plots.isRowShown(Row::MagneticField), withMagnetometer);
+        QCOMPARE(plots.isRowShown(Row::Pressure), withPressure);
+        QCOMPARE(plots.isRowShown(Row::Height), withPressure);
+        QCOMPARE(plots.plot()->axisRectCount(), 2 + (withMagnetometer ? 1 : 0) + (withPressure ? 2 : 0));
+        // The toolbar offers only channels that exist.
+        QCOMPARE(plots.findChild<QCheckBox*>("showMagX")->isVisibleTo(&plots), withMagnetometer);
+        QCOMPARE(plots.findChild<QCheckBox*>("showHeight")->isVisibleTo(&plots), withPressure);
+        QVERIFY(plots.findChild<QCheckBox*>("showAccX")->isVisibleTo(&plots));
+    }
+
+    void barometricHeightIsRelativeToTheFirstSample()
+    {
+        const Walk walk = simulatedWalk(false, true, stairsPath(5, 0.17, 0.3));
+        SignalPlots plots;
+        plots.setRecording(walk.recording);
+        const QCPGraph* height = plots.graph(Channel::Height);
+        const double startHeight = walk.simulated.truePosition_m.front().z();
+        for (std::size_t k = 0; k < walk.recording->samples.size(); k += 37) {
+            const double expected = walk.simulated.truePosition_m[k].z() - startHeight;
+            QVERIFY2(std::abs(height->data()->at(static_cast<int>(k))->value - expected) < 1e-3,
+                     qPrintable(QString("sample %1: %2 m, truth %3 m")
+                                    .arg(k)
+                                    .arg(height->data()->at(static_cast<int>(k))->value)
+                                    .arg(expected)));
+        }
+        QVERIFY(height->data()->at(height->dataCount() - 1)->value > 0.8);  // five steps of 17 cm up
+    }
+
+    void shadesStanceOnlyWithAResult()
+    {
+        const Walk walk = simulatedWalk(true, true);
+        SignalPlots plots;
+        plots.setRecording(walk.recording);
+        const std::vector<double>& times = walk.result->time_s;
+        const std::vector<std::uint8_t>& stance = walk.result->flags.stance;
+        const std::size_t firstStance = std::find(stance.cbegin(), stance.cend(), 1) - stance.cbegin();
+        QVERIFY(firstStance < stance.size());
+        QVERIFY(!plots.isStanceShaded(times[firstStance]));
+
+        plots.setResult(walk.result);
+        std::size_t stanceSamples = 0;
+        for (std::size_t k = 0; k < times.size(); ++k) {
+            QCOMPARE(plots.isStanceShaded(times[k]), stance[k] != 0);
+            stanceSamples += stance[k];
+        }
+        QVERIFY(stanceSamples > times.size() / 4);  // the walk stands often enough to test anything
+        QCOMPARE(plots.plot()->itemCount(), SignalPlots::kRowCount);  // cursor lines only: no item per phase
+
+        plots.setResult(nullptr);
+        QVERIFY(!plots.isStanceShaded(times[firstStance]));
+        plots.setResult(walk.result);
+        plots.setRecording(walk.recording);  // a new recording drops the old result's shading
+        QVERIFY(!plots.isStanceShaded(times[firstStance]));
+    }
+
+    void drawsStanceBandsInEveryRow()
+    {
+        const Walk walk = simulatedWalk(true, true);
+        SignalPlots plots;
+        plots.setRecording(walk.recording);
+        QVERIFY(showLaidOut(plots));
+        const double standing_s = 1.0;  // the simulated walk starts with two seconds at rest
+        const double swinging_s = walk.result->steps.at(1).stanceStart_s - 0.3;
+        QVERIFY(!plots.isStanceShaded(swinging_s));
+        for (const Row row : kAllRows)
+            QVERIFY(bandPixelsAt(plots, row, standing_s) <= 2);  // a line's antialiased edge may match
+
+        plots.setResult(walk.result);
+        for (const Row row : kAllRows) {
+            const int rowHeight = plots.axisRect(row)->height();
+            QVERIFY2(bandPixelsAt(plots, row, standing_s) > rowHeight / 2, qPrintable(QString::number(static_cast<int>(row))));
+            QVERIFY(bandPixelsAt(plots, row, swinging_s) <= 2);
+        }
+    }
+
+    void timeCursorRunsThroughEveryShownRow()
+    {
+        SignalPlots plots;
+        plots.setRecording(simulatedWalk(true, false).recording);
+        QVERIFY(!plots.cursorLine(Row::Acceleration)->visible());  // not placed yet
+        plots.setTimeCursor(12.5);
+        QCOMPARE(plots.timeCursor(), 12.5);
+        for (const Row row : kAllRows) {
+            QCOMPARE(plots.cursorLine(row)->visible(), plots.isRowShown(row));
+            QCOMPARE(plots.cursorLine(row)->point1->key(), 12.5);
+            QCOMPARE(plots.cursorLine(row)->point2->key(), 12.5);
+        }
+        QVERIFY(!plots.cursorLine(Row::Pressure)->visible());
+    }
+
+    void clickEmitsTimeCursorMoved()
+    {
+        SignalPlots plots;
+        plots.setRecording(simulatedWalk(false, false).recording);
+        QVERIFY(showLaidOut(plots));
+        QSignalSpy moved(&plots, &SignalPlots::timeCursorMoved);
+        const QCPAxisRect* rect = plots.axisRect(Row::AngularRate);
+        const double target_s = 7.3;
+        const QPoint pixel(static_cast<int>(std::lround(timeAxisOf(plots, Row::AngularRate)->coordToPixel(target_s))),
+                           rect->center().y());
+        QTest::mouseClick(plots.plot(), Qt::LeftButton, Qt::NoModifier, pixel);
+        QCOMPARE(moved.count(), 1);
+        const double secondsPerPixel = plots.timeRange().size() / rect->width();
+        const double clicked_s = moved.first().first().toDouble();
+        QVERIFY2(std::abs(clicked_s - target_s) <= secondsPerPixel, qPrintable(QString::number(clicked_s)));
+        QCOMPARE(plots.timeCursor(), clicked_s);
+        QCOMPARE(plots.cursorLine(Row::Acceleration)->point1->key(), clicked_s);
+
+        // A press and a release far apart is a drag, not a click.
+        QTest::mousePress(plots.plot(), Qt::LeftButton, Qt::NoModifier, pixel);
+        QTest::mouseRelease(plots.plot(), Qt::LeftButton, Qt::NoModifier, pixel + QPoint(60, 0));
+        QCOMPARE(moved.count(), 1);
+    }
+
+    void timeAxesOfAllRowsAreLinked()
+    {
+        SignalPlots plots;
+        plots.setRecording(simulatedWalk(true, true).recording);
+        QSignalSpy changed(&plots, &SignalPlots::timeRangeChanged);
+
+        timeAxisOf(plots, Row::Acceleration)->setRange(3.0, 7.0);  // what a drag or wheel in a row does
+        for (const Row row : kAllRows)
+            QCOMPARE(timeAxisOf(plots, row)->range(), QCPRange(3.0, 7.0));
+        QCOMPARE(changed.count(), 1);
+        QCOMPARE(changed.last().at(0).toDouble(), 3.0);
+        QCOMPARE(changed.last().at(1).toDouble(), 7.0);
+
+        plots.setTimeRange(4.0, 6.0);
+        for (const Row row : kAllRows)
+            QCOMPARE(timeAxisOf(plots, row)->range(), QCPRange(4.0, 6.0));
+        QCOMPARE(changed.count(), 2);
+        plots.setTimeRange(4.0, 6.0);  // no change, no signal: two linked widgets do not ping-pong
+        QCOMPARE(changed.count(), 2);
+    }
+
+    void wheelZoomsTheTimeAxisOnly()
+    {
+        SignalPlots plots;
+        plots.setRecording(simulatedWalk(false, false).recording);
+        QVERIFY(showLaidOut(plots));
+        const QCPRange timeBefore = plots.timeRange();
+        const QCPRange valuesBefore = plots.axisRect(Row::Acceleration)->axis(QCPAxis::atLeft)->range();
+        const QPointF centre = plots.axisRect(Row::Acceleration)->center();
+        QWheelEvent wheel(centre, plots.plot()->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(plots.plot(), &wheel);
+        QVERIFY(plots.timeRange().size() < 0.95 * timeBefore.size());
+        QCOMPARE(timeAxisOf(plots, Row::AngularRate)->range(), plots.timeRange());
+        QCOMPARE(plots.axisRect(Row::Acceleration)->axis(QCPAxis::atLeft)->range(), valuesBefore);
+    }
+
+    void keysZoomPanAndHomeShowsAll()
+    {
+        const Walk walk = simulatedWalk(false, false);
+        SignalPlots plots;
+        plots.setRecording(walk.recording);
+        const QCPRange all(walk.recording->samples.front().time_s, walk.recording->samples.back().time_s);
+        QCOMPARE(plots.timeRange(), all);
+
+        QTest::keyClick(&plots, Qt::Key_Plus);
+        QVERIFY(std::abs(plots.timeRange().size() - 0.8 * all.size()) < 1e-9);
+        QVERIFY(std::abs(plots.timeRange().center() - all.center()) < 1e-9);
+        const QCPRange zoomed = plots.timeRange();
+        QTest::keyClick(&plots, Qt::Key_Right);
+        QVERIFY(std::abs(plots.timeRange().lower - (zoomed.lower + 0.1 * zoomed.size())) < 1e-9);
+        QTest::keyClick(&plots, Qt::Key_Left);
+        QTest::keyClick(&plots, Qt::Key_Left);
+        QVERIFY(std::abs(plots.timeRange().lower - (zoomed.lower - 0.1 * zoomed.size())) < 1e-9);
+        QTest::keyClick(&plots, Qt::Key_Minus);
+        QVERIFY(std::abs(plots.timeRange().size() - all.size()) < 1e-9);
+        QTest::keyClick(&plots, Qt::Key_Home);
+        QCOMPARE(plots.timeRange(), all);
+        QCOMPARE(timeAxisOf(plots, Row::AngularRate)->range(), all);
+    }
+
+    void channelTogglesHideGraphsAndEmptyRows()
+    {
+        SignalPlots plots;
+        plots.setRecording(simulatedWalk(false, false).recording);
+        const QCPGraph* gyrY = plots.graph(Channel::GyrY);
+        QVERIFY(legendOf(plots, Row::AngularRate)->hasItemWithPlottable(gyrY));
+
+        plots.setChannelVisible(Channel::GyrY, false);
+        QVERIFY(!gyrY->visible());
+        QVERIFY(!plots.isChannelVisible(Channel::GyrY));
+        QVERIFY(plots.graph(Channel::GyrX)->visible());
+        QVERIFY(!plots.findChild<QCheckBox*>("showGyrY")->isChecked());
+        QVERIFY(!legendOf(plots, Row::AngularRate)->hasItemWithPlottable(gyrY));
+
+        plots.findChild<QCheckBox*>("showGyrY")->click();  // the toolbar switches it back on
+        QVERIFY(gyrY->visible());
+        QVERIFY(plots.isChannelVisible(Channel::GyrY));
+
+        for (const Channel channel : {Channel::AccX, Channel::AccY, Channel::AccZ, Channel::AccNorm})
+            plots.setChannelVisible(channel, false);
+        QVERIFY(!plots.isRowShown(Row::Acceleration));  // a row with nothing to show gives its space away
+        QCOMPARE(plots.plot()->axisRectCount(), 1);
+        QVERIFY(timeAxisOf(plots, Row::AngularRate)->tickLabels());
+        plots.setChannelVisible(Channel::AccNorm, true);
+        QVERIFY(plots.isRowShown(Row::Acceleration));
+        QCOMPARE(plots.plot()->axisRect(0), plots.axisRect(Row::Acceleration));  // back on top
+        QVERIFY(!timeAxisOf(plots, Row::Acceleration)->tickLabels());  // time labels only at the bottom
+    }
+
+    void rendersForTheReport()
+    {
+        const Walk walk = simulatedWalk(true, true);
+        SignalPlots plots;
+        plots.setRecording(walk.recording);
+        plots.setResult(walk.result);
+        QImage image(800, 600, QImage::Format_RGB32);
+        image.fill(Qt::white);
+        {
+            QPainter painter(&image);
+            plots.renderTo(painter, image.rect());
+        }
+        QVERIFY2(paintedPixels(image) > image.width() * image.height() / 4 / 20,
+                 qPrintable(QString::number(paintedPixels(image))));
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString pdf = dir.filePath("signals.pdf");
+        QVERIFY(plots.plot()->savePdf(pdf, 800, 600));
+        QVERIFY(QFileInfo(pdf).size() > 1000);
+    }
+
+    void emptyRecordingDoesNotCrash()
+    {
+        SignalPlots plots;
+        plots.setRecording(std::make_shared<const Recording>());
+        plots.setResult(std::make_shared<const Result>());
+        plots.setRecording(nullptr);
+        QTest::keyClick(&plots, Qt::Key_Home);
+        QVERIFY(!plots.grab().isNull());
+        QVERIFY(plots.graph(Channel::AccX)->data()->isEmpty());
+    }
+
+    /// Not a pass/fail check (machines differ): prints the time a 30-minute recording takes.
+    void halfHourRecordingTiming()
+    {
+        WalkSimulatorConfig config;
+        config.withPressure = true;
+        const double walkingSpeed_mps = config.strideLength_m / (config.stanceDuration_s + config.swingDuration_s);
+        const SimulatedWalk walk = simulateWalk(straightLinePath(30.0 * 60.0 * walkingSpeed_mps), config);
+        auto recording = std::make_shared<const Recording>(walk.recording);
+        auto result = std::make_shared<Result>();
+        for (const ImuSample& sample : recording->samples)
+            result->time_s.push_back(sample.time_s);
+        result->flags = detectStance(recording->samples, Parameters());
+
+        SignalPlots plots;
+        QVERIFY(showLaidOut(plots));  // a hidden plot may be laid out tiny and draw next to nothing
+        qInfo("plot area %dx%d px", plots.plot()->width(), plots.plot()->height());
+        QElapsedTimer timer;
+        timer.start();
+        plots.setRecording(recording);
+        plots.plot()->replot();
+        const qint64 recording_ms = timer.restart();
+        plots.setResult(result);
+        plots.plot()->replot();
+        const qint64 result_ms = timer.restart();
+        plots.setTimeRange(600.0, 660.0);
+        plots.plot()->replot();
+        const qint64 zoom_ms = timer.restart();
+        plots.setTimeCursor(630.0);
+        const qint64 cursor_ms = timer.elapsed();
+        qInfo("%zu samples (%.1f min): setRecording+replot %lld ms, setResult+replot %lld ms, "
+              "zoom+replot %lld ms, cursor %lld ms",
+              recording->samples.size(), recording->duration_s() / 60.0, static_cast<long long>(recording_ms),
+              static_cast<long long>(result_ms), static_cast<long long>(zoom_ms), static_cast<long long>(cursor_ms));
+        QVERIFY(recording->duration_s() >= 29.0 * 60.0);
+        QCOMPARE(static_cast<std::size_t>(plots.graph(Channel::Height)->dataCount()), recording->samples.size());
+    }
+};
+
+QTEST_MAIN(TestSignalPlots)
+#include "tst_signalplots.moc"

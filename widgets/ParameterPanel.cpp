@@ -1,0 +1,662 @@
+#include "ParameterPanel.h"
+
+#include "io/ParameterIo.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QCoreApplication>
+#include <QDoubleValidator>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFrame>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
+#include <QMap>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QStyle>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace footpath {
+
+namespace {
+
+constexpr int kPositionsPerDecade = 100;
+constexpr int kLinearSteps = 1000;
+constexpr int kDecadesBelowMaximum = 6;
+constexpr int kLogSignificantDigits = 3;
+
+int decimalExponent(double value)
+{
+    return static_cast<int>(std::floor(std::log10(std::abs(value))));
+}
+
+/// value rounded to a multiple of 10^exponent. Dividing by an exact power of ten (rather than
+/// multiplying by an inexact 10^-n) gives the double nearest the decimal, so 1e-4 stays 1e-4.
+double roundToDecimalExponent(double value, int exponent)
+{
+    if (exponent >= 0) {
+        const double quantum = std::pow(10.0, exponent);
+        return std::round(value / quantum) * quantum;
+    }
+    const double scale = std::pow(10.0, -exponent);
+    return std::round(value * scale) / scale;
+}
+
+double roundToSignificant(double value, int digits)
+{
+    return value == 0.0 ? 0.0 : roundToDecimalExponent(value, decimalExponent(value) - (digits - 1));
+}
+
+/// The lowest positive value of a logarithmic scale starting at 0 (see SliderScale).
+double lowestPositiveFor(double maximum, double defaultValue)
+{
+    const double lowest = std::pow(10.0, decimalExponent(maximum) - kDecadesBelowMaximum);
+    if (defaultValue > 0.0 && defaultValue < lowest)
+        return std::pow(10.0, decimalExponent(defaultValue));
+    return lowest;
+}
+
+QLocale numberLocale()
+{
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale;
+}
+
+QString formatValue(double value)
+{
+    return numberLocale().toString(value, 'g', 6);
+}
+
+/// Names, descriptions and groups come from core as plain text; translated here when a
+/// translation provides them under this context.
+QString fieldText(const char* text)
+{
+    return QCoreApplication::translate("footpath::ParameterFields", text);
+}
+
+QString displayUnit(const char* unit)
+{
+    return QString::fromUtf8(unit).replace(QStringLiteral("^2"), QStringLiteral("\u00b2"));
+}
+
+}  // namespace
+
+// --- SliderScale -------------------------------------------------------------------------------
+
+SliderScale SliderScale::forField(const ParameterField& field, double defaultValue)
+{
+    SliderScale scale;
+    scale.minimum_ = field.minimum;
+    scale.maximum_ = field.maximum;
+    const bool positiveRangeSpansDecades = field.minimum > 0.0 && field.maximum / field.minimum >= 100.0;
+    const bool smallValuesAboveZero =
+        field.minimum == 0.0 && field.maximum > 0.0 && defaultValue < field.maximum / 100.0;
+    if (!positiveRangeSpansDecades && !smallValuesAboveZero) {
+        scale.steps_ = kLinearSteps;
+        return scale;
+    }
+    scale.logarithmic_ = true;
+    scale.zeroStop_ = smallValuesAboveZero;
+    scale.lowestPositive_ =
+        positiveRangeSpansDecades ? field.minimum : lowestPositiveFor(field.maximum, defaultValue);
+    const double decades = std::log10(scale.maximum_ / scale.lowestPositive_);
+    scale.steps_ = std::max(1, static_cast<int>(std::lround(decades * kPositionsPerDecade)));
+    return scale;
+}
+
+int SliderScale::pageStep() const
+{
+    return logarithmic_ ? kPositionsPerDecade : steps_ / 10;
+}
+
+int SliderScale::toPosition(double value) const
+{
+    if (std::isnan(value))
+        return 0;
+    if (!logarithmic_) {
+        const double fraction = (value - minimum_) / (maximum_ - minimum_);
+        return std::clamp(static_cast<int>(std::lround(fraction * steps_)), 0, steps_);
+    }
+    if (zeroStop_ && value <= 0.0)
+        return 0;
+    const double clamped = std::clamp(value, lowestPositive_, maximum_);
+    const double fraction = std::log10(clamped / lowestPositive_) / std::log10(maximum_ / lowestPositive_);
+    return firstLogPosition() + static_cast<int>(std::lround(fraction * steps_));
+}
+
+double SliderScale::toValue(int position) const
+{
+    const int clamped = std::clamp(position, 0, maximumPosition());
+    return logarithmic_ ? logValue(clamped) : linearValue(clamped);
+}
+
+double SliderScale::linearValue(int position) const
+{
+    // The ends are exact so the range limits are always reachable.
+    if (position == 0)
+        return minimum_;
+    if (position == steps_)
+        return maximum_;
+    const double step = (maximum_ - minimum_) / steps_;
+    return roundToDecimalExponent(minimum_ + position * step, decimalExponent(step));
+}
+
+double SliderScale::logValue(int position) const
+{
+    if (position < firstLogPosition())
+        return 0.0;
+    if (position == maximumPosition())
+        return maximum_;
+    const double fraction = static_cast<double>(position - firstLogPosition()) / steps_;
+    return roundToSignificant(lowestPositive_ * std::pow(maximum_ / lowestPositive_, fraction),
+                              kLogSignificantDigits);
+}
+
+// --- ParameterPanel: construction ---------------------------------------------------------------
+
+ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent)
+{
+    for (const ParameterField& field : parameterFields()) {
+        FieldRow row;
+        row.field = &field;
+        if (field.kind == ParameterField::Kind::Real)
+            row.scale = SliderScale::forField(field, parameterValue(defaults_, field));
+        rows_.push_back(row);
+    }
+    editThrottle_.setSingleShot(true);
+    editThrottle_.setInterval(kEditInterval_ms);
+    connect(&editThrottle_, &QTimer::timeout, this, &ParameterPanel::flushPendingEdit);
+
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(createFieldSections());
+    // Never narrower than the fields: the horizontal scroll bar is off, so they would be clipped.
+    scroll->setMinimumWidth(scroll->widget()->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(createButtonBar());
+    problems_ = new QLabel;
+    problems_->setObjectName(QStringLiteral("problems"));
+    problems_->setWordWrap(true);
+    problems_->setStyleSheet(QStringLiteral("color: #b00020;"));
+    layout->addWidget(problems_);
+    layout->addWidget(scroll, 1);
+
+    setUndoStack(nullptr);
+    setParameters(defaults_);
+}
+
+ParameterPanel::~ParameterPanel() = default;
+
+QWidget* ParameterPanel::createButtonBar()
+{
+    auto* bar = new QWidget;
+    auto* layout = new QGridLayout(bar);
+    layout->setContentsMargins(0, 0, 0, 0);
+    undoButton_ = new QToolButton;
+    undoButton_->setObjectName(QStringLiteral("undo"));
+    redoButton_ = new QToolButton;
+    redoButton_->setObjectName(QStringLiteral("redo"));
+    auto* reset = new QPushButton(tr("Reset to defaults"));
+    reset->setObjectName(QStringLiteral("resetAll"));
+    reset->setToolTip(tr("Set every parameter back to its default value (one undo step)"));
+    auto* load = new QPushButton(tr("Load preset..."));
+    load->setObjectName(QStringLiteral("loadPreset"));
+    auto* save = new QPushButton(tr("Save preset..."));
+    save->setObjectName(QStringLiteral("savePreset"));
+    // Two rows so the panel stays usable in a narrow dock.
+    layout->addWidget(undoButton_, 0, 0);
+    layout->addWidget(redoButton_, 0, 1);
+    layout->addWidget(reset, 0, 2, 1, 2);
+    layout->addWidget(load, 1, 0, 1, 3);
+    layout->addWidget(save, 1, 3);
+    layout->setColumnStretch(2, 1);
+    layout->setColumnStretch(3, 1);
+    connect(reset, &QPushButton::clicked, this, &ParameterPanel::resetAll);
+    connect(load, &QPushButton::clicked, this, &ParameterPanel::chooseAndLoadPreset);
+    connect(save, &QPushButton::clicked, this, &ParameterPanel::chooseAndSavePreset);
+    return bar;
+}
+
+QWidget* ParameterPanel::createFieldSections()
+{
+    for (const FieldRow& row : rows_)
+        unitColumnWidth_ = std::max(unitColumnWidth_, fontMetrics().horizontalAdvance(displayUnit(row.field->unit)));
+    // Groups appear in the order of their first field; each gets one grid.
+    QStringList groupOrder;
+    QMap<QString, QGridLayout*> grids;
+    for (std::size_t index = 0; index < rows_.size(); ++index) {
+        const QString group = QString::fromUtf8(rows_[index].field->group);
+        if (!grids.contains(group)) {
+            groupOrder.append(group);
+            auto* grid = new QGridLayout;
+            grid->setColumnStretch(0, 1);
+            grid->setVerticalSpacing(2);
+            grids.insert(group, grid);
+        }
+        if (rows_[index].field->kind == ParameterField::Kind::Real)
+            addRealRow(grids.value(group), index);
+        else
+            addFlagRow(grids.value(group), index);
+    }
+    auto* container = new QWidget;
+    auto* layout = new QVBoxLayout(container);
+    layout->setContentsMargins(0, 0, 0, 0);
+    for (const QString& group : groupOrder) {
+        auto* content = new QWidget;
+        content->setLayout(grids.value(group));
+        layout->addWidget(createSection(fieldText(group.toUtf8().constData()), content));
+    }
+    layout->addStretch(1);
+    return container;
+}
+
+QWidget* ParameterPanel::createSection(const QString& title, QWidget* content)
+{
+    auto* header = new QToolButton;
+    header->setObjectName(QStringLiteral("section_") + title);
+    header->setText(title);
+    header->setCheckable(true);
+    header->setChecked(true);
+    header->setAutoRaise(true);
+    header->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    header->setArrowType(Qt::DownArrow);
+    header->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    QFont bold = header->font();
+    bold.setBold(true);
+    header->setFont(bold);
+
+    auto* frame = new QFrame;
+    frame->setFrameShape(QFrame::StyledPanel);
+    auto* frameLayout = new QVBoxLayout(frame);
+    frameLayout->setContentsMargins(6, 4, 6, 6);
+    frameLayout->addWidget(content);
+    connect(header, &QToolButton::toggled, frame, [header, frame](bool open) {
+        frame->setVisible(open);
+        header->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
+    });
+
+    auto* section = new QWidget;
+    auto* layout = new QVBoxLayout(section);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(header);
+    layout->addWidget(frame);
+    return section;
+}
+
+namespace {
+
+QString fieldToolTip(const ParameterField& field, double defaultValue)
+{
+    const QString unit = displayUnit(field.unit);
+    if (field.kind == ParameterField::Kind::Flag)
+        return QStringLiteral("<b>%1</b><br>%2").arg(QString::fromUtf8(field.name), fieldText(field.description));
+    return ParameterPanel::tr("<b>%1</b><br>%2<br>Range: %3 to %4 %5<br>Default: %6 %5")
+        .arg(QString::fromUtf8(field.name), fieldText(field.description), formatValue(field.minimum),
+             formatValue(field.maximum), unit, formatValue(defaultValue));
+}
+
+}  // namespace
+
+void ParameterPanel::addRealRow(QGridLayout* grid, std::size_t rowIndex)
+{
+    FieldRow& row = rows_[rowIndex];
+    const ParameterField& field = *row.field;
+    const QString name = QString::fromUtf8(field.name);
+    const QString toolTip = fieldToolTip(field, parameterValue(defaults_, field));
+
+    row.label = new QLabel(name);
+    row.label->setObjectName(QStringLiteral("label_") + name);
+    row.label->setToolTip(toolTip);
+    row.edit = new QLineEdit;
+    row.edit->setObjectName(QStringLiteral("value_") + name);
+    row.edit->setToolTip(toolTip);
+    row.edit->setAlignment(Qt::AlignRight);
+    auto* validator = new QDoubleValidator(row.edit);
+    validator->setNotation(QDoubleValidator::ScientificNotation);
+    validator->setLocale(numberLocale());
+    row.edit->setValidator(validator);
+    row.edit->setFixedWidth(row.edit->fontMetrics().horizontalAdvance(QStringLiteral("-0.000000e-00")));
+    auto* unit = new QLabel(displayUnit(field.unit));
+    unit->setMinimumWidth(unitColumnWidth_);  // the same in every section, so the fields line up
+    row.slider = new QSlider(Qt::Horizontal);
+    row.slider->setObjectName(QStringLiteral("slider_") + name);
+    row.slider->setToolTip(toolTip);
+    row.slider->setRange(0, row.scale.maximumPosition());
+    row.slider->setPageStep(row.scale.pageStep());
+    row.slider->setFocusPolicy(Qt::StrongFocus);
+    row.slider->installEventFilter(this);
+    row.reset = createResetButton(rowIndex);
+
+    const int gridRow = grid->rowCount();
+    grid->addWidget(row.label, gridRow, 0);
+    grid->addWidget(row.edit, gridRow, 1);
+    grid->addWidget(unit, gridRow, 2);
+    grid->addWidget(row.reset, gridRow, 3);
+    grid->addWidget(row.slider, gridRow + 1, 0, 1, 3);
+    grid->setRowMinimumHeight(gridRow + 2, 6);  // air between fields
+
+    connect(row.slider, &QSlider::valueChanged, this, [this, rowIndex](int position) { onSliderMoved(rowIndex, position); });
+    connect(row.slider, &QSlider::sliderReleased, this, &ParameterPanel::flushPendingEdit);
+    connect(row.edit, &QLineEdit::editingFinished, this, [this, rowIndex] { onValueTyped(rowIndex); });
+}
+
+void ParameterPanel::addFlagRow(QGridLayout* grid, std::size_t rowIndex)
+{
+    FieldRow& row = rows_[rowIndex];
+    const ParameterField& field = *row.field;
+    const QString name = QString::fromUtf8(field.name);
+    row.check = new QCheckBox(name);
+    row.check->setObjectName(QStringLiteral("check_") + name);
+    row.check->setToolTip(fieldToolTip(field, parameterValue(defaults_, field)));
+    // The description on its own wrapped line: beside the name it would widen the whole panel.
+    auto* description = new QLabel(fieldText(field.description));
+    description->setWordWrap(true);
+    description->setForegroundRole(QPalette::PlaceholderText);
+    description->setIndent(row.check->style()->pixelMetric(QStyle::PM_IndicatorWidth) + 6);
+    row.reset = createResetButton(rowIndex);
+    const int gridRow = grid->rowCount();
+    grid->addWidget(row.check, gridRow, 0, 1, 3);
+    grid->addWidget(row.reset, gridRow, 3);
+    grid->addWidget(description, gridRow + 1, 0, 1, 3);
+    grid->setRowMinimumHeight(gridRow + 2, 6);
+    connect(row.check, &QCheckBox::toggled, this, [this, rowIndex](bool checked) { onFlagToggled(rowIndex, checked); });
+}
+
+QToolButton* ParameterPanel::createResetButton(std::size_t rowIndex)
+{
+    const ParameterField& field = *rows_[rowIndex].field;
+    auto* button = new QToolButton;
+    button->setObjectName(QStringLiteral("reset_") + QString::fromUtf8(field.name));
+    button->setIcon(style()->standardIcon(QStyle::SP_DialogResetButton));
+    button->setAutoRaise(true);
+    button->setToolTip(tr("Back to the default (%1)").arg(formatValue(parameterValue(defaults_, field))));
+    // Hidden while the value is the default, but its space is kept so the rows do not jump.
+    QSizePolicy policy = button->sizePolicy();
+    policy.setRetainSizeWhenHidden(true);
+    button->setSizePolicy(policy);
+    connect(button, &QToolButton::clicked, this, [this, rowIndex] { resetField(rowIndex); });
+    return button;
+}
+
+// --- Showing values ------------------------------------------------------------------------------
+
+void ParameterPanel::setParameters(const Parameters& params)
+{
+    const Parameters shown = current_;
+    current_ = params;
+    for (FieldRow& row : rows_) {
+        if (row.slider && row.slider->isSliderDown())
+            current_.*row.field->real = shown.*row.field->real;  // the user's drag wins
+        showValue(row);
+    }
+    showProblems();
+}
+
+void ParameterPanel::showProblems()
+{
+    // Each field is kept in its range, but combinations (C1's lower bound above its upper one)
+    // can still be invalid: say so here rather than only in the failed estimate.
+    const std::vector<std::string> problems = current_.validate();
+    problems_->setText(problems.empty() ? QString() : QString::fromStdString(problems.front()));
+    problems_->setVisible(!problems.empty());
+}
+
+void ParameterPanel::showValue(FieldRow& row)
+{
+    const double value = parameterValue(current_, *row.field);
+    if (row.check) {
+        const QSignalBlocker blocker(row.check);
+        row.check->setChecked(value != 0.0);
+    }
+    if (row.slider && !row.slider->isSliderDown()) {
+        const QSignalBlocker blocker(row.slider);
+        row.slider->setValue(row.scale.toPosition(value));
+    }
+    const bool beingTyped = row.edit && row.edit->hasFocus() && row.edit->isModified();
+    if (row.edit && !beingTyped)
+        row.edit->setText(formatValue(value));
+    showModified(row);
+}
+
+void ParameterPanel::showModified(FieldRow& row)
+{
+    const bool modified = parameterValue(current_, *row.field) != parameterValue(defaults_, *row.field);
+    QWidget* nameWidget = row.check ? static_cast<QWidget*>(row.check) : row.label;
+    QFont font = nameWidget->font();
+    font.setBold(modified);
+    nameWidget->setFont(font);
+    row.reset->setVisible(modified);
+}
+
+// --- User edits ----------------------------------------------------------------------------------
+
+void ParameterPanel::onSliderMoved(std::size_t rowIndex, int position)
+{
+    FieldRow& row = rows_[rowIndex];
+    const double value = row.scale.toValue(position);
+    storeValue(row, value);
+    row.edit->setText(formatValue(value));
+    showModified(row);
+    emitThrottled(QString::fromUtf8(row.field->name), value);
+}
+
+void ParameterPanel::onValueTyped(std::size_t rowIndex)
+{
+    FieldRow& row = rows_[rowIndex];
+    if (!row.edit->isModified())
+        return;  // focus left without a change: nothing to report
+    row.edit->setModified(false);
+    bool ok = false;
+    const double typed = numberLocale().toDouble(row.edit->text(), &ok);
+    const double previous = parameterValue(current_, *row.field);
+    // Out-of-range numbers are pulled to the nearest limit rather than sent on to fail the estimate.
+    const double value = ok ? std::clamp(typed, row.field->minimum, row.field->maximum) : previous;
+    storeValue(row, value);
+    showValue(row);
+    if (value != previous) {
+        flushPendingEdit();
+        emitNow(QString::fromUtf8(row.field->name), value);
+    }
+}
+
+void ParameterPanel::onFlagToggled(std::size_t rowIndex, bool checked)
+{
+    FieldRow& row = rows_[rowIndex];
+    storeValue(row, checked ? 1.0 : 0.0);
+    showModified(row);
+    flushPendingEdit();
+    emitNow(QString::fromUtf8(row.field->name), checked ? 1.0 : 0.0);
+}
+
+void ParameterPanel::resetField(std::size_t rowIndex)
+{
+    FieldRow& row = rows_[rowIndex];
+    const double value = parameterValue(defaults_, *row.field);
+    storeValue(row, value);
+    showValue(row);
+    flushPendingEdit();
+    emitNow(QString::fromUtf8(row.field->name), value);
+}
+
+void ParameterPanel::storeValue(const FieldRow& row, double value)
+{
+    if (row.field->kind == ParameterField::Kind::Flag)
+        current_.*row.field->flag = value != 0.0;
+    else
+        current_.*row.field->real = value;
+    showProblems();
+}
+
+// --- Emitting: a dragged slider reports at most every kEditInterval_ms, and always its last value.
+
+void ParameterPanel::emitThrottled(const QString& name, double value)
+{
+    if (hasPendingEdit_ && pendingName_ != name)
+        flushPendingEdit();
+    if (editThrottle_.isActive()) {
+        hasPendingEdit_ = true;
+        pendingName_ = name;
+        pendingValue_ = value;
+        return;
+    }
+    emitNow(name, value);
+}
+
+void ParameterPanel::flushPendingEdit()
+{
+    if (!hasPendingEdit_)
+        return;
+    hasPendingEdit_ = false;
+    emitNow(pendingName_, pendingValue_);
+}
+
+void ParameterPanel::emitNow(const QString& name, double value)
+{
+    editThrottle_.start();
+    emit parameterEdited(name, value);
+}
+
+// --- Whole sets: reset and presets ---------------------------------------------------------------
+
+void ParameterPanel::resetAll()
+{
+    hasPendingEdit_ = false;  // superseded by the reset
+    setParameters(defaults_);
+    emit parametersReplaced(defaults_, tr("Reset parameters to defaults"));
+}
+
+bool ParameterPanel::savePreset(const QString& path)
+{
+    const std::string error = saveParameters(path.toStdString(), current_);
+    presetError_ = QString::fromStdString(error);
+    return error.empty();
+}
+
+bool ParameterPanel::loadPreset(const QString& path)
+{
+    Parameters loaded = current_;
+    if (const std::string error = loadParameters(path.toStdString(), loaded); !error.empty()) {
+        presetError_ = QString::fromStdString(error);
+        return false;
+    }
+    if (const std::vector<std::string> problems = loaded.validate(); !problems.empty()) {
+        presetError_ = tr("%1 sets values the estimate cannot use: %2")
+                           .arg(path, QString::fromStdString(problems.front()));
+        return false;
+    }
+    presetError_.clear();
+    hasPendingEdit_ = false;
+    setParameters(loaded);
+    emit parametersReplaced(loaded, tr("Load preset %1").arg(QFileInfo(path).fileName()));
+    return true;
+}
+
+void ParameterPanel::chooseAndLoadPreset()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load parameter preset"), lastPresetDir_,
+                                                      tr("Parameter presets (*.json);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    lastPresetDir_ = QFileInfo(path).absolutePath();
+    if (!loadPreset(path))
+        QMessageBox::warning(this, tr("Load preset"), tr("The preset was not loaded.\n\n%1").arg(presetError_));
+}
+
+void ParameterPanel::chooseAndSavePreset()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save parameter preset"), lastPresetDir_,
+                                                tr("Parameter presets (*.json)"));
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".json");
+    lastPresetDir_ = QFileInfo(path).absolutePath();
+    if (!savePreset(path))
+        QMessageBox::warning(this, tr("Save preset"), tr("The preset was not saved.\n\n%1").arg(presetError_));
+}
+
+// --- Undo/Redo ---------------------------------------------------------------------------------
+
+void ParameterPanel::setUndoStack(QUndoStack* stack)
+{
+    delete undoAction_;
+    delete redoAction_;
+    if (stack) {
+        undoAction_ = stack->createUndoAction(this, tr("Undo"));
+        redoAction_ = stack->createRedoAction(this, tr("Redo"));
+    } else {
+        undoAction_ = new QAction(tr("Undo"), this);
+        redoAction_ = new QAction(tr("Redo"), this);
+        undoAction_->setEnabled(false);
+        redoAction_->setEnabled(false);
+    }
+    undoAction_->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo"), style()->standardIcon(QStyle::SP_ArrowBack)));
+    redoAction_->setIcon(QIcon::fromTheme(QStringLiteral("edit-redo"), style()->standardIcon(QStyle::SP_ArrowForward)));
+    // No shortcut on the actions: the main window's Edit menu binds the same keys, and two actions
+    // with one shortcut cancel each other out (Qt reports them ambiguous). event() handles the keys.
+    undoButton_->setDefaultAction(undoAction_);
+    redoButton_->setDefaultAction(redoAction_);
+}
+
+bool ParameterPanel::event(QEvent* event)
+{
+    // Claiming Undo/Redo before the shortcut map sees them makes them work while the focus is in
+    // the panel, whether or not the window has its own Undo. A line edit claims them first for
+    // its own text, as users expect.
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo)) {
+            event->accept();
+            return true;
+        }
+    }
+    return QWidget::event(event);
+}
+
+void ParameterPanel::keyPressEvent(QKeyEvent* event)
+{
+    QAction* action = event->matches(QKeySequence::Undo)   ? undoAction_
+                      : event->matches(QKeySequence::Redo) ? redoAction_
+                                                           : nullptr;
+    if (!action) {
+        QWidget::keyPressEvent(event);
+        return;
+    }
+    if (action->isEnabled())
+        action->trigger();
+    event->accept();
+}
+
+bool ParameterPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    // A wheel over a slider the user has not clicked scrolls the panel instead: otherwise scrolling
+    // through the list silently changes whichever parameter passes under the pointer.
+    if (event->type() == QEvent::Wheel) {
+        if (auto* slider = qobject_cast<QSlider*>(watched); slider && !slider->hasFocus()) {
+            event->ignore();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+}  // namespace footpath

@@ -1,0 +1,435 @@
+#include "ReportWriter.h"
+
+#include "SignalPlots.h"
+#include "StanceFlagsPlot.h"
+#include "SummaryPanel.h"
+#include "TrajectoryView2D.h"
+#include "TrajectoryView3D.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFileInfo>
+#include <QPdfWriter>
+#include <QPicture>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace footpath {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("ReportWriter", text);
+}
+
+QString number(double value, int decimals)
+{
+    return std::isfinite(value) ? QString::number(value, 'f', decimals) : QStringLiteral("–");
+}
+
+/// Lays text, tables and figures out down the pages of a QPdfWriter. Coordinates are in the
+/// writer's device units; sizes are given in millimetres and converted once.
+class PageComposer {
+public:
+    PageComposer(QPdfWriter& writer, QCPPainter& painter) : writer_(writer), painter_(painter)
+    {
+        unitsPerMm_ = writer.resolution() / 25.4;
+        page_ = QRectF(QPointF(0, 0), QSizeF(writer.width(), writer.height()));
+        y_ = 0.0;
+    }
+
+    double mm(double millimetres) const { return millimetres * unitsPerMm_; }
+    double width() const { return page_.width(); }
+
+    void newPage()
+    {
+        writer_.newPage();
+        y_ = 0.0;
+    }
+
+    /// Starts a new page when less than `height` is left.
+    void ensureRoom(double height)
+    {
+        if (y_ + height > page_.height())
+            newPage();
+    }
+
+    void heading(const QString& text, double sizePt = 13.0)
+    {
+        ensureRoom(mm(12));
+        y_ += mm(3);
+        text_(text, sizePt, true);
+        painter_.setPen(QPen(Qt::black, mm(0.3)));
+        painter_.drawLine(QPointF(0, y_), QPointF(width(), y_));
+        y_ += mm(2);
+    }
+
+    void paragraph(const QString& text, double sizePt = 9.0, bool bold = false) { text_(text, sizePt, bold); }
+
+    /// Rows of cells; column widths as fractions of the page width. Bold cells start with '*'.
+    void table(const QList<QStringList>& rows, const QList<double>& widths, double sizePt = 8.5, bool header = true)
+    {
+        QFont font = painter_.font();
+        font.setPointSizeF(sizePt);
+        const double rowHeight = QFontMetricsF(font, &writer_).height() * 1.35;
+        for (int r = 0; r < rows.size(); ++r) {
+            if (y_ + rowHeight > page_.height()) {
+                newPage();
+                if (header && r > 0)
+                    drawRow(rows.first(), widths, font, rowHeight, true);
+            }
+            drawRow(rows[r], widths, font, rowHeight, header && r == 0);
+        }
+        y_ += mm(2);
+    }
+
+    /// A figure of the given height with a caption; draw() paints into the rectangle it is given.
+    void figure(const QString& caption, double height, const std::function<void(const QRectF&)>& draw)
+    {
+        ensureRoom(height + mm(8));
+        const QRectF target(0, y_, width(), height);
+        painter_.save();
+        draw(target);
+        painter_.restore();
+        y_ += height + mm(1);
+        text_(caption, 8.0, false, true);
+        y_ += mm(3);
+    }
+
+private:
+    void text_(const QString& text, double sizePt, bool bold, bool italic = false)
+    {
+        QFont font = painter_.font();
+        font.setPointSizeF(sizePt);
+        font.setBold(bold);
+        font.setItalic(italic);
+        painter_.setFont(font);
+        painter_.setPen(Qt::black);
+        const QRectF bounds = painter_.boundingRect(QRectF(0, y_, width(), page_.height()), Qt::TextWordWrap, text);
+        ensureRoom(bounds.height());
+        painter_.drawText(QRectF(0, y_, width(), bounds.height()), Qt::TextWordWrap, text);
+        y_ += bounds.height() + mm(1);
+    }
+
+    void drawRow(const QStringList& cells, const QList<double>& widths, QFont font, double rowHeight, bool header)
+    {
+        double x = 0.0;
+        if (header) {
+            painter_.fillRect(QRectF(0, y_, width(), rowHeight), QColor(225, 225, 225));
+        }
+        for (int c = 0; c < cells.size() && c < widths.size(); ++c) {
+            QString cell = cells[c];
+            const bool bold = header || cell.startsWith(QLatin1Char('*'));
+            if (cell.startsWith(QLatin1Char('*')))
+                cell.remove(0, 1);
+            font.setBold(bold);
+            painter_.setFont(font);
+            painter_.setPen(Qt::black);
+            const double w = widths[c] * width();
+            painter_.drawText(QRectF(x + mm(1), y_, w - mm(2), rowHeight), Qt::AlignVCenter | Qt::AlignLeft,
+                              painter_.fontMetrics().elidedText(cell, Qt::ElideRight, int(w - mm(2))));
+            x += w;
+        }
+        painter_.setPen(QPen(QColor(190, 190, 190), mm(0.15)));
+        painter_.drawLine(QPointF(0, y_ + rowHeight), QPointF(width(), y_ + rowHeight));
+        y_ += rowHeight;
+    }
+
+    QPdfWriter& writer_;
+    QCPPainter& painter_;
+    QRectF page_;
+    double unitsPerMm_ = 1.0;
+    double y_ = 0.0;
+};
+
+/// Records a drawing at screen resolution into a QPicture and replays it scaled into the target:
+/// still vectors and real text, and fonts keep their size relative to the figure (drawn straight
+/// onto the 300 dpi writer they would resolve at 300 dpi and come out twice too large).
+void drawScaled(QPainter& painter, const QRectF& target, int width, const std::function<void(QPainter&, QSize)>& draw)
+{
+    const QSize size(width, int(width * target.height() / target.width()));
+    QPicture picture;
+    {
+        QCPPainter recorder(&picture);
+        recorder.setMode(QCPPainter::pmVectorized);
+        recorder.setMode(QCPPainter::pmNoCaching);
+        draw(recorder, size);
+    }
+    // Replaying a QPicture already scales it from its own resolution to the device's.
+    const double replayScale = double(painter.device()->logicalDpiX()) / picture.logicalDpiX();
+    painter.translate(target.topLeft());
+    painter.scale(target.width() / size.width() / replayScale, target.height() / size.height() / replayScale);
+    painter.drawPicture(0, 0, picture);
+}
+
+void drawPlot(QPainter& painter, QCustomPlot* plot, const QRectF& target, int width = 760)
+{
+    drawScaled(painter, target, width, [plot](QPainter& recorder, QSize size) {
+        plot->toPainter(static_cast<QCPPainter*>(&recorder), size.width(), size.height());
+    });
+}
+
+/// One bar per value (per step), or a histogram when bins are given.
+void drawBars(QPainter& painter, const QRectF& target, const QVector<double>& keys, const QVector<double>& values,
+              const QString& xLabel, const QString& yLabel, double width, int logicalWidth = 760)
+{
+    QCustomPlot plot;
+    auto* bars = new QCPBars(plot.xAxis, plot.yAxis);
+    bars->setData(keys, values, true);
+    bars->setWidth(width);
+    bars->setPen(QPen(Qt::black, 0.8));
+    bars->setBrush(QColor(150, 170, 200));
+    plot.xAxis->setLabel(xLabel);
+    plot.yAxis->setLabel(yLabel);
+    plot.rescaleAxes();
+    plot.xAxis->scaleRange(1.05);
+    plot.yAxis->setRangeLower(0.0);
+    plot.yAxis->setRangeUpper(plot.yAxis->range().upper * 1.1);
+    drawPlot(painter, &plot, target, logicalWidth);
+}
+
+/// Equal-width bins over the values' range.
+std::pair<QVector<double>, QVector<double>> histogram(const std::vector<double>& values, int bins)
+{
+    QVector<double> centres, counts;
+    if (values.empty())
+        return {centres, counts};
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    const double width = std::max((*hi - *lo) / bins, 1e-6);
+    counts.fill(0.0, bins);
+    for (double v : values)
+        counts[std::min(bins - 1, int((v - *lo) / width))] += 1.0;
+    for (int b = 0; b < bins; ++b)
+        centres << *lo + (b + 0.5) * width;
+    return {centres, counts};
+}
+
+QList<QStringList> summaryRows(const GaitStatistics& g, const Summary& s)
+{
+    QList<QStringList> rows{{tr("Figure"), tr("Value")}};
+    rows << QStringList{tr("Path length (between stances)"), tr("%1 m").arg(number(g.pathLength_m, 2))}
+         << QStringList{tr("Steps (strides of this foot)"), QString::number(s.steps)}
+         << QStringList{tr("Cadence, both feet"), tr("%1 steps/min").arg(number(g.cadence_stepsPerMin, 1))}
+         << QStringList{tr("Mean stride length"),
+                        tr("%1 m (sd %2 m)").arg(number(g.meanStrideLength_m, 3), number(g.strideLengthStd_m, 3))}
+         << QStringList{tr("Mean stride duration"), tr("%1 s").arg(number(g.meanStrideDuration_s, 3))}
+         << QStringList{tr("Mean stance duration"), tr("%1 s").arg(number(g.meanStanceDuration_s, 3))}
+         << QStringList{tr("End-to-start distance"),
+                        tr("%1 m = %2 % of the path").arg(number(s.endToStart_m, 3), number(s.endToStartPct, 2))};
+    if (g.armse)
+        rows << QStringList{tr("ARMSE 2D / 3D against the reference"),
+                            tr("%1 m / %2 m").arg(number(g.armse->armse2d_m, 3), number(g.armse->armse3d_m, 3))};
+    if (g.loopClosure)
+        rows << QStringList{tr("Loop closure (DBSE)"), tr("%1 m = %2 %").arg(number(g.loopClosure->dbse_m, 3),
+                                                                           number(g.loopClosure->dbsePct, 2))};
+    if (g.distanceError)
+        rows << QStringList{tr("Distance error"),
+                            tr("%1 m = %2 % of %3 m").arg(number(g.distanceError->error_m, 3),
+                                                         number(g.distanceError->errorPct, 2),
+                                                         number(g.distanceError->reference_m, 2))};
+    if (g.stanceScore)
+        rows << QStringList{tr("Stance detection precision / recall / F1"),
+                            QStringLiteral("%1 / %2 / %3").arg(number(g.stanceScore->precision, 3),
+                                                               number(g.stanceScore->recall, 3),
+                                                               number(g.stanceScore->f1, 3))};
+    return rows;
+}
+
+QList<QStringList> parameterRows(const Parameters& params)
+{
+    const Parameters defaults;
+    QList<QStringList> rows{{tr("Parameter"), tr("Value"), tr("Default"), tr("Unit"), tr("Meaning")}};
+    for (const ParameterField& field : parameterFields()) {
+        const double value = parameterValue(params, field), standard = parameterValue(defaults, field);
+        const auto text = [&field](double v) {
+            return field.kind == ParameterField::Kind::Flag ? (v != 0.0 ? tr("on") : tr("off")) : QString::number(v, 'g', 6);
+        };
+        const QString mark = value != standard ? QStringLiteral("*") : QString();
+        rows << QStringList{mark + QString::fromUtf8(field.name), mark + text(value), text(standard),
+                            QString::fromUtf8(field.unit), QString::fromUtf8(field.description)};
+    }
+    return rows;
+}
+
+QList<QStringList> stepRows(const Result& result)
+{
+    QList<QStringList> rows{{tr("Step"), tr("Stance from (s)"), tr("to (s)"), tr("Stride (m)"), tr("Stride (s)"),
+                             tr("x (m)"), tr("y (m)"), tr("z (m)")}};
+    for (std::size_t i = 0; i < result.steps.size(); ++i) {
+        const Step& s = result.steps[i];
+        rows << QStringList{QString::number(i), number(s.stanceStart_s, 2), number(s.stanceEnd_s, 2),
+                            number(s.strideLength_m, 3), number(s.strideDuration_s, 3), number(s.position_m.x(), 3),
+                            number(s.position_m.y(), 3), number(s.position_m.z(), 3)};
+    }
+    return rows;
+}
+
+QList<QStringList> headerRows(const ReportContent& c)
+{
+    const Recording& recording = *c.recording;
+    return {{tr("Recording"), QFileInfo(c.recordingPath).fileName()},
+            {tr("Format"), QString::fromStdString(c.info.format)},
+            {tr("Sensor / device"), c.device.isEmpty() ? tr("not stated in the file") : c.device},
+            {tr("Duration"), tr("%1 s, %2 samples").arg(number(recording.duration_s(), 1)).arg(recording.samples.size())},
+            {tr("Sample rate"), tr("%1 Hz").arg(number(c.info.rate_hz, 1))},
+            {tr("Parameters"), c.parameterSource},
+            {tr("Method set"), methodSetName(c.parameters)},
+            {tr("Report made"), QDateTime::currentDateTime().toString(Qt::ISODate)},
+            {tr("Software"), tr("Footpath %1").arg(QCoreApplication::applicationVersion())}};
+}
+
+/// A window of about ten seconds in the middle of the walk: enough strides to read the lanes.
+std::pair<double, double> representativeWindow(const Result& result)
+{
+    const double from = result.time_s.front(), to = result.time_s.back();
+    const double middle = 0.5 * (from + to), half = std::min(5.0, 0.5 * (to - from));
+    return {middle - half, middle + half};
+}
+
+void drawHeightOverTime(QPainter& painter, const Result& result, const QRectF& target)
+{
+    QCustomPlot plot;
+    QVector<double> t, z;
+    for (std::size_t k = 0; k < result.time_s.size(); ++k) {
+        t << result.time_s[k];
+        z << result.position_m[k].z();
+    }
+    plot.addGraph()->setData(t, z, true);
+    plot.graph(0)->setPen(QPen(Qt::black, 1.2));
+    plot.xAxis->setLabel(tr("time (s)"));
+    plot.yAxis->setLabel(tr("height z (m)"));
+    plot.rescaleAxes();
+    plot.yAxis->scaleRange(1.1);
+    drawPlot(painter, &plot, target);
+}
+
+void drawGaitFigures(PageComposer& page, QPainter& painter, const GaitStatistics& g)
+{
+    QVector<double> strideSteps, strides, stanceSteps, stances;
+    for (std::size_t i = 0; i < g.strideLengths_m.size(); ++i) {
+        strideSteps << double(i + 1);
+        strides << g.strideLengths_m[i];
+    }
+    for (std::size_t i = 0; i < g.stanceDurations_s.size(); ++i) {
+        stanceSteps << double(i);
+        stances << g.stanceDurations_s[i];
+    }
+    page.figure(tr("Figure 6. Stride length per step."), page.mm(50), [&](const QRectF& r) {
+        drawBars(painter, r, strideSteps, strides, tr("step"), tr("stride length (m)"), 0.7);
+    });
+    page.figure(tr("Figure 7. Stance duration per step."), page.mm(50), [&](const QRectF& r) {
+        drawBars(painter, r, stanceSteps, stances, tr("stance phase"), tr("stance duration (s)"), 0.7);
+    });
+    const auto [strideBins, strideCounts] = histogram(g.strideLengths_m, 12);
+    const auto [stanceBins, stanceCounts] = histogram(g.stanceDurations_s, 12);
+    page.figure(tr("Figure 8. Histograms of stride length (left) and stance duration (right)."), page.mm(50),
+                [&](const QRectF& r) {
+                    const QRectF left(r.left(), r.top(), r.width() / 2 - page.mm(2), r.height());
+                    const QRectF right(r.center().x() + page.mm(2), r.top(), r.width() / 2 - page.mm(2), r.height());
+                    const double strideWidth = strideBins.size() > 1 ? strideBins[1] - strideBins[0] : 0.1;
+                    const double stanceWidth = stanceBins.size() > 1 ? stanceBins[1] - stanceBins[0] : 0.1;
+                    painter.save();
+                    drawBars(painter, left, strideBins, strideCounts, tr("stride length (m)"), tr("strides"),
+                             strideWidth * 0.9, 380);
+                    painter.restore();
+                    drawBars(painter, right, stanceBins, stanceCounts, tr("stance duration (s)"), tr("stances"),
+                             stanceWidth * 0.9, 380);
+                });
+}
+
+void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
+{
+    const Result& result = *c.result;
+    TrajectoryView2D view2D;
+    view2D.resize(900, 640);
+    view2D.setReference(c.recording->reference.positions_m);
+    view2D.setResult(c.result);
+    page.figure(tr("Figure 1. The foot path seen from above (stance positions as dots; reference dashed when present)."),
+                page.mm(110), [&](const QRectF& r) { drawPlot(painter, view2D.plot(), r); });
+    page.figure(tr("Figure 2. Height of the foot over time."), page.mm(50),
+                [&](const QRectF& r) { drawHeightOverTime(painter, result, r); });
+    TrajectoryView3D view3D;
+    view3D.resize(900, 600);
+    view3D.setResult(c.result);
+    page.figure(tr("Figure 3. The path in 3D."), page.mm(100), [&](const QRectF& r) {
+        drawScaled(painter, r, 760, [&view3D](QPainter& recorder, QSize size) {
+            view3D.render(recorder, QRectF(QPointF(0, 0), QSizeF(size)));
+        });
+    });
+    SignalPlots signalPlots;
+    signalPlots.resize(900, 700);
+    signalPlots.setRecording(c.recording);
+    signalPlots.setResult(c.result);
+    page.figure(tr("Figure 4. Signals, stance shaded."), page.mm(120),
+                [&](const QRectF& r) { drawPlot(painter, signalPlots.plot(), r); });
+    StanceFlagsPlot flags;
+    flags.resize(900, 600);
+    flags.setRecording(c.recording);
+    flags.setParameters(c.parameters);
+    flags.setResult(c.result);
+    flags.setInputsVisible(true);
+    const auto [from, to] = representativeWindow(result);
+    flags.setTimeRange(from, to);
+    page.figure(tr("Figure 5. Stance detector from %1 s to %2 s: conditions C1, C2, C3, their combination C, the "
+                   "median-filtered stance, and the inputs with their thresholds.")
+                    .arg(number(from, 1), number(to, 1)),
+                page.mm(120), [&](const QRectF& r) { drawPlot(painter, flags.plot(), r); });
+    drawGaitFigures(page, painter, computeGaitStatistics(result, c.recording.get()));
+}
+
+}  // namespace
+
+QString methodSetName(const Parameters& params)
+{
+    QStringList methods;
+    if (params.use_zupt)
+        methods << QStringLiteral("ZUPT");
+    if (params.use_zaru)
+        methods << QStringLiteral("ZARU");
+    return methods.isEmpty() ? tr("none") : methods.join(QLatin1Char('+'));
+}
+
+QString writePdfReport(const ReportContent& content, const QString& path, QPageSize::PageSizeId pageSize)
+{
+    if (!content.recording || !content.result || content.result->time_s.empty())
+        return tr("nothing to report: no estimate yet");
+    QPdfWriter writer(path);
+    writer.setPageSize(QPageSize(pageSize));
+    writer.setPageMargins(QMarginsF(18, 16, 18, 16), QPageLayout::Millimeter);
+    writer.setResolution(300);
+    writer.setTitle(tr("Footpath report: %1").arg(QFileInfo(content.recordingPath).fileName()));
+    writer.setCreator(QStringLiteral("Footpath"));
+    QCPPainter painter;
+    if (!painter.begin(&writer))
+        return tr("%1: cannot write the PDF").arg(path);
+    painter.setMode(QCPPainter::pmVectorized);
+    painter.setMode(QCPPainter::pmNoCaching);
+    PageComposer page(writer, painter);
+    page.paragraph(tr("Footpath report"), 18.0, true);
+    page.paragraph(QFileInfo(content.recordingPath).fileName(), 11.0);
+    page.table(headerRows(content), {0.3, 0.7}, 9.0, false);
+    page.heading(tr("Summary"));
+    page.table(summaryRows(computeGaitStatistics(*content.result, content.recording.get()), content.result->summary),
+               {0.5, 0.5}, 9.0);
+    page.heading(tr("Figures"));
+    drawFigures(page, painter, content);
+    page.heading(tr("Parameters (* differs from the default)"));
+    page.table(parameterRows(content.parameters), {0.2, 0.12, 0.12, 0.1, 0.46}, 7.5);
+    page.heading(tr("Steps"));
+    page.table(stepRows(*content.result), {0.08, 0.14, 0.12, 0.13, 0.13, 0.13, 0.13, 0.14}, 7.5);
+    page.heading(tr("Import notes and warnings"));
+    for (const std::string& note : content.recording->reference.notes)
+        page.paragraph(QString::fromStdString(note));
+    for (const std::string& warning : content.recording->warnings)
+        page.paragraph(tr("Warning: %1").arg(QString::fromStdString(warning)));
+    if (content.recording->warnings.empty())
+        page.paragraph(tr("The import raised no warnings."));
+    painter.end();
+    return {};
+}
+
+}  // namespace footpath

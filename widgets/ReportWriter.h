@@ -1,0 +1,38 @@
+#pragma once
+
+#include "Recording.h"
+#include "Result.h"
+#include "io/Import.h"
+#include "nav/Parameters.h"
+
+#include <QPageSize>
+#include <QString>
+
+#include <memory>
+
+namespace footpath {
+
+/// Everything a report shows; the window and `footpath-cli report` fill it the same way.
+struct ReportContent {
+    QString recordingPath;
+    RecordingInfo info;
+    std::shared_ptr<const Recording> recording;
+    std::shared_ptr<const Result> result;
+    Parameters parameters;
+    QString parameterSource = QStringLiteral("defaults");  ///< "defaults" or the preset's path
+    QString device;                                      ///< sensor/device when known
+};
+
+/// Writes the PDF report: header, summary and evaluation figures, the figures as vector graphics
+/// (2D and 3D trajectory, height over time, signals with stance shading, the detector's lanes for
+/// a representative window, gait statistics), every parameter with the ones that differ from the
+/// defaults marked, the method set, the per-step table (paged) and the import warnings. Text is
+/// real text. Returns an error message, or empty on success. Needs a QApplication (the figures
+/// are the workspace's own widgets, drawn offscreen).
+QString writePdfReport(const ReportContent& content, const QString& path,
+                       QPageSize::PageSizeId pageSize = QPageSize::A4);
+
+/// "ZUPT+ZARU", as the method set of a results table.
+QString methodSetName(const Parameters& params);
+
+}  // namespace footpath

@@ -1,0 +1,577 @@
+#include "SignalPlots.h"
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QMetaEnum>
+#include <QPicture>
+#include <QToolBar>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace footpath {
+
+namespace {
+
+using Channel = SignalPlots::Channel;
+using Row = SignalPlots::Row;
+
+constexpr double kZoomInFactor = 0.8;  // +/- keys: a fifth of the visible time per press
+constexpr double kPanFraction = 0.1;   // Left/Right keys: a tenth of the visible time per press
+constexpr double kValueMargin = 1.1;   // value axes get 5 % air above and below the data
+const QString kStanceLayer = QStringLiteral("stance");
+const QString kCursorLayer = QStringLiteral("cursor");
+const QColor kStanceBrush(250, 200, 110, 90);  // light amber: a pale grey band on paper
+const QColor kCursorColour(170, 0, 0);
+
+struct ChannelInfo {
+    Row row;
+    const char* name;  // translated in the SignalPlots context
+    QColor colour;
+    Qt::PenStyle style;
+    double width;
+};
+
+// Colour and dash pattern both differ, so the rows still read on a black-and-white printout.
+// Dashed and dotted pens stay 1 px wide: wider ones go through QPainter's path stroker, which
+// takes seconds for half an hour of samples; wide solid pens take the fast-polyline path.
+const std::array<ChannelInfo, SignalPlots::kChannelCount>& channelInfos()
+{
+    static const QColor red(200, 40, 40), green(30, 130, 50), blue(30, 80, 190), black(20, 20, 20);
+    static const std::array<ChannelInfo, SignalPlots::kChannelCount> infos = {{
+        {Row::Acceleration, QT_TRANSLATE_NOOP("footpath::SignalPlots", "x"), red, Qt::SolidLine, 1.0},
+        {Row::Acceleration, QT_TRANSLATE_NOOP("footpath::SignalPlots", "y"), green, Qt::DashLine, 1.0},
+        {Row::Acceleration, QT_TRANSLATE_NOOP("footpath::SignalPlots", "z"), blue, Qt::DotLine, 1.0},
+        {Row::Acceleration, QT_TRANSLATE_NOOP("footpath::SignalPlots", "|a|"), black, Qt::SolidLine, 1.6},
+        {Row::AngularRate, QT_TRANSLATE_NOOP("footpath::SignalPlots", "x"), red, Qt::SolidLine, 1.0},
+        {Row::AngularRate, QT_TRANSLATE_NOOP("footpath::SignalPlots", "y"), green, Qt::DashLine, 1.0},
+        {Row::AngularRate, QT_TRANSLATE_NOOP("footpath::SignalPlots", "z"), blue, Qt::DotLine, 1.0},
+        {Row::MagneticField, QT_TRANSLATE_NOOP("footpath::SignalPlots", "x"), red, Qt::SolidLine, 1.0},
+        {Row::MagneticField, QT_TRANSLATE_NOOP("footpath::SignalPlots", "y"), green, Qt::DashLine, 1.0},
+        {Row::MagneticField, QT_TRANSLATE_NOOP("footpath::SignalPlots", "z"), blue, Qt::DotLine, 1.0},
+        {Row::Pressure, QT_TRANSLATE_NOOP("footpath::SignalPlots", "Pressure"), QColor(110, 40, 150), Qt::SolidLine, 1.2},
+        {Row::Height, QT_TRANSLATE_NOOP("footpath::SignalPlots", "Height"), QColor(0, 110, 120), Qt::SolidLine, 1.2},
+    }};
+    return infos;
+}
+
+struct RowInfo {
+    const char* title;      // toolbar group
+    const char* axisLabel;  // value axis, with the unit
+};
+
+constexpr std::array<RowInfo, SignalPlots::kRowCount> kRowInfos = {{
+    {QT_TRANSLATE_NOOP("footpath::SignalPlots", "Acceleration"), QT_TRANSLATE_NOOP("footpath::SignalPlots", "Acceleration\n(m/s²)")},
+    {QT_TRANSLATE_NOOP("footpath::SignalPlots", "Angular rate"), QT_TRANSLATE_NOOP("footpath::SignalPlots", "Angular rate\n(rad/s)")},
+    {QT_TRANSLATE_NOOP("footpath::SignalPlots", "Magnetic field"), QT_TRANSLATE_NOOP("footpath::SignalPlots", "Magnetic field\n(file units)")},
+    {QT_TRANSLATE_NOOP("footpath::SignalPlots", "Pressure"), QT_TRANSLATE_NOOP("footpath::SignalPlots", "Pressure\n(hPa)")},
+    {QT_TRANSLATE_NOOP("footpath::SignalPlots", "Height"), QT_TRANSLATE_NOOP("footpath::SignalPlots", "Baro. height\n(m)")},
+}};
+
+std::size_t slot(Channel channel) { return static_cast<std::size_t>(channel); }
+std::size_t slot(Row row) { return static_cast<std::size_t>(row); }
+
+/// Height above the 101325 Pa level in the standard atmosphere: the formula the walk simulator
+/// and barometer datasheets use, so differences of it are heights relative to a sample.
+double standardAtmosphereHeight_m(double pressure_pa)
+{
+    return (1.0 - std::pow(pressure_pa / 101325.0, 1.0 / 5.25588)) / 2.25577e-5;
+}
+
+double channelValue(Channel channel, const ImuSample& sample, double firstHeight_m)
+{
+    switch (channel) {
+    case Channel::AccX: return sample.acc_mps2.x();
+    case Channel::AccY: return sample.acc_mps2.y();
+    case Channel::AccZ: return sample.acc_mps2.z();
+    case Channel::AccNorm: return sample.acc_mps2.norm();
+    case Channel::GyrX: return sample.gyr_radps.x();
+    case Channel::GyrY: return sample.gyr_radps.y();
+    case Channel::GyrZ: return sample.gyr_radps.z();
+    case Channel::MagX: return sample.mag.x();
+    case Channel::MagY: return sample.mag.y();
+    case Channel::MagZ: return sample.mag.z();
+    case Channel::Pressure: return sample.pressure_pa / 100.0;  // hPa: four digits read better than six
+    case Channel::Height: return standardAtmosphereHeight_m(sample.pressure_pa) - firstHeight_m;
+    }
+    return 0.0;
+}
+
+/// Spans of consecutive set flags, each from its first sample to the sample after its last (as a
+/// step plot draws them), so a one-sample stance still has a width.
+std::vector<QCPRange> flaggedSpans(const std::vector<double>& times, const std::vector<std::uint8_t>& flags)
+{
+    std::vector<QCPRange> spans;
+    const std::size_t n = std::min(times.size(), flags.size());
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!flags[k] || (k > 0 && flags[k - 1]))
+            continue;
+        std::size_t end = k;
+        while (end < n && flags[end])
+            ++end;
+        // A run up to the last sample reaches one sample interval past it, like any other run.
+        const double lastInterval_s = n >= 2 ? times[n - 1] - times[n - 2] : 0.0;
+        spans.emplace_back(times[k], end < n ? times[end] : times[n - 1] + lastInterval_s);
+    }
+    return spans;
+}
+
+QCPAxis* timeAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atBottom); }
+/// The hidden right axis spans 0..1 whatever the signal's range: the cursor uses it to run through
+/// the row's full height.
+QCPAxis* unitAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atRight); }
+
+QCPLegend* addRowLegend(QCPAxisRect* rect)
+{
+    auto* legend = new QCPLegend;
+    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+    legend->setLayer(QStringLiteral("legend"));
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);  // one line: rows are short
+    legend->setIconSize(26, 10);
+    legend->setColumnSpacing(6);
+    legend->setBrush(QColor(255, 255, 255, 210));
+    legend->setBorderPen(QPen(QColor(180, 180, 180)));
+    QFont font = legend->font();
+    font.setPointSizeF(font.pointSizeF() * 0.85);
+    legend->setFont(font);
+    return legend;
+}
+
+QCPItemStraightLine* addCursorLine(QCustomPlot* plot, QCPAxisRect* rect)
+{
+    auto* line = new QCPItemStraightLine(plot);
+    line->setLayer(kCursorLayer);
+    line->setClipToAxisRect(true);  // the default only when the plot had an axis rect already
+    line->setClipAxisRect(rect);
+    line->setSelectable(false);
+    line->setPen(QPen(kCursorColour, 1.5));
+    line->point1->setAxes(timeAxis(rect), unitAxis(rect));
+    line->point2->setAxes(timeAxis(rect), unitAxis(rect));
+    line->point1->setCoords(0.0, 0.0);
+    line->point2->setCoords(0.0, 1.0);
+    line->setVisible(false);
+    return line;
+}
+
+}  // namespace
+
+/// Filled bands over time spans, the full height of a row. Drawn as pixel rectangles, merged where
+/// they touch: as a filled step curve (a QCPGraph with a brush) the stance phases of half an hour
+/// cost Qt's rasteriser about a second per row, since the polygon has thousands of edges.
+class SignalPlots::FlagBands : public QCPLayerable {
+public:
+    FlagBands(QCPAxisRect* rect, const QBrush& brush)
+        : QCPLayerable(rect->parentPlot(), QString(), rect), rect_(rect), brush_(brush)
+    {
+    }
+
+    void setSpans(std::vector<QCPRange> spans) { spans_ = std::move(spans); }
+    bool isEmpty() const { return spans_.empty(); }
+    bool contains(double time_s) const
+    {
+        const auto after = std::upper_bound(spans_.cbegin(), spans_.cend(), time_s,
+                                            [](double t, const QCPRange& span) { return t < span.lower; });
+        return after != spans_.cbegin() && time_s < (after - 1)->upper;
+    }
+
+protected:
+    void applyDefaultAntialiasingHint(QCPPainter* painter) const override { painter->setAntialiasing(false); }
+    QRect clipRect() const override { return rect_->rect(); }
+
+    void draw(QCPPainter* painter) override
+    {
+        const QCPAxis* axis = rect_->axis(QCPAxis::atBottom);
+        const QRect area = rect_->rect();
+        auto span = std::lower_bound(spans_.cbegin(), spans_.cend(), axis->range().lower,
+                                     [](const QCPRange& s, double t) { return s.upper < t; });
+        double left = 0.0, right = -1.0;  // the band being merged, in pixels; empty while right < left
+        for (; span != spans_.cend() && span->lower <= axis->range().upper; ++span) {
+            const double from = std::max(std::floor(axis->coordToPixel(span->lower)), area.left() - 1.0);
+            const double to = std::min(std::max(from + 1.0, std::ceil(axis->coordToPixel(span->upper))), area.right() + 1.0);
+            if (from <= right) {
+                right = std::max(right, to);
+                continue;
+            }
+            fillBand(painter, left, right);
+            left = from;
+            right = to;
+        }
+        fillBand(painter, left, right);
+    }
+
+private:
+    void fillBand(QCPPainter* painter, double left, double right) const
+    {
+        if (right > left)
+            painter->fillRect(QRectF(left, rect_->top(), right - left, rect_->height()), brush_);
+    }
+
+    QCPAxisRect* rect_;
+    QBrush brush_;
+    std::vector<QCPRange> spans_;  ///< sorted, disjoint
+};
+
+SignalPlots::SignalPlots(QWidget* parent)
+    : QWidget(parent), plot_(new QCustomPlot(this)), toolBar_(new QToolBar(tr("Channels"), this))
+{
+    channelVisible_.fill(true);
+    setFocusPolicy(Qt::StrongFocus);  // keys arrive here; the plot passes clicks' focus up
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(toolBar_);
+    layout->addWidget(plot_, 1);
+
+    plot_->setAutoAddPlottableToLegend(false);
+    plot_->setPlottingHint(QCP::phFastPolylines);  // solid pens wider than 1 px: segments, not a stroked path
+    plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    plot_->addLayer(kStanceLayer, plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
+    plot_->addLayer(kCursorLayer, plot_->layer(QStringLiteral("legend")), QCustomPlot::limBelow);
+    // Its own paint buffer: moving the cursor redraws one line per row, not 180k-sample graphs.
+    plot_->layer(kCursorLayer)->setMode(QCPLayer::lmBuffered);
+
+    createRows();
+    createGraphs();
+    createToolBar();
+    wireInteractions();
+    arrangeRows();
+}
+
+SignalPlots::~SignalPlots()
+{
+    // Rows taken out of the layout would outlive it as bare children of the plot, whose QObject
+    // clean-up runs after QCustomPlot's own; hand them back so it tears them down in its order.
+    for (RowParts& row : rows_) {
+        if (row.rect->layout() == nullptr)
+            plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, row.rect);
+    }
+}
+
+void SignalPlots::createRows()
+{
+    plot_->plotLayout()->clear();  // drops the default axis rect: the rows below replace it
+    plot_->plotLayout()->setRowSpacing(4);
+    auto* alignedMargins = new QCPMarginGroup(plot_);  // time axes line up although labels differ
+    for (std::size_t r = 0; r < kRowCount; ++r) {
+        auto* rect = new QCPAxisRect(plot_);
+        plot_->plotLayout()->addElement(static_cast<int>(r), 0, rect);  // arrangeRows() sorts
+        rect->setMarginGroup(QCP::msLeft | QCP::msRight, alignedMargins);
+        rect->setRangeDrag(Qt::Horizontal);
+        rect->setRangeZoom(Qt::Horizontal);
+        rect->setRangeDragAxes(timeAxis(rect), nullptr);
+        rect->setRangeZoomAxes(timeAxis(rect), nullptr);
+        rect->axis(QCPAxis::atLeft)->setLabel(tr(kRowInfos[r].axisLabel));
+        unitAxis(rect)->setRange(0.0, 1.0);
+        rows_[r].rect = rect;
+        rows_[r].legend = addRowLegend(rect);
+        rows_[r].cursor = addCursorLine(plot_, rect);
+        rows_[r].stance = new FlagBands(rect, kStanceBrush);
+        rows_[r].stance->setLayer(kStanceLayer);
+    }
+    stanceLegendEntry_ = plot_->addGraph(timeAxis(rows_.front().rect), unitAxis(rows_.front().rect));
+    stanceLegendEntry_->setName(tr("Stance"));
+    stanceLegendEntry_->setPen(Qt::NoPen);
+    stanceLegendEntry_->setBrush(kStanceBrush);
+}
+
+void SignalPlots::createGraphs()
+{
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        const ChannelInfo& info = channelInfos()[c];
+        const QCPAxisRect* rect = rows_[slot(info.row)].rect;
+        QCPGraph* graph = plot_->addGraph(timeAxis(rect), rect->axis(QCPAxis::atLeft));
+        graph->setName(tr(info.name));
+        graph->setPen(QPen(info.colour, info.width, info.style));
+        graph->setSelectable(QCP::stNone);
+        graphs_[c] = graph;
+    }
+}
+
+void SignalPlots::createToolBar()
+{
+    toolBar_->setMovable(false);
+    for (std::size_t r = 0; r < kRowCount; ++r) {
+        auto* group = new QWidget(toolBar_);
+        auto* layout = new QHBoxLayout(group);
+        layout->setContentsMargins(8, 0, 8, 0);
+        QList<std::size_t> channels;
+        for (std::size_t c = 0; c < kChannelCount; ++c) {
+            if (slot(channelInfos()[c].row) == r)
+                channels << c;
+        }
+        if (channels.size() > 1)  // a single channel's check box names the row itself
+            layout->addWidget(new QLabel(tr(kRowInfos[r].title), group));
+        for (const std::size_t c : channels) {
+            auto* box = new QCheckBox(tr(channelInfos()[c].name), group);
+            box->setObjectName(QStringLiteral("show") +  // "showAccX": for tests and style sheets
+                               QLatin1String(QMetaEnum::fromType<Channel>().valueToKey(static_cast<int>(c))));
+            box->setChecked(true);
+            box->setToolTip(tr("Show or hide this channel of the %1 row").arg(tr(kRowInfos[r].title)));
+            layout->addWidget(box);
+            channelBoxes_[c] = box;
+        }
+        rows_[r].group = toolBar_->addWidget(group);
+    }
+}
+
+void SignalPlots::wireInteractions()
+{
+    for (const RowParts& row : rows_) {
+        connect(timeAxis(row.rect), qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+                &SignalPlots::onRowRangeChanged);
+    }
+    connect(plot_, &QCustomPlot::mousePress, this, &SignalPlots::onMousePress);
+    connect(plot_, &QCustomPlot::mouseRelease, this, &SignalPlots::onMouseRelease);
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        const Channel channel = static_cast<Channel>(c);
+        connect(channelBoxes_[c], &QCheckBox::toggled, this, [this, channel](bool on) { setChannelVisible(channel, on); });
+    }
+}
+
+void SignalPlots::setRecording(std::shared_ptr<const Recording> recording)
+{
+    recording_ = std::move(recording);
+    result_.reset();
+    static const Recording noRecording;  // both branches lvalues: the recording is not copied
+    plotSignals(recording_ ? *recording_ : noRecording);
+    plotStanceShading();
+    for (std::size_t r = 0; r < kRowCount; ++r)
+        rows_[r].group->setVisible(rowHasData(static_cast<Row>(r)));
+    arrangeRows();
+    rescaleValueAxes();
+    showAll();
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void SignalPlots::plotSignals(const Recording& recording)
+{
+    const std::vector<ImuSample>& samples = recording.samples;
+    const auto count = static_cast<qsizetype>(samples.size());
+    QVector<double> keys(count);
+    for (qsizetype k = 0; k < count; ++k)
+        keys[k] = samples[k].time_s;
+    const double firstHeight_m = recording.hasPressure() ? standardAtmosphereHeight_m(samples.front().pressure_pa) : 0.0;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (!rowHasData(channelInfos()[c].row)) {
+            graphs_[c]->data()->clear();
+            continue;
+        }
+        QVector<double> values(count);
+        for (qsizetype k = 0; k < count; ++k)
+            values[k] = channelValue(static_cast<Channel>(c), samples[k], firstHeight_m);
+        graphs_[c]->setData(keys, values, true);  // presorted: no sorting pass over 180k samples
+    }
+}
+
+void SignalPlots::setResult(std::shared_ptr<const Result> result)
+{
+    result_ = std::move(result);
+    plotStanceShading();
+    arrangeRows();  // the legend gains or loses its stance entry
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void SignalPlots::plotStanceShading()
+{
+    const std::vector<QCPRange> spans =
+        result_ ? flaggedSpans(result_->time_s, result_->flags.stance) : std::vector<QCPRange>();
+    for (RowParts& row : rows_)
+        row.stance->setSpans(spans);
+}
+
+void SignalPlots::rescaleValueAxes()
+{
+    for (std::size_t r = 0; r < kRowCount; ++r) {
+        bool first = true;
+        for (std::size_t c = 0; c < kChannelCount; ++c) {
+            if (slot(channelInfos()[c].row) != r || !channelVisible_[c] || graphs_[c]->data()->isEmpty())
+                continue;
+            graphs_[c]->rescaleValueAxis(!first);
+            first = false;
+        }
+        if (!first)
+            rows_[r].rect->axis(QCPAxis::atLeft)->scaleRange(kValueMargin);
+    }
+}
+
+bool SignalPlots::rowHasData(Row row) const
+{
+    switch (row) {
+    case Row::Acceleration:
+    case Row::AngularRate: return true;  // shown empty before a recording, so the widget is recognisable
+    case Row::MagneticField: return recording_ && recording_->hasMag();
+    case Row::Pressure:
+    case Row::Height: return recording_ && recording_->hasPressure();
+    }
+    return false;
+}
+
+void SignalPlots::arrangeRows()
+{
+    QCPLayoutGrid* layout = plot_->plotLayout();
+    for (RowParts& row : rows_) {
+        if (row.rect->layout() != nullptr)
+            layout->take(row.rect);
+    }
+    layout->simplify();
+    QCPAxisRect* bottom = nullptr;
+    int shownCount = 0;
+    for (std::size_t r = 0; r < kRowCount; ++r) {
+        bool anyChannelOn = false;
+        for (std::size_t c = 0; c < kChannelCount; ++c)
+            anyChannelOn = anyChannelOn || (slot(channelInfos()[c].row) == r && channelVisible_[c]);
+        const bool shown = anyChannelOn && rowHasData(static_cast<Row>(r));
+        RowParts& row = rows_[r];
+        // Out of the layout a row keeps its old geometry: hide it, or it would paint over the others.
+        row.rect->setVisible(shown);
+        row.cursor->setVisible(shown && cursorPlaced_);
+        timeAxis(row.rect)->setTickLabels(false);
+        timeAxis(row.rect)->setLabel(QString());
+        refreshLegend(r, shown && shownCount == 0);  // one stance entry, in the top row
+        if (!shown)
+            continue;
+        layout->addElement(shownCount++, 0, row.rect);
+        bottom = row.rect;
+    }
+    if (bottom != nullptr) {  // one time scale at the foot of the stack is enough
+        timeAxis(bottom)->setTickLabels(true);
+        timeAxis(bottom)->setLabel(tr("Time (s)"));
+    }
+}
+
+void SignalPlots::refreshLegend(std::size_t row, bool withStance)
+{
+    QCPLegend* legend = rows_[row].legend;
+    legend->clearItems();
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+        if (slot(channelInfos()[c].row) == row && channelVisible_[c])
+            graphs_[c]->addToLegend(legend);
+    }
+    if (withStance && !rows_[row].stance->isEmpty())
+        stanceLegendEntry_->addToLegend(legend);
+}
+
+void SignalPlots::setChannelVisible(Channel channel, bool visible)
+{
+    const std::size_t c = slot(channel);
+    if (channelVisible_[c] == visible)
+        return;
+    channelVisible_[c] = visible;
+    graphs_[c]->setVisible(visible);
+    channelBoxes_[c]->setChecked(visible);
+    arrangeRows();
+    rescaleValueAxes();
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+bool SignalPlots::isChannelVisible(Channel channel) const { return channelVisible_[slot(channel)]; }
+bool SignalPlots::isRowShown(Row row) const { return rows_[slot(row)].rect->layout() != nullptr; }
+QCPAxisRect* SignalPlots::axisRect(Row row) const { return rows_[slot(row)].rect; }
+QCPGraph* SignalPlots::graph(Channel channel) const { return graphs_[slot(channel)]; }
+bool SignalPlots::isStanceShaded(double time_s) const { return rows_.front().stance->contains(time_s); }
+QCPItemStraightLine* SignalPlots::cursorLine(Row row) const { return rows_[slot(row)].cursor; }
+QCPRange SignalPlots::timeRange() const { return QCPRange(shownFrom_s_, shownTo_s_); }
+
+void SignalPlots::setTimeCursor(double time_s)
+{
+    timeCursor_s_ = time_s;
+    cursorPlaced_ = true;
+    for (RowParts& row : rows_) {
+        row.cursor->point1->setCoords(time_s, 0.0);
+        row.cursor->point2->setCoords(time_s, 1.0);
+        row.cursor->setVisible(row.rect->layout() != nullptr);
+    }
+    plot_->layer(kCursorLayer)->replot();
+}
+
+void SignalPlots::setTimeRange(double from_s, double to_s)
+{
+    // Any row will do: onRowRangeChanged passes the range on to the others.
+    timeAxis(rows_.front().rect)->setRange(from_s, to_s);
+}
+
+void SignalPlots::showAll()
+{
+    if (recording_ && recording_->samples.size() >= 2)
+        setTimeRange(recording_->samples.front().time_s, recording_->samples.back().time_s);
+}
+
+void SignalPlots::onRowRangeChanged(const QCPRange& range)
+{
+    if (range.lower == shownFrom_s_ && range.upper == shownTo_s_)
+        return;  // the echo from a row this handler has just set
+    shownFrom_s_ = range.lower;
+    shownTo_s_ = range.upper;
+    for (RowParts& row : rows_)
+        timeAxis(row.rect)->setRange(range);
+    plot_->replot(QCustomPlot::rpQueuedReplot);  // a drag changes the range many times per frame
+    emit timeRangeChanged(range.lower, range.upper);
+}
+
+void SignalPlots::keyPressEvent(QKeyEvent* event)
+{
+    const double centre = (shownFrom_s_ + shownTo_s_) / 2.0;
+    const double width = shownTo_s_ - shownFrom_s_;
+    switch (event->key()) {
+    case Qt::Key_Plus:
+    case Qt::Key_Equal:  // '+' without Shift on most layouts
+        setTimeRange(centre - kZoomInFactor * width / 2.0, centre + kZoomInFactor * width / 2.0);
+        break;
+    case Qt::Key_Minus:
+        setTimeRange(centre - width / kZoomInFactor / 2.0, centre + width / kZoomInFactor / 2.0);
+        break;
+    case Qt::Key_Left:
+        setTimeRange(shownFrom_s_ - kPanFraction * width, shownTo_s_ - kPanFraction * width);
+        break;
+    case Qt::Key_Right:
+        setTimeRange(shownFrom_s_ + kPanFraction * width, shownTo_s_ + kPanFraction * width);
+        break;
+    case Qt::Key_Home:
+        showAll();
+        break;
+    default:
+        QWidget::keyPressEvent(event);
+        return;
+    }
+    event->accept();
+}
+
+void SignalPlots::onMousePress(QMouseEvent* event)
+{
+    pressPos_ = event->position().toPoint();
+}
+
+void SignalPlots::onMouseRelease(QMouseEvent* event)
+{
+    // A drag pans the time axis; only a click that stayed put places the cursor.
+    const QPoint pos = event->position().toPoint();
+    if (event->button() != Qt::LeftButton || (pos - pressPos_).manhattanLength() > QApplication::startDragDistance())
+        return;
+    for (const RowParts& row : rows_) {
+        if (row.rect->layout() != nullptr && row.rect->rect().contains(pos)) {
+            const double time_s = timeAxis(row.rect)->pixelToCoord(pos.x());
+            setTimeCursor(time_s);
+            emit timeCursorMoved(time_s);
+            return;
+        }
+    }
+}
+
+void SignalPlots::renderTo(QPainter& painter, const QRect& target)
+{
+    // QCustomPlot draws only through its own QCPPainter; a QPicture records the drawing as vector
+    // commands that the caller's painter (a PDF page, say) replays.
+    QPicture picture;
+    {
+        QCPPainter recorder(&picture);
+        plot_->toPainter(&recorder, target.width(), target.height());
+    }
+    painter.drawPicture(target.topLeft(), picture);
+}
+
+}  // namespace footpath

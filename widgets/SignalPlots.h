@@ -1,0 +1,125 @@
+#pragma once
+
+#include "Recording.h"
+#include "Result.h"
+
+#include <QWidget>
+
+#include <array>
+#include <memory>
+
+class QAction;
+class QCheckBox;
+class QCPLegend;
+class QCPAxisRect;
+class QCPGraph;
+class QCPItemStraightLine;
+class QCPRange;
+class QCustomPlot;
+class QMouseEvent;
+class QPainter;
+class QToolBar;
+
+namespace footpath {
+
+/// The recording's raw signals in stacked rows that share one time axis: acceleration, angular
+/// rate, magnetic field and pressure/barometric height (the last two only when recorded). Stance
+/// phases of a result are shaded behind every row; a time cursor runs through all rows.
+///
+/// Navigation: mouse wheel zooms and dragging pans the time axis only; +/- zoom, Left/Right pan,
+/// Home shows the whole recording; a click places the time cursor and emits timeCursorMoved.
+/// The widget knows nothing of the session: MainWindow wires the setters and signals. Setters
+/// schedule one replot for the next event-loop pass, so several in a row draw once.
+class SignalPlots : public QWidget {
+    Q_OBJECT
+public:
+    enum class Channel { AccX, AccY, AccZ, AccNorm, GyrX, GyrY, GyrZ, MagX, MagY, MagZ, Pressure, Height };
+    Q_ENUM(Channel)
+    /// One stacked axis rect each; a row is shown when the recording has its data and at least
+    /// one of its channels is switched on.
+    enum class Row { Acceleration, AngularRate, MagneticField, Pressure, Height };
+    Q_ENUM(Row)
+    static constexpr int kChannelCount = 12;
+    static constexpr int kRowCount = 5;
+
+    explicit SignalPlots(QWidget* parent = nullptr);
+    ~SignalPlots() override;
+
+    /// Plots every sample; the previous result's shading is dropped (it belonged to the old recording).
+    void setRecording(std::shared_ptr<const Recording> recording);
+    /// Shades result->flags.stance; nullptr removes the shading.
+    void setResult(std::shared_ptr<const Result> result);
+    void setTimeCursor(double time_s);
+    /// Shows [from_s, to_s] on the shared time axis; emits timeRangeChanged if that is a change.
+    void setTimeRange(double from_s, double to_s);
+    void setChannelVisible(Channel channel, bool visible);
+    /// Time range of the whole recording (what Home shows).
+    void showAll();
+
+    bool isChannelVisible(Channel channel) const;
+    bool isRowShown(Row row) const;
+    double timeCursor() const { return timeCursor_s_; }
+    QCPRange timeRange() const;
+
+    /// For the PDF report (QCustomPlot::toPainter, savePdf) and for tests.
+    QCustomPlot* plot() const { return plot_; }
+    QCPAxisRect* axisRect(Row row) const;
+    QCPGraph* graph(Channel channel) const;
+    /// Whether time_s lies in a shaded stance span (the span from a stance's first sample to the
+    /// sample after its last).
+    bool isStanceShaded(double time_s) const;
+    QCPItemStraightLine* cursorLine(Row row) const;
+    /// Draws the plots (without the channel toolbar) into target as vector commands, so a PDF
+    /// painter keeps them sharp.
+    void renderTo(QPainter& painter, const QRect& target);
+
+signals:
+    /// The user clicked in a plot at this time.
+    void timeCursorMoved(double time_s);
+    /// The visible time range changed (user zoom or pan, Home, or setTimeRange).
+    void timeRangeChanged(double from_s, double to_s);
+
+protected:
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    class FlagBands;
+    struct RowParts {
+        QCPAxisRect* rect = nullptr;
+        FlagBands* stance = nullptr;
+        QCPItemStraightLine* cursor = nullptr;
+        QCPLegend* legend = nullptr;
+        QAction* group = nullptr;  ///< the toolbar's group (label, check boxes): hidden without data
+    };
+
+    void createRows();
+    void createGraphs();
+    void createToolBar();
+    void wireInteractions();
+    void plotSignals(const Recording& recording);
+    void plotStanceShading();
+    void rescaleValueAxes();
+    void arrangeRows();
+    void refreshLegend(std::size_t row, bool withStance);
+    bool rowHasData(Row row) const;
+    void onRowRangeChanged(const QCPRange& range);
+    void onMousePress(QMouseEvent* event);
+    void onMouseRelease(QMouseEvent* event);
+
+    QCustomPlot* plot_;
+    QToolBar* toolBar_;
+    std::array<RowParts, kRowCount> rows_;
+    std::array<QCPGraph*, kChannelCount> graphs_{};
+    QCPGraph* stanceLegendEntry_ = nullptr;  ///< draws nothing; gives the bands a legend entry
+    std::array<QCheckBox*, kChannelCount> channelBoxes_{};
+    std::array<bool, kChannelCount> channelVisible_{};
+    std::shared_ptr<const Recording> recording_;
+    std::shared_ptr<const Result> result_;
+    double timeCursor_s_ = 0.0;
+    bool cursorPlaced_ = false;  ///< the cursor stays hidden until someone places it
+    double shownFrom_s_ = 0.0;  ///< the range all rows share; compared to stop the linking recursing
+    double shownTo_s_ = 0.0;
+    QPoint pressPos_;
+};
+
+}  // namespace footpath

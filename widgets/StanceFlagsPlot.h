@@ -1,0 +1,127 @@
+#pragma once
+
+#include "Recording.h"
+#include "Result.h"
+#include "nav/Parameters.h"
+
+#include <QWidget>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+class QAction;
+class QCPAxisRect;
+class QCPGraph;
+class QCPItemStraightLine;
+class QCPRange;
+class QCustomPlot;
+class QMouseEvent;
+class QPainter;
+class QToolBar;
+
+namespace footpath {
+
+/// The stance detector at work: its flags C1, C2, C3, C and the median-filtered stance as 0/1 lanes
+/// and, on demand, its inputs (|a|, the centred std of |a|, |w|) with the thresholds they are
+/// compared against, so a user sees which condition failed where.
+///
+/// Navigation is the same as in SignalPlots (wheel/drag on time, +/-, Left/Right, Home, click for
+/// the cursor); setTimeRange/timeRangeChanged let MainWindow link the two time axes. Setters
+/// schedule one replot for the next event-loop pass, so several in a row draw once.
+class StanceFlagsPlot : public QWidget {
+    Q_OBJECT
+public:
+    enum class Lane { C1, C2, C3, C, Stance };  ///< top to bottom
+    Q_ENUM(Lane)
+    enum class Input { AccNorm, AccStdDev, GyrNorm };  ///< one row each, below the lanes
+    Q_ENUM(Input)
+    enum class Threshold { AccMin, AccMax, AccStdMax, GyrMax };
+    Q_ENUM(Threshold)
+    static constexpr int kLaneCount = 5;
+    static constexpr int kInputCount = 3;
+    static constexpr int kThresholdCount = 4;
+
+    explicit StanceFlagsPlot(QWidget* parent = nullptr);
+    ~StanceFlagsPlot() override;
+
+    /// Plots the detector inputs (copied: the recording is not kept); the lanes are cleared, since
+    /// they belonged to the old recording.
+    void setRecording(std::shared_ptr<const Recording> recording);
+    /// Draws result->flags as lanes; nullptr clears them.
+    void setResult(std::shared_ptr<const Result> result);
+    /// Moves the threshold lines and recomputes the std of |a| for the new window.
+    void setParameters(const Parameters& params);
+    void setTimeCursor(double time_s);
+    /// Shows [from_s, to_s]; emits timeRangeChanged if that is a change.
+    void setTimeRange(double from_s, double to_s);
+    void setInputsVisible(bool visible);
+    /// Time range of the whole recording (what Home shows).
+    void showAll();
+
+    bool inputsVisible() const { return inputsVisible_; }
+    double timeCursor() const { return timeCursor_s_; }
+    QCPRange timeRange() const;
+    /// The plotted height of a lane for a flag; lanes are step curves between these two levels.
+    static double laneLevel(Lane lane, bool flag);
+
+    /// For the PDF report (QCustomPlot::toPainter, savePdf) and for tests.
+    QCustomPlot* plot() const { return plot_; }
+    QCPAxisRect* lanesRect() const;
+    QCPAxisRect* inputRect(Input input) const;
+    QCPGraph* laneGraph(Lane lane) const;
+    QCPGraph* inputGraph(Input input) const;
+    QCPGraph* thresholdGraph(Threshold threshold) const;
+    /// Draws the plots (without the toolbar) into target as vector commands.
+    void renderTo(QPainter& painter, const QRect& target);
+
+signals:
+    /// The user clicked in a plot at this time.
+    void timeCursorMoved(double time_s);
+    /// The visible time range changed (user zoom or pan, Home, or setTimeRange).
+    void timeRangeChanged(double from_s, double to_s);
+
+protected:
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    static constexpr std::size_t kRowCount = 1 + kInputCount;  ///< the lanes, then one per input
+    class LaneFill;
+    struct RowParts {
+        QCPAxisRect* rect = nullptr;
+        QCPItemStraightLine* cursor = nullptr;
+    };
+
+    void createLanesRow();
+    void createInputRows();
+    void wireInteractions();
+    void plotLanes();
+    void plotAccStdDev();
+    void plotThresholds();
+    void rescaleInputAxes();
+    void arrangeRows();
+    void onRowRangeChanged(const QCPRange& range);
+    void onMousePress(QMouseEvent* event);
+    void onMouseRelease(QMouseEvent* event);
+
+    QCustomPlot* plot_;
+    QToolBar* toolBar_;
+    QAction* inputsAction_;
+    std::array<RowParts, kRowCount> rows_;
+    std::array<QCPGraph*, kLaneCount> lanes_{};
+    std::array<LaneFill*, kLaneCount> laneFills_{};  ///< under each lane's outline while its flag is set
+    std::array<QCPGraph*, kInputCount> inputs_{};
+    std::array<QCPGraph*, kThresholdCount> thresholds_{};
+    std::shared_ptr<const Result> result_;
+    Parameters params_;
+    std::vector<double> times_s_;  ///< the recording's, kept to recompute the std on a new window
+    std::vector<double> accNorm_;
+    bool inputsVisible_ = false;
+    double timeCursor_s_ = 0.0;
+    bool cursorPlaced_ = false;  ///< the cursor stays hidden until someone places it
+    double shownFrom_s_ = 0.0;   ///< the range all rows share; compared to stop the linking recursing
+    double shownTo_s_ = 0.0;
+    QPoint pressPos_;
+};
+
+}  // namespace footpath

@@ -1,0 +1,737 @@
+#include "SummaryPanel.h"
+
+#include <QAbstractTableModel>
+#include <QBarSeries>
+#include <QBarSet>
+#include <QCategoryAxis>
+#include <QChart>
+#include <QChartView>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineSeries>
+#include <QLocale>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSortFilterProxyModel>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QTableView>
+#include <QVBoxLayout>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace footpath {
+
+namespace {
+
+constexpr double kStrideLengthBin_m = 0.01;  ///< finer bins would only show estimation noise
+constexpr double kStanceDurationBin_s = 0.01;
+
+double mean(const std::vector<double>& values)
+{
+    return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+}
+
+double median(std::vector<double> values)
+{
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    if (values.size() % 2 == 1)
+        return *middle;
+    return (*middle + *std::max_element(values.begin(), middle)) / 2.0;
+}
+
+/// Linear interpolation between the closest ranks (sorted must not be empty).
+double quantile(const std::vector<double>& sorted, double fraction)
+{
+    const double position = fraction * static_cast<double>(sorted.size() - 1);
+    const auto below = static_cast<std::size_t>(std::floor(position));
+    const std::size_t above = std::min(below + 1, sorted.size() - 1);
+    return sorted[below] + (position - static_cast<double>(below)) * (sorted[above] - sorted[below]);
+}
+
+double sampleStd(const std::vector<double>& values, double average)
+{
+    if (values.size() < 2)
+        return 0.0;
+    double sum = 0.0;
+    for (double value : values)
+        sum += (value - average) * (value - average);
+    return std::sqrt(sum / static_cast<double>(values.size() - 1));
+}
+
+void collectPerStepSeries(const Result& result, GaitStatistics& stats)
+{
+    for (std::size_t k = 0; k < result.steps.size(); ++k) {
+        const Step& step = result.steps[k];
+        stats.stanceDurations_s.push_back(step.stanceEnd_s - step.stanceStart_s);
+        if (k > 0) {  // the first stance ends no stride
+            stats.strideLengths_m.push_back(step.strideLength_m);
+            stats.strideDurations_s.push_back(step.strideDuration_s);
+        }
+    }
+}
+
+/// The same evaluations footpath-cli eval reports, from core's one implementation.
+void addReferenceEvaluation(const Result& result, const Recording& recording, GaitStatistics& stats)
+{
+    const Reference& reference = recording.reference;
+    // A result of another recording (or a partial one) would be compared sample by sample with
+    // the wrong reference, or index past it.
+    if (result.position_m.empty() || result.position_m.size() != recording.samples.size())
+        return;
+    if (reference.positions_m.size() == result.position_m.size())
+        stats.armse = computeArmse(result.position_m, reference.positions_m);
+    if (reference.closedLoop)
+        stats.loopClosure = computeLoopClosure(result.position_m, result.summary.pathLength_m, reference.knownLength_m);
+    if (reference.knownLength_m > 0.0)
+        stats.distanceError = computeDistanceError(result.summary.pathLength_m, reference.knownLength_m);
+    if (!reference.swings.empty() && result.flags.stance.size() == recording.samples.size())
+        stats.stanceScore = scoreStanceDetection(result.flags.stance, reference.swings,
+                                                 reference.hasTrialBoundaries ? &reference.trialBoundaries : nullptr);
+}
+
+/// The smallest 1, 2, 2.5 or 5 times a power of ten that is at least width.
+double niceWidthAtLeast(double width)
+{
+    const double power = std::pow(10.0, std::floor(std::log10(width)));
+    for (double mantissa : {1.0, 2.0, 2.5, 5.0})
+        if (mantissa * power >= width * (1.0 - 1e-9))
+            return mantissa * power;
+    return 10.0 * power;
+}
+
+/// Decimals that show every multiple of step exactly (0.25 -> 2, 0.5 -> 1, 2 -> 0).
+int decimalsFor(double step)
+{
+    for (int decimals = 0; decimals < 9; ++decimals) {
+        const double scaled = step * std::pow(10.0, decimals);
+        if (std::abs(scaled - std::round(scaled)) < 1e-6 * scaled)
+            return decimals;
+    }
+    return 9;
+}
+
+QString number(double value, int decimals)
+{
+    if (!std::isfinite(value))
+        return QStringLiteral("\u2013");
+    // -0.004 shown with two decimals would read "-0.00".
+    const bool roundsToZero = std::abs(value) < 0.5 * std::pow(10.0, -decimals);
+    return QLocale().toString(roundsToZero ? 0.0 : value, 'f', decimals);
+}
+
+}  // namespace
+
+GaitStatistics computeGaitStatistics(const Result& result, const Recording* recording)
+{
+    GaitStatistics stats;
+    const Summary& summary = result.summary;
+    stats.duration_s = summary.duration_s;
+    stats.pathLength_m = summary.pathLength_m;
+    stats.endToStart_m = summary.endToStart_m;
+    stats.endToStartPct = summary.endToStartPct;
+    collectPerStepSeries(result, stats);
+    stats.stancePhases = stats.stanceDurations_s.size();
+    stats.strides = stats.strideLengths_m.size();
+    if (!stats.stanceDurations_s.empty())
+        stats.meanStanceDuration_s = mean(stats.stanceDurations_s);
+    if (!stats.strideLengths_m.empty()) {
+        stats.meanStrideLength_m = mean(stats.strideLengths_m);
+        stats.strideLengthStd_m = sampleStd(stats.strideLengths_m, stats.meanStrideLength_m);
+        stats.meanStrideDuration_s = mean(stats.strideDurations_s);
+        stats.medianStrideDuration_s = median(stats.strideDurations_s);
+        if (stats.medianStrideDuration_s > 0.0) {
+            stats.strideRate_perMin = 60.0 / stats.medianStrideDuration_s;
+            stats.cadence_stepsPerMin = 2.0 * stats.strideRate_perMin;
+        }
+    }
+    if (recording)
+        addReferenceEvaluation(result, *recording, stats);
+    return stats;
+}
+
+int Histogram::total() const
+{
+    return below + above + std::accumulate(counts.begin(), counts.end(), 0);
+}
+
+Histogram makeHistogram(const std::vector<double>& values, double minimumBinWidth)
+{
+    std::vector<double> sorted;
+    std::copy_if(values.begin(), values.end(), std::back_inserter(sorted), [](double v) { return std::isfinite(v); });
+    Histogram histogram;
+    if (sorted.empty())
+        return histogram;
+    std::sort(sorted.begin(), sorted.end());
+    const double spread = 3.0 * (quantile(sorted, 0.75) - quantile(sorted, 0.25));
+    const auto inside = [&](double v) { return v >= quantile(sorted, 0.25) - spread && v <= quantile(sorted, 0.75) + spread; };
+    const double low = *std::find_if(sorted.begin(), sorted.end(), inside);
+    const double high = *std::find_if(sorted.rbegin(), sorted.rend(), inside);
+    const double targetBins = std::clamp(std::ceil(std::sqrt(static_cast<double>(sorted.size()))), 5.0, 10.0);
+    const double width = high > low ? niceWidthAtLeast((high - low) / targetBins) : 0.0;
+    histogram.binWidth = std::max(minimumBinWidth, width);
+    if (!(histogram.binWidth > 0.0))
+        histogram.binWidth = 1.0;  // all values equal and no minimum given
+    histogram.firstEdge = std::floor(low / histogram.binWidth) * histogram.binWidth;
+    // The tolerance keeps a value on an edge in the bin above it despite rounding
+    // (floor(1.4 / 0.01) * 0.01 is a hair above 1.4).
+    const auto binOf = [&histogram](double value) {
+        return static_cast<long>(std::floor((value - histogram.firstEdge) / histogram.binWidth + 1e-9));
+    };
+    histogram.counts.assign(static_cast<std::size_t>(binOf(high)) + 1, 0);
+    for (double value : sorted) {
+        const long bin = binOf(value);
+        if (bin < 0)
+            ++histogram.below;
+        else if (bin >= static_cast<long>(histogram.counts.size()))
+            ++histogram.above;
+        else
+            ++histogram.counts[static_cast<std::size_t>(bin)];
+    }
+    return histogram;
+}
+
+// --- The per-step table -------------------------------------------------------------------------
+
+/// One row per stance phase. Display text is formatted; kSortRole holds the number so sorting is
+/// numeric.
+class SummaryPanel::StepTableModel : public QAbstractTableModel {
+public:
+    enum Column { Number, StanceStart, StanceEnd, StanceDuration, StrideLength, StrideDuration, X, Y, Z, ColumnCount };
+    static constexpr int kSortRole = Qt::UserRole;
+
+    using QAbstractTableModel::QAbstractTableModel;
+
+    void setResult(std::shared_ptr<const Result> result)
+    {
+        beginResetModel();
+        result_ = std::move(result);
+        endResetModel();
+    }
+
+    int rowCount(const QModelIndex& parent = {}) const override
+    {
+        return parent.isValid() || !result_ ? 0 : static_cast<int>(result_->steps.size());
+    }
+    int columnCount(const QModelIndex& parent = {}) const override { return parent.isValid() ? 0 : ColumnCount; }
+
+    QVariant data(const QModelIndex& index, int role) const override
+    {
+        if (!index.isValid() || !result_)
+            return {};
+        if (role == Qt::TextAlignmentRole)
+            return QVariant(Qt::AlignRight | Qt::AlignVCenter);
+        const double value = valueAt(index.row(), index.column());
+        if (role == kSortRole)
+            return value;
+        if (role != Qt::DisplayRole)
+            return {};
+        const bool noStride = index.row() == 0 && (index.column() == StrideLength || index.column() == StrideDuration);
+        return noStride ? QStringLiteral("\u2013") : number(value, decimalsOf(index.column()));
+    }
+
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override
+    {
+        if (orientation != Qt::Horizontal)
+            return {};
+        if (role == Qt::DisplayRole)
+            return title(section);
+        if (role == Qt::ToolTipRole)
+            return toolTip(section);
+        return {};
+    }
+
+private:
+    double valueAt(int row, int column) const
+    {
+        const Step& step = result_->steps[static_cast<std::size_t>(row)];
+        switch (column) {
+        case Number: return row + 1;
+        case StanceStart: return step.stanceStart_s;
+        case StanceEnd: return step.stanceEnd_s;
+        case StanceDuration: return step.stanceEnd_s - step.stanceStart_s;
+        case StrideLength: return step.strideLength_m;
+        case StrideDuration: return step.strideDuration_s;
+        case X: return step.position_m.x();
+        case Y: return step.position_m.y();
+        case Z: return step.position_m.z();
+        default: return 0.0;
+        }
+    }
+
+    static int decimalsOf(int column)
+    {
+        // Times to a millisecond (a 200 Hz sample is 5 ms), positions to a centimetre.
+        return column == Number ? 0 : (column >= X ? 2 : 3);
+    }
+
+    static QString title(int column)
+    {
+        switch (column) {
+        case Number: return SummaryPanel::tr("Step");
+        case StanceStart: return SummaryPanel::tr("Start (s)");
+        case StanceEnd: return SummaryPanel::tr("End (s)");
+        case StanceDuration: return SummaryPanel::tr("Stance (s)");
+        case StrideLength: return SummaryPanel::tr("Stride (m)");
+        case StrideDuration: return SummaryPanel::tr("Stride time (s)");
+        case X: return SummaryPanel::tr("x (m)");
+        case Y: return SummaryPanel::tr("y (m)");
+        case Z: return SummaryPanel::tr("z (m)");
+        default: return {};
+        }
+    }
+
+    static QString toolTip(int column)
+    {
+        switch (column) {
+        case StanceStart: return SummaryPanel::tr("When the foot came to rest");
+        case StanceEnd: return SummaryPanel::tr("When the foot lifted off");
+        case StanceDuration: return SummaryPanel::tr("How long the foot was at rest");
+        case StrideLength: return SummaryPanel::tr("Horizontal distance from the previous stance");
+        case StrideDuration: return SummaryPanel::tr("Time from the previous stance start to this one");
+        case X:
+        case Y:
+        case Z: return SummaryPanel::tr("Mean position during the stance, relative to the start");
+        default: return {};
+        }
+    }
+
+    std::shared_ptr<const Result> result_;
+};
+
+// --- Construction -------------------------------------------------------------------------------
+
+SummaryPanel::SummaryPanel(QWidget* parent) : QWidget(parent)
+{
+    strideLengthChart_ = createChartView(QStringLiteral("strideLengthChart"));
+    stanceDurationChart_ = createChartView(QStringLiteral("stanceDurationChart"));
+    strideLengthHistogram_ = createChartView(QStringLiteral("strideLengthHistogram"));
+    stanceDurationHistogram_ = createChartView(QStringLiteral("stanceDurationHistogram"));
+    strideLengthHistogram_->installEventFilter(this);
+    stanceDurationHistogram_->installEventFilter(this);
+
+    auto* tabs = new QTabWidget;
+    tabs->setObjectName(QStringLiteral("summaryTabs"));
+    tabs->addTab(createTable(), tr("Steps"));
+    tabs->addTab(createChartPair(strideLengthChart_, stanceDurationChart_), tr("Per step"));
+    tabs->addTab(createChartPair(strideLengthHistogram_, stanceDurationHistogram_), tr("Distributions"));
+
+    auto* splitter = new QSplitter(Qt::Horizontal);
+    splitter->addWidget(createFigures());
+    splitter->addWidget(tabs);
+    splitter->setStretchFactor(0, 0);
+    splitter->setStretchFactor(1, 1);
+    splitter->setChildrenCollapsible(false);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(splitter);
+    clear();
+}
+
+SummaryPanel::~SummaryPanel() = default;
+
+QWidget* SummaryPanel::createFigures()
+{
+    auto* walk = createFigureGroup(tr("Walk"), {{"pathLength", tr("Path length")},
+                                                {"strides", tr("Stance phases / strides")},
+                                                {"duration", tr("Duration")},
+                                                {"cadence", tr("Cadence")},
+                                                {"strideLength", tr("Stride length")},
+                                                {"strideDuration", tr("Stride duration")},
+                                                {"stanceDuration", tr("Stance duration")},
+                                                {"endToStart", tr("End to start")}});
+    referenceGroup_ = createFigureGroup(tr("Against the reference"), {{"armse2d", tr("ARMSE 2D")},
+                                                                      {"armse3d", tr("ARMSE 3D")},
+                                                                      {"loopClosure", tr("Loop closure")},
+                                                                      {"distanceError", tr("Distance error")},
+                                                                      {"stancePrecision", tr("Stance precision")},
+                                                                      {"stanceRecall", tr("Stance recall")},
+                                                                      {"stanceF1", tr("Stance F1")},
+                                                                      {"stancePhases", tr("Stance phases")}});
+    referenceNotes_ = new QLabel;
+    referenceNotes_->setObjectName(QStringLiteral("referenceNotes"));
+    referenceNotes_->setWordWrap(true);
+    referenceNotes_->setForegroundRole(QPalette::PlaceholderText);
+    referenceGroup_->layout()->addWidget(referenceNotes_);
+
+    auto* content = new QWidget;
+    auto* layout = new QVBoxLayout(content);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(walk);
+    layout->addWidget(referenceGroup_);
+    layout->addStretch(1);
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(content);
+    scroll->setMinimumWidth(content->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
+    return scroll;
+}
+
+QGroupBox* SummaryPanel::createFigureGroup(const QString& title, const std::vector<std::pair<QString, QString>>& rows)
+{
+    auto* group = new QGroupBox(title);
+    auto* outer = new QVBoxLayout(group);
+    auto* grid = new QGridLayout;
+    grid->setColumnStretch(1, 1);
+    grid->setHorizontalSpacing(12);
+    for (const auto& [key, name] : rows) {
+        FigureRow row{new QLabel(name), new QLabel};
+        row.value->setObjectName(QStringLiteral("figure_") + key);
+        row.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        row.value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        // As wide as the longest figure, so none is clipped whatever the first result shows.
+        row.value->setMinimumWidth(row.value->fontMetrics().horizontalAdvance(tr("000 steps/min (00.0 strides/min)")));
+        const int gridRow = grid->rowCount();
+        grid->addWidget(row.name, gridRow, 0);
+        grid->addWidget(row.value, gridRow, 1);
+        figures_[key] = row;
+    }
+    outer->addLayout(grid);
+    return group;
+}
+
+QWidget* SummaryPanel::createTable()
+{
+    stepModel_ = new StepTableModel(this);
+    auto* proxy = new QSortFilterProxyModel(this);
+    proxy->setSourceModel(stepModel_);
+    proxy->setSortRole(StepTableModel::kSortRole);
+    table_ = new QTableView;
+    table_->setObjectName(QStringLiteral("stepTable"));
+    table_->setModel(proxy);
+    table_->setSortingEnabled(true);
+    table_->sortByColumn(StepTableModel::Number, Qt::AscendingOrder);
+    table_->setAlternatingRowColors(true);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->verticalHeader()->hide();
+    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
+    // Columns share the width but never shrink below their titles (then the table scrolls).
+    QHeaderView* header = table_->horizontalHeader();
+    header->setSectionResizeMode(QHeaderView::Stretch);
+    int widestTitle = 0;
+    for (int column = 0; column < StepTableModel::ColumnCount; ++column)
+        widestTitle = std::max(widestTitle, header->fontMetrics().horizontalAdvance(
+                                                stepModel_->headerData(column, Qt::Horizontal).toString()));
+    header->setMinimumSectionSize(widestTitle + 28);  // room for the sort arrow
+    return table_;
+}
+
+QWidget* SummaryPanel::createChartPair(QChartView* left, QChartView* right)
+{
+    auto* pair = new QWidget;
+    auto* layout = new QHBoxLayout(pair);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(left);
+    layout->addWidget(right);
+    return pair;
+}
+
+QChartView* SummaryPanel::createChartView(const QString& objectName)
+{
+    auto* chart = new QChart;
+    chart->legend()->hide();
+    chart->setMargins(QMargins(2, 2, 2, 2));
+    chart->setBackgroundRoundness(0);
+    QFont titleFont = chart->titleFont();
+    titleFont.setBold(true);
+    chart->setTitleFont(titleFont);
+    auto* view = new QChartView(chart);  // no setUseOpenGL: must work offscreen and over remote desktops
+    view->setObjectName(objectName);
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setMinimumSize(240, 180);
+    return view;
+}
+
+// --- Showing a result ---------------------------------------------------------------------------
+
+void SummaryPanel::setRecording(std::shared_ptr<const Recording> recording)
+{
+    recording_ = std::move(recording);
+    refresh();
+}
+
+void SummaryPanel::setResult(std::shared_ptr<const Result> result)
+{
+    result_ = std::move(result);
+    refresh();
+}
+
+void SummaryPanel::clear()
+{
+    recording_.reset();
+    result_.reset();
+    refresh();
+}
+
+void SummaryPanel::refresh()
+{
+    statistics_ = result_ ? computeGaitStatistics(*result_, recording_.get()) : GaitStatistics();
+    stepModel_->setResult(result_);
+    showWalkFigures();
+    showReferenceFigures();
+    showCharts();
+}
+
+void SummaryPanel::setFigure(const QString& key, const QString& text)
+{
+    const FigureRow& row = figures_.at(key);
+    row.value->setText(text);
+}
+
+void SummaryPanel::showWalkFigures()
+{
+    const GaitStatistics& s = statistics_;
+    if (!result_) {
+        for (auto& [key, row] : figures_)
+            row.value->setText(QStringLiteral("\u2013"));
+        return;
+    }
+    setFigure("pathLength", tr("%1 m").arg(number(s.pathLength_m, 2)));
+    setFigure("strides", tr("%1 / %2").arg(s.stancePhases).arg(s.strides));
+    setFigure("duration", tr("%1 s").arg(number(s.duration_s, 1)));
+    setFigure("cadence", tr("%1 steps/min (%2 strides/min)")
+                             .arg(number(s.cadence_stepsPerMin, 0), number(s.strideRate_perMin, 1)));
+    setFigure("strideLength", tr("%1 \u00b1 %2 m").arg(number(s.meanStrideLength_m, 3), number(s.strideLengthStd_m, 3)));
+    setFigure("strideDuration", tr("%1 s (median %2 s)")
+                                    .arg(number(s.meanStrideDuration_s, 3), number(s.medianStrideDuration_s, 3)));
+    setFigure("stanceDuration", tr("%1 s").arg(number(s.meanStanceDuration_s, 3)));
+    setFigure("endToStart", tr("%1 m (%2 % of the path)").arg(number(s.endToStart_m, 2), number(s.endToStartPct, 2)));
+}
+
+void SummaryPanel::showReferenceFigures()
+{
+    const GaitStatistics& s = statistics_;
+    const auto showRow = [this](const QString& key, bool visible) {
+        figures_.at(key).name->setVisible(visible);
+        figures_.at(key).value->setVisible(visible);
+    };
+    showRow("armse2d", s.armse.has_value());
+    showRow("armse3d", s.armse.has_value());
+    showRow("loopClosure", s.loopClosure.has_value());
+    showRow("distanceError", s.distanceError.has_value());
+    for (const char* key : {"stancePrecision", "stanceRecall", "stanceF1", "stancePhases"})
+        showRow(key, s.stanceScore.has_value());
+    referenceGroup_->setVisible(s.armse || s.loopClosure || s.distanceError || s.stanceScore);
+
+    if (s.armse) {
+        setFigure("armse2d", tr("%1 m").arg(number(s.armse->armse2d_m, 3)));
+        setFigure("armse3d", tr("%1 m").arg(number(s.armse->armse3d_m, 3)));
+    }
+    if (s.loopClosure)
+        setFigure("loopClosure", tr("%1 m (%2 % of %3 m)")
+                                     .arg(number(s.loopClosure->dbse_m, 2), number(s.loopClosure->dbsePct, 2),
+                                          number(s.loopClosure->lengthUsed_m, 1)));
+    if (s.distanceError)
+        setFigure("distanceError", tr("%1 m (%2 % of %3 m)")
+                                       .arg(number(s.distanceError->error_m, 2), number(s.distanceError->errorPct, 2),
+                                            number(s.distanceError->reference_m, 1)));
+    if (s.stanceScore) {
+        const StanceScore& score = *s.stanceScore;
+        setFigure("stancePrecision", number(score.precision, 3));
+        setFigure("stanceRecall", number(score.recall, 3));
+        setFigure("stanceF1", number(score.f1, 3));
+        setFigure("stancePhases", tr("%1 detected, %2 labelled")
+                                      .arg(score.detectedPhases)
+                                      .arg(score.referencePhases));
+    }
+    QStringList notes;
+    if (recording_ && referenceGroup_->isVisibleTo(this))
+        for (const std::string& note : recording_->reference.notes)
+            notes.append(QString::fromStdString(note));
+    referenceNotes_->setText(notes.join(QLatin1Char('\n')));
+    referenceNotes_->setVisible(!notes.isEmpty());
+}
+
+// --- Charts -------------------------------------------------------------------------------------
+
+namespace {
+
+void removeSeriesAndAxes(QChart* chart)
+{
+    chart->removeAllSeries();
+    for (QAbstractAxis* axis : chart->axes()) {
+        chart->removeAxis(axis);
+        delete axis;
+    }
+}
+
+void plainTitleFont(QAbstractAxis* axis)
+{
+    QFont font = axis->titleFont();
+    font.setBold(false);
+    axis->setTitleFont(font);
+}
+
+QValueAxis* addValueAxis(QChart* chart, Qt::Alignment alignment, const QString& title)
+{
+    auto* axis = new QValueAxis;
+    axis->setTitleText(title);
+    plainTitleFont(axis);
+    chart->addAxis(axis, alignment);
+    return axis;
+}
+
+/// A tick interval of 1, 2 or 5 times a power of ten giving at most about maxTicks ticks.
+double tickInterval(double span, int maxTicks)
+{
+    const double raw = span / maxTicks;
+    const double power = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double mantissa : {1.0, 2.0, 5.0})
+        if (mantissa * power >= raw)
+            return mantissa * power;
+    return 10.0 * power;
+}
+
+/// Integer ticks (steps, counts) from low to high.
+void setIntegerTicks(QValueAxis* axis, double low, double high)
+{
+    const double interval = std::max(1.0, tickInterval(std::max(1.0, high - low), 8));
+    axis->setRange(low, high);
+    axis->setTickType(QValueAxis::TicksDynamic);
+    axis->setTickAnchor(0.0);
+    axis->setTickInterval(interval);
+    axis->setLabelFormat(QStringLiteral("%d"));
+}
+
+/// A value range around the data with some air, never below zero (lengths and durations); at least
+/// 10 % of the largest value high so that tiny variation does not look dramatic.
+void setDataRange(QValueAxis* axis, const std::vector<double>& values)
+{
+    const auto [low, high] = std::minmax_element(values.begin(), values.end());
+    const double span = std::max({*high - *low, 0.1 * std::abs(*high), 1e-3});
+    const double middle = (*low + *high) / 2.0;
+    axis->setRange(std::max(0.0, middle - 0.6 * span), middle + 0.6 * span);
+    axis->applyNiceNumbers();
+}
+
+}  // namespace
+
+void SummaryPanel::showCharts()
+{
+    const GaitStatistics& s = statistics_;
+    // Strides start at the second stance (step 2 in the table); stance durations at the first.
+    showPerStepChart(strideLengthChart_, tr("Stride length per step"), tr("Stride length (m)"), 2, s.strideLengths_m);
+    showPerStepChart(stanceDurationChart_, tr("Stance duration per step"), tr("Stance duration (s)"), 1,
+                     s.stanceDurations_s);
+    showHistogram(strideLengthHistogram_, tr("Stride length"), tr("Stride length (m)"),
+                  makeHistogram(s.strideLengths_m, kStrideLengthBin_m));
+    showHistogram(stanceDurationHistogram_, tr("Stance duration"), tr("Stance duration (s)"),
+                  makeHistogram(s.stanceDurations_s, kStanceDurationBin_s));
+}
+
+void SummaryPanel::showPerStepChart(QChartView* view, const QString& title, const QString& yTitle,
+                                    std::size_t firstStep, const std::vector<double>& values)
+{
+    QChart* chart = view->chart();
+    removeSeriesAndAxes(chart);
+    chart->setTitle(title);
+    if (values.empty())
+        return;
+    auto* series = new QLineSeries;
+    series->setPointsVisible(true);
+    for (std::size_t i = 0; i < values.size(); ++i)
+        series->append(static_cast<double>(firstStep + i), values[i]);
+    chart->addSeries(series);
+    QValueAxis* x = addValueAxis(chart, Qt::AlignBottom, tr("Step"));
+    QValueAxis* y = addValueAxis(chart, Qt::AlignLeft, yTitle);
+    series->attachAxis(x);
+    series->attachAxis(y);
+    setIntegerTicks(x, static_cast<double>(firstStep) - 0.5, static_cast<double>(firstStep + values.size()) - 0.5);
+    setDataRange(y, values);
+}
+
+void SummaryPanel::showHistogram(QChartView* view, const QString& title, const QString& xTitle,
+                                 const Histogram& histogram)
+{
+    QChart* chart = view->chart();
+    removeSeriesAndAxes(chart);
+    chart->setTitle(title);
+    shownHistograms_[view] = histogram;
+    view->setToolTip(histogram.below + histogram.above > 0
+                         ? tr("Grey bars: %1 values below and %2 above the regular bins (outliers such as "
+                              "the standing still at the start and end)")
+                               .arg(histogram.below)
+                               .arg(histogram.above)
+                         : QString());
+    if (histogram.counts.empty())
+        return;
+    // One bar per bin; values beyond the regular bins get a grey bar at either end.
+    auto* bars = new QBarSet(title);
+    bars->setSelectedColor(QColor(160, 160, 160));
+    if (histogram.below > 0)
+        bars->append(histogram.below);
+    for (int count : histogram.counts)
+        bars->append(count);
+    if (histogram.above > 0)
+        bars->append(histogram.above);
+    if (histogram.below > 0)
+        bars->selectBar(0);
+    if (histogram.above > 0)
+        bars->selectBar(bars->count() - 1);
+    auto* series = new QBarSeries;
+    series->append(bars);
+    series->setBarWidth(0.95);  // bins touch, as in a histogram
+    chart->addSeries(series);
+
+    // Bars sit at 0, 1, ... on this axis; its labels mark the bin edges in data units.
+    auto* x = new QCategoryAxis;
+    x->setTitleText(xTitle);
+    x->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+    plainTitleFont(x);
+    chart->addAxis(x, Qt::AlignBottom);
+    series->attachAxis(x);
+    QValueAxis* y = addValueAxis(chart, Qt::AlignLeft, tr("Count"));
+    series->attachAxis(y);
+    const int most = std::max({histogram.below, histogram.above,
+                               *std::max_element(histogram.counts.begin(), histogram.counts.end())});
+    // Headroom to the next tick, so the tallest bar does not touch the top.
+    const double interval = std::max(1.0, tickInterval(most, 6));
+    setIntegerTicks(y, 0.0, (std::floor(most / interval) + 1.0) * interval);
+    labelHistogramEdges(view);
+}
+
+void SummaryPanel::labelHistogramEdges(QChartView* view)
+{
+    const Histogram& histogram = shownHistograms_[view];
+    const QList<QAbstractAxis*> axes = view->chart()->axes(Qt::Horizontal);
+    auto* axis = axes.isEmpty() ? nullptr : qobject_cast<QCategoryAxis*>(axes.first());
+    if (histogram.counts.empty() || !axis)
+        return;
+    const int decimals = decimalsFor(histogram.binWidth);
+    const auto regularEdges = static_cast<int>(histogram.counts.size());
+    const int bars = regularEdges + (histogram.below > 0) + (histogram.above > 0);
+    const QString widest = number(histogram.lastEdge(), decimals);
+    // Qt Charts elides a label wider than its category, so label only every few edges. The plot
+    // area is not laid out yet during a resize; the view less the count axis is close.
+    const double perBar = std::max(1.0, (view->width() - 70.0) / bars);
+    const double needed = QFontMetrics(axis->labelsFont()).horizontalAdvance(widest) + 10.0;
+    const int every = std::max(1, static_cast<int>(std::ceil(needed / perBar)));
+    for (const QString& label : axis->categoriesLabels())
+        axis->remove(label);
+    // Bar k spans k - 0.5 to k + 0.5; the first regular edge follows the grey "below" bar.
+    const double firstEdgeAt = histogram.below > 0 ? 0.5 : -0.5;
+    axis->setStartValue(firstEdgeAt - 1e-6);  // the first label needs a category ending at its edge
+    for (int edge = 0; edge <= regularEdges; edge += every) {
+        const double value = histogram.firstEdge + edge * histogram.binWidth;
+        axis->append(number(value, decimals), firstEdgeAt + edge);
+    }
+    axis->setRange(-0.5, bars - 0.5);
+}
+
+bool SummaryPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    // Thin the edge labels to what fits instead of letting Qt Charts elide every one to "...".
+    if (event->type() == QEvent::Resize && (watched == strideLengthHistogram_ || watched == stanceDurationHistogram_))
+        labelHistogramEdges(static_cast<QChartView*>(watched));
+    return QWidget::eventFilter(watched, event);
+}
+
+}  // namespace footpath

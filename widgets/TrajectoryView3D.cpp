@@ -1,0 +1,622 @@
+#include "TrajectoryView3D.h"
+
+#include "TrajectoryView2D.h"  // nearestSampleAtTime, shared so both views mark the same sample
+
+#include <Eigen/Geometry>
+#include <QCheckBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QSignalBlocker>
+#include <QToolButton>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <limits>
+#include <utility>
+
+namespace footpath {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDefaultAzimuth_deg = -60.0;
+constexpr double kDefaultElevation_deg = 30.0;
+/// A 30-minute 100 Hz walk has 180k samples; this many points draw in a few milliseconds and
+/// still follow every stride.
+constexpr std::size_t kMaxDrawnPoints = 20000;
+constexpr double kFitFraction = 0.85;        ///< of the target the fitted scene fills; the rest is for labels
+constexpr double kMinHalfExtent_m = 0.5;     ///< a single point or a straight line still gets a sensible scale
+constexpr double kEyeDistanceInRadii = 3.0;  ///< perspective: camera distance from the scene centre
+constexpr double kNearFraction = 0.05;       ///< perspective: points closer than this are clamped, not inverted
+constexpr double kOrbitDegreesPerPixel = 0.4;
+constexpr double kAxisArrow_px = 32.0;
+constexpr double kLabelOffsetInSteps = 0.45;  ///< metre labels sit this far outside the grid
+constexpr double kZoomPerWheelNotch = 1.2;
+constexpr double kMinHeightFactor = 0.1;
+constexpr double kMaxHeightFactor = 50.0;
+
+const QColor kPathColour(40, 90, 170);
+const QColor kShadowColour(200, 205, 215);
+const QColor kReferenceColour(150, 150, 150);
+const QColor kStanceColour(230, 120, 20);
+const QColor kGridColour(222, 222, 222);
+const QColor kLabelColour(110, 110, 110);
+const QColor kCursorColour(255, 215, 0);
+
+double toRadians(double degrees)
+{
+    return degrees * kPi / 180.0;
+}
+
+/// 1, 2 or 5 times a power of ten, the smallest not below raw_m.
+double niceStep(double raw_m)
+{
+    const double base = std::pow(10.0, std::floor(std::log10(raw_m)));
+    for (double multiple : {1.0, 2.0, 5.0}) {
+        if (multiple * base >= raw_m)
+            return multiple * base;
+    }
+    return 10.0 * base;
+}
+
+/// Every n-th sample plus every change of the stance flag, so a stance keeps its place even when
+/// the samples around it are thinned out.
+std::vector<std::size_t> decimatedIndices(std::size_t count, const std::vector<std::uint8_t>& stance)
+{
+    std::vector<std::size_t> indices;
+    if (count == 0)
+        return indices;
+    const std::size_t every = std::max<std::size_t>(1, (count + kMaxDrawnPoints - 1) / kMaxDrawnPoints);
+    const bool haveStance = stance.size() == count;
+    for (std::size_t k = 0; k < count; ++k) {
+        const bool stanceChanges = haveStance && k > 0 && stance[k] != stance[k - 1];
+        if (k % every == 0 || k + 1 == count || stanceChanges)
+            indices.push_back(k);
+    }
+    return indices;
+}
+
+QString metres(double value_m)
+{
+    // Adding 0.0 turns -0 into 0; 'g' drops the rounding noise of value = first + i * step.
+    return QCoreApplication::translate("footpath::TrajectoryView3D", "%1 m").arg(QString::number(value_m + 0.0, 'g', 6));
+}
+
+void drawStance(QPainter& painter, const QPointF& at)
+{
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(kStanceColour);
+    painter.drawEllipse(at, 2.6, 2.6);
+}
+
+void drawStart(QPainter& painter, const QPointF& at)
+{
+    painter.setPen(QPen(Qt::darkGreen, 2.0));
+    painter.setBrush(Qt::white);
+    painter.drawRect(QRectF(at - QPointF(5.0, 5.0), QSizeF(10.0, 10.0)));
+}
+
+void drawEnd(QPainter& painter, const QPointF& at)
+{
+    painter.setPen(QPen(Qt::red, 2.0));
+    painter.drawLine(at + QPointF(-5.0, -5.0), at + QPointF(5.0, 5.0));
+    painter.drawLine(at + QPointF(-5.0, 5.0), at + QPointF(5.0, -5.0));
+}
+
+void drawCursor(QPainter& painter, const QPointF& at)
+{
+    painter.setPen(QPen(Qt::black, 2.0));
+    painter.setBrush(kCursorColour);
+    painter.drawEllipse(at, 6.5, 6.5);
+}
+
+void drawCentredText(QPainter& painter, const QPointF& centre, const QString& text)
+{
+    const QRectF box(centre - QPointF(60.0, 10.0), QSizeF(120.0, 20.0));
+    painter.drawText(box, Qt::AlignCenter, text);
+}
+
+}  // namespace
+
+/// World (metres) to target pixels for one frame: rotation into the camera basis, height
+/// exaggeration, optional perspective, scale and pan.
+struct TrajectoryView3D::ViewTransform {
+    Eigen::Vector3d centre_m;  ///< scene centre, heights already exaggerated
+    Eigen::Vector3d right;     ///< camera basis in world coordinates
+    Eigen::Vector3d up;
+    Eigen::Vector3d toEye;
+    double heightFactor = 1.0;
+    double pixelsPerMetre = 1.0;
+    QPointF origin_px;  ///< where the scene centre lands, pan included
+    bool perspective = false;
+    double eyeDistance_m = 1.0;
+
+    QPointF operator()(const Eigen::Vector3d& position_m) const
+    {
+        const Eigen::Vector3d q =
+            Eigen::Vector3d(position_m.x(), position_m.y(), position_m.z() * heightFactor) - centre_m;
+        double shrink = 1.0;
+        if (perspective) {
+            const double depth = std::max(eyeDistance_m - q.dot(toEye), kNearFraction * eyeDistance_m);
+            shrink = eyeDistance_m / depth;
+        }
+        return origin_px + pixelsPerMetre * shrink * QPointF(q.dot(right), -q.dot(up));
+    }
+};
+
+/// The ground grid: lines every step_m at the lowest height of the scene.
+struct TrajectoryView3D::Grid {
+    double step_m = 1.0;
+    double xMin = 0.0, xMax = 0.0, yMin = 0.0, yMax = 0.0;
+    double z_m = 0.0;
+};
+
+TrajectoryView3D::TrajectoryView3D(QWidget* parent)
+    : QWidget(parent),
+      timeCursor_s_(std::numeric_limits<double>::quiet_NaN()),
+      azimuth_deg_(kDefaultAzimuth_deg),
+      elevation_deg_(kDefaultElevation_deg)
+{
+    setMinimumSize(200, 150);
+    setFocusPolicy(Qt::WheelFocus);
+    toolbar_ = createToolbar();
+    resetView();
+}
+
+TrajectoryView3D::~TrajectoryView3D() = default;
+
+QWidget* TrajectoryView3D::createToolbar()
+{
+    auto* bar = new QWidget(this);
+    bar->setAutoFillBackground(true);
+    QPalette palette = bar->palette();
+    palette.setColor(QPalette::Window, QColor(255, 255, 255, 230));
+    bar->setPalette(palette);
+    auto* layout = new QHBoxLayout(bar);
+    layout->setContentsMargins(6, 3, 6, 3);
+
+    heightSpin_ = new QDoubleSpinBox(bar);
+    heightSpin_->setRange(kMinHeightFactor, kMaxHeightFactor);
+    heightSpin_->setSingleStep(0.5);
+    heightSpin_->setDecimals(1);
+    heightSpin_->setValue(heightFactor_);
+    heightSpin_->setToolTip(tr("Vertical exaggeration: heights are drawn this many times larger"));
+    auto* label = new QLabel(tr("Height \u00d7"), bar);
+    label->setBuddy(heightSpin_);
+    perspectiveCheck_ = new QCheckBox(tr("Perspective"), bar);
+    auto* reset = new QToolButton(bar);
+    reset->setText(tr("Reset view"));
+    reset->setToolTip(tr("Oblique view of the whole path (or double-click the view)"));
+    for (QWidget* widget : std::initializer_list<QWidget*>{label, heightSpin_, perspectiveCheck_, reset})
+        layout->addWidget(widget);
+
+    connect(heightSpin_, &QDoubleSpinBox::valueChanged, this, &TrajectoryView3D::setHeightExaggeration);
+    connect(perspectiveCheck_, &QCheckBox::toggled, this, [this](bool on) {
+        setProjection(on ? Projection::Perspective : Projection::Orthographic);
+    });
+    connect(reset, &QToolButton::clicked, this, &TrajectoryView3D::resetView);
+    return bar;
+}
+
+const std::vector<Eigen::Vector3d>& TrajectoryView3D::positions() const
+{
+    static const std::vector<Eigen::Vector3d> none;
+    return result_ ? result_->position_m : none;
+}
+
+void TrajectoryView3D::showResult(const Result& result)
+{
+    setResult(std::make_shared<const Result>(result));
+}
+
+void TrajectoryView3D::setResult(std::shared_ptr<const Result> result)
+{
+    result_ = std::move(result);
+    rebuildScene();
+    resetView();
+}
+
+void TrajectoryView3D::clear()
+{
+    result_.reset();
+    reference_m_.clear();
+    rebuildScene();
+    update();
+}
+
+void TrajectoryView3D::setReference(const std::vector<Eigen::Vector3d>& positions_m)
+{
+    reference_m_ = positions_m;
+    rebuildScene();
+    resetView();
+}
+
+void TrajectoryView3D::setTimeCursor(double time_s)
+{
+    timeCursor_s_ = time_s;
+    update();
+}
+
+void TrajectoryView3D::setHeightExaggeration(double factor)
+{
+    factor = std::clamp(factor, kMinHeightFactor, kMaxHeightFactor);
+    if (factor == heightFactor_)
+        return;
+    heightFactor_ = factor;
+    const QSignalBlocker blocker(heightSpin_);
+    heightSpin_->setValue(factor);
+    emit heightExaggerationChanged(factor);
+    update();
+}
+
+void TrajectoryView3D::setProjection(Projection projection)
+{
+    projection_ = projection;
+    const QSignalBlocker blocker(perspectiveCheck_);
+    perspectiveCheck_->setChecked(projection == Projection::Perspective);
+    update();
+}
+
+void TrajectoryView3D::setViewAngles(double azimuth_deg, double elevation_deg)
+{
+    azimuth_deg_ = std::remainder(azimuth_deg, 360.0);
+    elevation_deg_ = std::clamp(elevation_deg, -90.0, 90.0);
+    update();
+}
+
+void TrajectoryView3D::rebuildScene()
+{
+    const std::vector<std::uint8_t> noFlags;
+    drawnPathIndices_ = decimatedIndices(positions().size(), result_ ? result_->flags.stance : noFlags);
+    drawnReferenceIndices_ = decimatedIndices(reference_m_.size(), noFlags);
+    sceneMin_m_ = sceneMax_m_ = Eigen::Vector3d::Zero();
+    bool first = true;
+    const std::vector<Eigen::Vector3d>* const sources[] = {&positions(), &reference_m_};
+    for (const std::vector<Eigen::Vector3d>* points : sources) {
+        for (const Eigen::Vector3d& p : *points) {
+            sceneMin_m_ = first ? p : sceneMin_m_.cwiseMin(p);
+            sceneMax_m_ = first ? p : sceneMax_m_.cwiseMax(p);
+            first = false;
+        }
+    }
+}
+
+void TrajectoryView3D::resetView()
+{
+    azimuth_deg_ = kDefaultAzimuth_deg;
+    elevation_deg_ = kDefaultElevation_deg;
+    zoom_ = 1.0;
+    // Fit what the default camera sees of the floor grid and the paths, whatever the target, and
+    // centre that (not the scene's centre, which sits off-centre once the grid is drawn).
+    const Grid grid = groundGrid();
+    ViewTransform view = viewTransform(QRectF(0.0, 0.0, 1.0, 1.0));
+    view.perspective = false;
+    view.pixelsPerMetre = 1.0;
+    view.origin_px = QPointF();
+    QPolygonF seenPoints;
+    const double labelRoom = kLabelOffsetInSteps * grid.step_m;  // the metre labels stay in view too
+    for (double x : {grid.xMin - labelRoom, grid.xMax + labelRoom})
+        for (double y : {grid.yMin - labelRoom, grid.yMax + labelRoom})
+            seenPoints << view(Eigen::Vector3d(x, y, grid.z_m));
+    for (std::size_t index : drawnPathIndices_)
+        seenPoints << view(positions()[index]);
+    for (std::size_t index : drawnReferenceIndices_)
+        seenPoints << view(reference_m_[index]);
+    const QRectF seen = seenPoints.boundingRect();
+    fitHalfExtent_m_ = QPointF(std::max(0.5 * seen.width(), kMinHalfExtent_m), std::max(0.5 * seen.height(), kMinHalfExtent_m));
+    pan_m_ = -seen.center();
+    update();
+}
+
+TrajectoryView3D::ViewTransform TrajectoryView3D::viewTransform(const QRectF& target) const
+{
+    const double azimuth = toRadians(azimuth_deg_), elevation = toRadians(elevation_deg_);
+    ViewTransform view;
+    view.toEye = Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                                 std::sin(elevation));
+    view.right = Eigen::Vector3d(-std::sin(azimuth), std::cos(azimuth), 0.0);
+    view.up = view.toEye.cross(view.right);
+    view.heightFactor = heightFactor_;
+    const Eigen::Vector3d scale(1.0, 1.0, heightFactor_);
+    view.centre_m = (0.5 * (sceneMin_m_ + sceneMax_m_)).cwiseProduct(scale);
+    const double fitScale = std::min(target.width() / (2.0 * fitHalfExtent_m_.x()),
+                                     target.height() / (2.0 * fitHalfExtent_m_.y()));
+    view.pixelsPerMetre = kFitFraction * fitScale * zoom_;
+    view.perspective = projection_ == Projection::Perspective;
+    const double radius = (0.5 * (sceneMax_m_ - sceneMin_m_).cwiseProduct(scale)).norm();
+    view.eyeDistance_m = kEyeDistanceInRadii * std::max(radius, kMinHalfExtent_m);
+    if (view.perspective)  // the nearest point of the scene is magnified by up to this much: still fits
+        view.pixelsPerMetre *= 1.0 - 1.0 / kEyeDistanceInRadii;
+    view.origin_px = target.center() + pan_m_ * view.pixelsPerMetre;
+    return view;
+}
+
+TrajectoryView3D::Grid TrajectoryView3D::groundGrid() const
+{
+    Grid grid;
+    const double extent_m = std::max({sceneMax_m_.x() - sceneMin_m_.x(), sceneMax_m_.y() - sceneMin_m_.y(), 1.0});
+    grid.step_m = niceStep(extent_m / 6.0);
+    grid.xMin = std::floor(sceneMin_m_.x() / grid.step_m) * grid.step_m;
+    grid.xMax = std::ceil(sceneMax_m_.x() / grid.step_m) * grid.step_m;
+    grid.yMin = std::floor(sceneMin_m_.y() / grid.step_m) * grid.step_m;
+    grid.yMax = std::ceil(sceneMax_m_.y() / grid.step_m) * grid.step_m;
+    // A straight walk has no width: give it two cells so the grid still reads as a floor.
+    if (grid.xMax - grid.xMin < 2.0 * grid.step_m) {
+        grid.xMin -= grid.step_m;
+        grid.xMax += grid.step_m;
+    }
+    if (grid.yMax - grid.yMin < 2.0 * grid.step_m) {
+        grid.yMin -= grid.step_m;
+        grid.yMax += grid.step_m;
+    }
+    grid.z_m = sceneMin_m_.z();
+    return grid;
+}
+
+QPointF TrajectoryView3D::project(const Eigen::Vector3d& position_m, const QRectF& target) const
+{
+    return viewTransform(target)(position_m);
+}
+
+void TrajectoryView3D::paintEvent(QPaintEvent*)
+{
+    QPainter painter(this);
+    render(painter, rect());
+}
+
+void TrajectoryView3D::render(QPainter& painter, const QRectF& target) const
+{
+    painter.save();
+    painter.setClipRect(target);
+    painter.fillRect(target, Qt::white);
+    painter.setRenderHint(QPainter::Antialiasing);
+    if (positions().empty() && reference_m_.empty()) {
+        painter.setPen(kLabelColour);
+        painter.drawText(target, Qt::AlignCenter, tr("No trajectory"));
+        painter.restore();
+        return;
+    }
+    const ViewTransform view = viewTransform(target);
+    const Grid grid = groundGrid();
+    drawGrid(painter, view, grid);
+    drawPaths(painter, view, grid);
+    drawAxisArrows(painter, view, target);
+    drawMarkers(painter, view, grid);
+    drawLegend(painter, target);
+    painter.restore();
+}
+
+void TrajectoryView3D::drawGrid(QPainter& painter, const ViewTransform& view, const Grid& grid) const
+{
+    painter.setPen(QPen(kGridColour, 1.0));
+    const auto lines = [&grid](double from, double to) {
+        std::vector<double> values;
+        for (double v = from; v <= to + 0.5 * grid.step_m; v += grid.step_m)
+            values.push_back(v);
+        return values;
+    };
+    const std::vector<double> xs = lines(grid.xMin, grid.xMax), ys = lines(grid.yMin, grid.yMax);
+    for (double x : xs)
+        painter.drawLine(view({x, grid.yMin, grid.z_m}), view({x, grid.yMax, grid.z_m}));
+    for (double y : ys)
+        painter.drawLine(view({grid.xMin, y, grid.z_m}), view({grid.xMax, y, grid.z_m}));
+
+    // Labels along the two edges nearer the viewer, just outside the grid, so the path never hides them.
+    const double labelOffset = kLabelOffsetInSteps * grid.step_m;
+    const double xLabelsAtY = view.toEye.y() < 0.0 ? grid.yMin - labelOffset : grid.yMax + labelOffset;
+    const double yLabelsAtX = view.toEye.x() < 0.0 ? grid.xMin - labelOffset : grid.xMax + labelOffset;
+    painter.setPen(kLabelColour);
+    // Seen edge-on, an axis's labels pile up on each other: draw only those with room.
+    std::vector<QRectF> taken;
+    const auto label = [&painter, &taken](const QPointF& at, const QString& text) {
+        QRectF box = painter.fontMetrics().boundingRect(text);
+        box.moveCenter(at);
+        const bool collides = std::any_of(taken.cbegin(), taken.cend(),
+                                          [&box](const QRectF& other) { return other.intersects(box.adjusted(-3, -1, 3, 1)); });
+        if (collides)
+            return;
+        taken.push_back(box);
+        painter.drawText(box, Qt::AlignCenter, text);
+    };
+    for (double x : xs)
+        label(view({x, xLabelsAtY, grid.z_m}), metres(x));
+    for (double y : ys)
+        label(view({yLabelsAtX, y, grid.z_m}), metres(y));
+}
+
+void TrajectoryView3D::drawAxisArrows(QPainter& painter, const ViewTransform& view, const QRectF& target) const
+{
+    // A fixed-size triad in a corner: it shows which way x, y and z point from any angle and
+    // never stretches off screen with zoom or height exaggeration, as arrows in the scene would.
+    const QPointF origin = target.bottomRight() - QPointF(kAxisArrow_px + 16.0, kAxisArrow_px + 16.0);
+    const struct {
+        Eigen::Vector3d direction;
+        QColor colour;
+        const char* name;
+    } axes[] = {{Eigen::Vector3d::UnitX(), QColor(200, 40, 40), QT_TR_NOOP("x")},
+                {Eigen::Vector3d::UnitY(), QColor(30, 150, 60), QT_TR_NOOP("y")},
+                {Eigen::Vector3d::UnitZ(), QColor(40, 80, 210), QT_TR_NOOP("z")}};
+    for (const auto& axis : axes) {
+        const QPointF along = kAxisArrow_px * QPointF(axis.direction.dot(view.right), -axis.direction.dot(view.up));
+        const QPointF tip = origin + along;
+        painter.setPen(QPen(axis.colour, 2.0, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(origin, tip);
+        const double length = std::hypot(along.x(), along.y());
+        const QPointF unit = length < 4.0 ? QPointF(0.7, -0.7) : along / length;
+        if (length >= 4.0) {  // shorter: the axis points at the viewer and has no direction to show
+            const QPointF normal(-unit.y(), unit.x());
+            QPainterPath head;
+            head.moveTo(tip);
+            head.lineTo(tip - 8.0 * unit + 3.5 * normal);
+            head.lineTo(tip - 8.0 * unit - 3.5 * normal);
+            head.closeSubpath();
+            painter.fillPath(head, axis.colour);
+        }
+        drawCentredText(painter, tip + 10.0 * unit, tr(axis.name));
+    }
+}
+
+QPolygonF TrajectoryView3D::projectedPolyline(const ViewTransform& view, const std::vector<Eigen::Vector3d>& points,
+                                             const std::vector<std::size_t>& indices, double floorZ_m) const
+{
+    // floorZ_m NaN: the true path; a number: its shadow on the floor at that height.
+    QPolygonF polyline;
+    polyline.reserve(static_cast<qsizetype>(indices.size()));
+    for (std::size_t index : indices) {
+        const Eigen::Vector3d& p = points[index];
+        const QPointF pixel = view(std::isnan(floorZ_m) ? p : Eigen::Vector3d(p.x(), p.y(), floorZ_m));
+        // Points on the same pixel add stroking work and nothing visible.
+        if (polyline.isEmpty() || (pixel - polyline.back()).manhattanLength() >= 1.0 || index == indices.back())
+            polyline << pixel;
+    }
+    return polyline;
+}
+
+void TrajectoryView3D::drawPaths(QPainter& painter, const ViewTransform& view, const Grid& grid) const
+{
+    constexpr double kTrueHeight = std::numeric_limits<double>::quiet_NaN();
+    // The shadow on the floor is what makes heights readable in a still image. Thin pens take
+    // QPainter's fast path, so the two secondary lines cost next to nothing.
+    painter.setPen(QPen(kShadowColour, 1.0));
+    drawInPieces(painter, projectedPolyline(view, positions(), drawnPathIndices_, grid.z_m));
+    painter.setPen(QPen(kReferenceColour, 1.0, Qt::DashLine));
+    drawInPieces(painter, projectedPolyline(view, reference_m_, drawnReferenceIndices_, kTrueHeight));
+    // A wide pen with flat caps, segment by segment, is the one wide stroke QPainter rasterises
+    // quickly (a tenth of the time of a polyline); the joins it leaves out are sub-pixel.
+    painter.setPen(QPen(kPathColour, 1.6, Qt::SolidLine, Qt::FlatCap));
+    const QPolygonF path = projectedPolyline(view, positions(), drawnPathIndices_, kTrueHeight);
+    QVector<QLineF> segments;
+    segments.reserve(path.size());
+    for (qsizetype k = 1; k < path.size(); ++k)
+        segments.append(QLineF(path[k - 1], path[k]));
+    painter.drawLines(segments);
+}
+
+void TrajectoryView3D::drawInPieces(QPainter& painter, const QPolygonF& polyline)
+{
+    // One long self-crossing polyline makes QPainter stroke and fill one huge outline (a second
+    // for a long walk); short pieces keep joins and dash patterns at a fraction of the cost.
+    constexpr qsizetype kPiece = 64;
+    for (qsizetype first = 0; first + 1 < polyline.size(); first += kPiece)
+        painter.drawPolyline(polyline.constData() + first, static_cast<int>(std::min(kPiece + 1, polyline.size() - first)));
+}
+
+void TrajectoryView3D::drawMarkers(QPainter& painter, const ViewTransform& view, const Grid& grid) const
+{
+    if (!result_ || positions().empty())
+        return;
+    // One call for all stances: a long walk has thousands, and ellipses one by one cost more
+    // than the whole path.
+    QPolygonF stances;
+    for (const Step& step : result_->steps)
+        stances << view(step.position_m);
+    painter.setPen(QPen(kStanceColour, 5.2, Qt::SolidLine, Qt::RoundCap));
+    painter.drawPoints(stances);
+    drawStart(painter, view(positions().front()));
+    drawEnd(painter, view(positions().back()));
+
+    if (std::isnan(timeCursor_s_) || result_->time_s.empty())
+        return;
+    const std::size_t index = std::min(nearestSampleAtTime(result_->time_s, timeCursor_s_), positions().size() - 1);
+    const Eigen::Vector3d& cursor = positions()[index];
+    painter.setPen(QPen(Qt::black, 1.0, Qt::DashLine));
+    painter.drawLine(view(cursor), view({cursor.x(), cursor.y(), grid.z_m}));
+    drawCursor(painter, view(cursor));
+}
+
+void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target) const
+{
+    using Icon = std::function<void(QPainter&, const QPointF&)>;
+    const auto line = [](QPen pen) {
+        return Icon([pen](QPainter& p, const QPointF& at) {
+            p.setPen(pen);
+            p.drawLine(at - QPointF(12.0, 0.0), at + QPointF(12.0, 0.0));
+        });
+    };
+    std::vector<std::pair<QString, Icon>> entries{{tr("Foot path"), line(QPen(kPathColour, 2.0))},
+                                                  {tr("Shadow on the floor"), line(QPen(kShadowColour, 2.0))}};
+    if (!reference_m_.empty())
+        entries.emplace_back(tr("Reference"), line(QPen(kReferenceColour, 1.5, Qt::DashLine)));
+    entries.emplace_back(tr("Stance"), drawStance);
+    entries.emplace_back(tr("Start"), drawStart);
+    entries.emplace_back(tr("End"), drawEnd);
+    if (!std::isnan(timeCursor_s_))
+        entries.emplace_back(tr("Time cursor"), drawCursor);
+    if (heightFactor_ != 1.0)
+        entries.emplace_back(tr("Heights drawn \u00d7 %1").arg(heightFactor_, 0, 'g', 3), Icon());
+
+    const QFontMetricsF metrics(painter.font());
+    const double lineHeight = std::max(metrics.height() + 2.0, 16.0);
+    double textWidth = 0.0;
+    for (const auto& entry : entries)
+        textWidth = std::max(textWidth, metrics.horizontalAdvance(entry.first));
+    const double rows = static_cast<double>(entries.size());
+    const QRectF box(target.left() + 8.0, target.bottom() - 16.0 - rows * lineHeight, textWidth + 50.0,
+                     rows * lineHeight + 8.0);
+    if (box.height() > 0.4 * target.height() || box.width() > 0.4 * target.width())
+        return;  // a small view needs its room for the path more than for the key
+    painter.setPen(QPen(QColor(200, 200, 200), 1.0));
+    painter.setBrush(QColor(255, 255, 255, 225));
+    painter.drawRect(box);
+    double y = box.top() + 4.0 + 0.5 * lineHeight;
+    for (const auto& [text, icon] : entries) {
+        if (icon)
+            icon(painter, QPointF(box.left() + 20.0, y));
+        painter.setPen(icon ? Qt::black : QColor(170, 40, 40));
+        painter.drawText(QRectF(box.left() + 40.0, y - 0.5 * lineHeight, textWidth + 4.0, lineHeight),
+                         Qt::AlignVCenter | Qt::AlignLeft, text);
+        y += lineHeight;
+    }
+}
+
+void TrajectoryView3D::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    toolbar_->adjustSize();
+    toolbar_->move(width() - toolbar_->width() - 6, 6);
+}
+
+void TrajectoryView3D::mousePressEvent(QMouseEvent* event)
+{
+    lastMousePosition_ = event->position().toPoint();
+}
+
+void TrajectoryView3D::mouseMoveEvent(QMouseEvent* event)
+{
+    const QPoint position = event->position().toPoint();
+    const QPoint delta = position - lastMousePosition_;
+    lastMousePosition_ = position;
+    if (event->buttons() & Qt::LeftButton) {
+        setViewAngles(azimuth_deg_ - kOrbitDegreesPerPixel * delta.x(), elevation_deg_ + kOrbitDegreesPerPixel * delta.y());
+    } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
+        pan_m_ += QPointF(delta) / viewTransform(rect()).pixelsPerMetre;
+        update();
+    }
+}
+
+void TrajectoryView3D::mouseDoubleClickEvent(QMouseEvent*)
+{
+    resetView();
+}
+
+void TrajectoryView3D::wheelEvent(QWheelEvent* event)
+{
+    // Zoom about the pointer: the scene point under it stays under it.
+    const QPointF fromCentre = event->position() - QRectF(rect()).center();
+    const QPointF underPointer_m = fromCentre / viewTransform(rect()).pixelsPerMetre - pan_m_;
+    zoom_ = std::clamp(zoom_ * std::pow(kZoomPerWheelNotch, event->angleDelta().y() / 120.0), 0.05, 500.0);
+    pan_m_ = fromCentre / viewTransform(rect()).pixelsPerMetre - underPointer_m;
+    event->accept();
+    update();
+}
+
+}  // namespace footpath

@@ -1,0 +1,119 @@
+#pragma once
+
+#include "Result.h"
+
+#include <Eigen/Core>
+
+#include <QPoint>
+#include <QPolygonF>
+#include <QRectF>
+#include <QWidget>
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+class QCheckBox;
+class QDoubleSpinBox;
+class QPainter;
+
+namespace footpath {
+
+/// The foot path in 3D, drawn with QPainter only (no OpenGL: it must work offscreen and inside the
+/// PDF report): a ground grid with metre labels, x/y/z arrows, start, end and stance markers, the
+/// time cursor and an optional reference. Left-drag orbits, the wheel zooms about the pointer,
+/// right- or middle-drag pans, a double-click resets the view. Heights can be exaggerated so a
+/// few centimetres of foot lift or a staircase stand out against tens of metres of walk.
+class TrajectoryView3D : public QWidget {
+    Q_OBJECT
+public:
+    enum class Projection { Orthographic, Perspective };
+    Q_ENUM(Projection)
+
+    explicit TrajectoryView3D(QWidget* parent = nullptr);
+    ~TrajectoryView3D() override;
+
+    void setResult(std::shared_ptr<const Result> result);  ///< resets the camera to fit the path
+    void showResult(const Result& result);  ///< copies; prefer setResult with the session's pointer
+    void clear();  ///< removes path, markers and reference
+
+    /// Positions already in the estimate's frame (see alignReferenceToEstimate); empty hides it.
+    void setReference(const std::vector<Eigen::Vector3d>& positions_m);
+    /// Marks the path sample nearest in time; NaN hides the marker.
+    void setTimeCursor(double time_s);
+    double timeCursor() const { return timeCursor_s_; }
+
+    /// Vertical scale relative to horizontal (1 = true shape), clamped to [0.1, 50].
+    void setHeightExaggeration(double factor);
+    double heightExaggeration() const { return heightFactor_; }
+    void setProjection(Projection projection);
+    Projection projection() const { return projection_; }
+    /// Direction the camera looks from: azimuth about z from +x, elevation above the ground
+    /// (clamped to [-90, 90]); both in degrees.
+    void setViewAngles(double azimuth_deg, double elevation_deg);
+    double azimuth_deg() const { return azimuth_deg_; }
+    double elevation_deg() const { return elevation_deg_; }
+    double zoom() const { return zoom_; }
+    /// The default oblique camera, fitted to the whole path at the current height exaggeration.
+    void resetView();
+
+    using QWidget::render;
+    /// Draws the current view (without the toolbar) into any painter; paintEvent uses it too.
+    void render(QPainter& painter, const QRectF& target) const;
+    /// Where a point (metres, navigation frame) appears when the view is rendered into target.
+    QPointF project(const Eigen::Vector3d& position_m, const QRectF& target) const;
+
+signals:
+    void heightExaggerationChanged(double factor);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+
+private:
+    struct ViewTransform;
+    struct Grid;
+
+    QWidget* createToolbar();
+    void rebuildScene();
+    ViewTransform viewTransform(const QRectF& target) const;
+    Grid groundGrid() const;
+    void drawGrid(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
+    void drawAxisArrows(QPainter& painter, const ViewTransform& view, const QRectF& target) const;
+    QPolygonF projectedPolyline(const ViewTransform& view, const std::vector<Eigen::Vector3d>& points,
+                                const std::vector<std::size_t>& indices, double floorZ_m) const;
+    static void drawInPieces(QPainter& painter, const QPolygonF& polyline);
+    void drawPaths(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
+    void drawMarkers(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
+    void drawLegend(QPainter& painter, const QRectF& target) const;
+    const std::vector<Eigen::Vector3d>& positions() const;
+
+    std::shared_ptr<const Result> result_;
+    std::vector<Eigen::Vector3d> reference_m_;
+    std::vector<std::size_t> drawnPathIndices_;  ///< decimated, keeping every stance change
+    std::vector<std::size_t> drawnReferenceIndices_;
+    Eigen::Vector3d sceneMin_m_ = Eigen::Vector3d::Zero();
+    Eigen::Vector3d sceneMax_m_ = Eigen::Vector3d::Zero();
+    double timeCursor_s_;
+
+    double heightFactor_ = 1.0;
+    Projection projection_ = Projection::Orthographic;
+    double azimuth_deg_;
+    double elevation_deg_;
+    double zoom_ = 1.0;
+    QPointF pan_m_;  ///< screen-plane shift of the scene, in metres at the scene centre
+    /// Half-size (metres) of the scene as the default camera sees it; the zoom is relative to it,
+    /// so orbiting does not change the scale and any target size shows the same framing.
+    QPointF fitHalfExtent_m_;
+
+    QPoint lastMousePosition_;
+    QWidget* toolbar_;
+    QDoubleSpinBox* heightSpin_;
+    QCheckBox* perspectiveCheck_;
+};
+
+}  // namespace footpath
