@@ -5,6 +5,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -117,6 +118,38 @@ private slots:
         QVERIFY(badUnit.err.contains("--gyr-unit expects radps or degps"));
         const Run wrongFormat = runCli({"info", path, "--format", "xsens-mtb"});
         QCOMPARE(wrongFormat.exitCode, 2);
+    }
+
+    void reportAndCsvExportsFromTheCommandLine()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        if (QStandardPaths::findExecutable("pdfinfo").isEmpty())
+            QSKIP("pdfinfo (Debian: poppler-utils) is not installed");
+        QTemporaryDir dir;
+        const QString input = datasetPath("pyshoe-vicon/2017-11-22-11-27-30.csv");
+        const QString pdf = dir.filePath("walk.pdf");
+        const Run report = runCli({"report", input, "--pdf", pdf, "--set", "acc_std_max_mps2=0.6"});
+        QCOMPARE(report.exitCode, 0);
+        QProcess info;
+        info.start("pdfinfo", {pdf});
+        QVERIFY(info.waitForFinished(30000));
+        QVERIFY(QString::fromUtf8(info.readAllStandardOutput()).contains("A4"));
+        const Run missingPdf = runCli({"report", input});
+        QCOMPARE(missingPdf.exitCode, 2);
+        QVERIFY(missingPdf.err.contains("report needs --pdf"));
+
+        const QString summary = dir.filePath("summary.csv"), parameters = dir.filePath("parameters.csv");
+        const Run process = runCli({"process", input, "--summary-csv", summary, "--parameters-csv", parameters,
+                                    "--set", "acc_std_max_mps2=0.6"});
+        QCOMPARE(process.exitCode, 0);
+        QFile params(parameters);
+        QVERIFY(params.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(params.readAll());
+        QVERIFY(text.startsWith("name,value,unit,default,differs_from_default"));
+        QVERIFY(text.contains("acc_std_max_mps2,0.6,m/s^2,0.5,1,"));
+        QFile sums(summary);
+        QVERIFY(sums.open(QIODevice::ReadOnly));
+        QVERIFY(QString::fromUtf8(sums.readAll()).startsWith("samples,duration_s,"));
     }
 
     void evalUsesTheReferenceTheFileCarries()

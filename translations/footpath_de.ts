@@ -1,4 +1,1312 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
+<context>
+    <name>footpath</name>
+    <message>
+        <source>Figure</source>
+        <translation>Kennzahl</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Path length (between stances)</source>
+        <translation>Weglänge (zwischen Standphasen)</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>Steps (strides of this foot)</source>
+        <translation>Schritte (Doppelschritte dieses Fußes)</translation>
+    </message>
+    <message>
+        <source>Cadence, both feet</source>
+        <translation>Schrittfrequenz, beide Füße</translation>
+    </message>
+    <message>
+        <source>%1 steps/min</source>
+        <translation>%1 Schritte/min</translation>
+    </message>
+    <message>
+        <source>Mean stride length</source>
+        <translation>Mittlere Doppelschrittlänge</translation>
+    </message>
+    <message>
+        <source>%1 m (sd %2 m)</source>
+        <translation>%1 m (SD %2 m)</translation>
+    </message>
+    <message>
+        <source>Mean stride duration</source>
+        <translation>Mittlere Doppelschrittdauer</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Mean stance duration</source>
+        <translation>Mittlere Standphasendauer</translation>
+    </message>
+    <message>
+        <source>End-to-start distance</source>
+        <translation>Abstand Ende–Start</translation>
+    </message>
+    <message>
+        <source>%1 m = %2 % of the path</source>
+        <translation>%1 m = %2 % des Wegs</translation>
+    </message>
+    <message>
+        <source>ARMSE 2D / 3D against the reference</source>
+        <translation>ARMSE 2D / 3D gegenüber der Referenz</translation>
+    </message>
+    <message>
+        <source>%1 m / %2 m</source>
+        <translation>%1 m / %2 m</translation>
+    </message>
+    <message>
+        <source>Loop closure (DBSE)</source>
+        <translation>Schleifenschluss (DBSE)</translation>
+    </message>
+    <message>
+        <source>%1 m = %2 %</source>
+        <translation>%1 m = %2 %</translation>
+    </message>
+    <message>
+        <source>Distance error</source>
+        <translation>Streckenfehler</translation>
+    </message>
+    <message>
+        <source>%1 m = %2 % of %3 m</source>
+        <translation>%1 m = %2 % von %3 m</translation>
+    </message>
+    <message>
+        <source>Stance detection precision / recall / F1</source>
+        <translation>Standphasenerkennung: Präzision / Trefferquote / F1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Standardwert</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>ein</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Stance from (s)</source>
+        <translation>Standphase von (s)</translation>
+    </message>
+    <message>
+        <source>to (s)</source>
+        <translation>bis (s)</translation>
+    </message>
+    <message>
+        <source>Stride (m)</source>
+        <translation>Doppelschritt (m)</translation>
+    </message>
+    <message>
+        <source>Stride (s)</source>
+        <translation>Doppelschritt (s)</translation>
+    </message>
+    <message>
+        <source>x (m)</source>
+        <translation>x (m)</translation>
+    </message>
+    <message>
+        <source>y (m)</source>
+        <translation>y (m)</translation>
+    </message>
+    <message>
+        <source>z (m)</source>
+        <translation>z (m)</translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation>Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <source>Sensor / device</source>
+        <translation>Sensor / Gerät</translation>
+    </message>
+    <message>
+        <source>not stated in the file</source>
+        <translation>in der Datei nicht angegeben</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <source>%1 s, %2 samples</source>
+        <translation>%1 s, %2 Abtastwerte</translation>
+    </message>
+    <message>
+        <source>Sample rate</source>
+        <translation>Abtastrate</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Method set</source>
+        <translation>Verfahren</translation>
+    </message>
+    <message>
+        <source>Report made</source>
+        <translation>Bericht erstellt</translation>
+    </message>
+    <message>
+        <source>Software</source>
+        <translation>Software</translation>
+    </message>
+    <message>
+        <source>Footpath %1</source>
+        <translation>Footpath %1</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>height z (m)</source>
+        <translation>Höhe z (m)</translation>
+    </message>
+    <message>
+        <source>Figure 6. Stride length per step.</source>
+        <translation>Abbildung 6. Doppelschrittlänge je Schritt.</translation>
+    </message>
+    <message>
+        <source>step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>stride length (m)</source>
+        <translation>Doppelschrittlänge (m)</translation>
+    </message>
+    <message>
+        <source>Figure 7. Stance duration per step.</source>
+        <translation>Abbildung 7. Standphasendauer je Schritt.</translation>
+    </message>
+    <message>
+        <source>stance phase</source>
+        <translation>Standphase</translation>
+    </message>
+    <message>
+        <source>stance duration (s)</source>
+        <translation>Standphasendauer (s)</translation>
+    </message>
+    <message>
+        <source>Figure 8. Histograms of stride length (left) and stance duration (right).</source>
+        <translation>Abbildung 8. Histogramme der Doppelschrittlänge (links) und der Standphasendauer (rechts).</translation>
+    </message>
+    <message>
+        <source>strides</source>
+        <translation>Doppelschritte</translation>
+    </message>
+    <message>
+        <source>stances</source>
+        <translation>Standphasen</translation>
+    </message>
+    <message>
+        <source>Figure 1. The foot path seen from above (stance positions as dots; reference dashed when present).</source>
+        <translation>Abbildung 1. Der Weg des Fußes von oben (Standphasen als Punkte; Referenz gestrichelt, falls vorhanden).</translation>
+    </message>
+    <message>
+        <source>Figure 2. Height of the foot over time.</source>
+        <translation>Abbildung 2. Höhe des Fußes über der Zeit.</translation>
+    </message>
+    <message>
+        <source>Figure 3. The path in 3D.</source>
+        <translation>Abbildung 3. Der Weg in 3D.</translation>
+    </message>
+    <message>
+        <source>Figure 4. Signals, stance shaded.</source>
+        <translation>Abbildung 4. Signale, Standphasen schattiert.</translation>
+    </message>
+    <message>
+        <source>Figure 5. Stance detector from %1 s to %2 s: conditions C1, C2, C3, their combination C, the median-filtered stance, and the inputs with their thresholds.</source>
+        <translation>Abbildung 5. Standphasendetektor von %1 s bis %2 s: Bedingungen C1, C2, C3, ihre Verknüpfung C, die mediangefilterte Standphase sowie die Eingangsgrößen mit ihren Schwellwerten.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>nothing to report: no estimate yet</source>
+        <translation>nichts zu berichten: noch keine Schätzung</translation>
+    </message>
+    <message>
+        <source>Footpath report: %1</source>
+        <translation>Footpath-Bericht: %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot write the PDF</source>
+        <translation>%1: PDF kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>Footpath report</source>
+        <translation>Footpath-Bericht</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Zusammenfassung</translation>
+    </message>
+    <message>
+        <source>Figures</source>
+        <translation>Abbildungen</translation>
+    </message>
+    <message>
+        <source>Parameters (* differs from the default)</source>
+        <translation>Parameter (* weicht vom Standardwert ab)</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Schritte</translation>
+    </message>
+    <message>
+        <source>Import notes and warnings</source>
+        <translation>Hinweise und Warnungen beim Import</translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
+    <message>
+        <source>The import raised no warnings.</source>
+        <translation>Der Import ergab keine Warnungen.</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::AnalysisSession</name>
+    <message>
+        <source>Change %1</source>
+        <translation>%1 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::ImportDialog</name>
+    <message>
+        <source>How to read %1</source>
+        <translation>%1 einlesen</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>Import preset:</source>
+        <translation>Importvoreinstellung:</translation>
+    </message>
+    <message>
+        <source>detect</source>
+        <translation>automatisch</translation>
+    </message>
+    <message>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <source>g</source>
+        <translation>g</translation>
+    </message>
+    <message>
+        <source>rad/s</source>
+        <translation>rad/s</translation>
+    </message>
+    <message>
+        <source>deg/s</source>
+        <translation>deg/s</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>µs</source>
+        <translation>µs</translation>
+    </message>
+    <message>
+        <source>Accelerometer unit:</source>
+        <translation>Einheit Beschleunigungssensor:</translation>
+    </message>
+    <message>
+        <source>Gyroscope unit:</source>
+        <translation>Einheit Gyroskop:</translation>
+    </message>
+    <message>
+        <source>Time unit:</source>
+        <translation>Zeiteinheit:</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>from the time column</source>
+        <translation>aus der Zeitspalte</translation>
+    </message>
+    <message>
+        <source>Sample rate:</source>
+        <translation>Abtastrate:</translation>
+    </message>
+    <message>
+        <source>What each column holds (first lines of the file below):</source>
+        <translation>Inhalt der Spalten (unten die ersten Zeilen der Datei):</translation>
+    </message>
+    <message>
+        <source>Save as import preset named</source>
+        <translation>Als Importvoreinstellung speichern unter</translation>
+    </message>
+    <message>
+        <source>e.g. my-logger</source>
+        <translation>z. B. my-logger</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Öffnen</translation>
+    </message>
+    <message>
+        <source>role</source>
+        <translation>Rolle</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::MainWindow</name>
+    <message>
+        <source>Footpath</source>
+        <translation>Footpath</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>Signals</source>
+        <translation>Signale</translation>
+    </message>
+    <message>
+        <source>Stance detector</source>
+        <translation>Standphasendetektor</translation>
+    </message>
+    <message>
+        <source>Trajectory 2D</source>
+        <translation>Trajektorie 2D</translation>
+    </message>
+    <message>
+        <source>Trajectory 3D</source>
+        <translation>Trajektorie 3D</translation>
+    </message>
+    <message>
+        <source>Live input from an Xsens MTi over a serial port comes here.</source>
+        <translation>Hier erscheint künftig die Live-Eingabe eines Xsens MTi über eine serielle Schnittstelle.</translation>
+    </message>
+    <message>
+        <source>Recorded input</source>
+        <translation>Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>Live input</source>
+        <translation>Live-Eingabe</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Zusammenfassung</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;About Footpath</source>
+        <translation>Ü&amp;ber Footpath</translation>
+    </message>
+    <message>
+        <source>About Footpath</source>
+        <translation>Über Footpath</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Footpath %1&lt;/b&gt;&lt;p&gt;Foot-mounted inertial navigation: stance detection, strapdown mechanization and an error-state Kalman filter with zero-velocity updates (Guo et al. 2015).&lt;/p&gt;&lt;p&gt;Sample walk: PyShoe VICON dataset, MIT licence, Copyright (c) 2024 Tā-Hā.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Footpath %1&lt;/b&gt;&lt;p&gt;Fußmontierte Inertialnavigation: Standphasenerkennung, Strapdown-Mechanisierung und ein Error-State-Kalman-Filter mit Nullgeschwindigkeits-Updates (ZUPT) (Guo et al. 2015).&lt;/p&gt;&lt;p&gt;Beispielgang: PyShoe-VICON-Datensatz, MIT-Lizenz, Copyright (c) 2024 Tā-Hā.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;Open recording...</source>
+        <translation>Aufzeichnung ö&amp;ffnen...</translation>
+    </message>
+    <message>
+        <source>Open with &amp;import settings...</source>
+        <translation>Mit &amp;Importeinstellungen öffnen...</translation>
+    </message>
+    <message>
+        <source>Open recording</source>
+        <translation>Aufzeichnung öffnen</translation>
+    </message>
+    <message>
+        <source>Say how to read this file.</source>
+        <translation>Geben Sie an, wie diese Datei zu lesen ist.</translation>
+    </message>
+    <message>
+        <source>Export &amp;report (PDF)...</source>
+        <translation>Be&amp;richt exportieren (PDF)...</translation>
+    </message>
+    <message>
+        <source>Export &amp;CSV...</source>
+        <translation>&amp;CSV exportieren...</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig:</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen:</translation>
+    </message>
+    <message>
+        <source>Reset parameters to &amp;defaults</source>
+        <translation>Parameter auf &amp;Standardwerte zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Reset to defaults</source>
+        <translation>Auf Standardwerte zurücksetzen</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Trajectory 2D</source>
+        <translation>&amp;Trajektorie 2D</translation>
+    </message>
+    <message>
+        <source>Trajectory &amp;3D</source>
+        <translation>Trajektorie &amp;3D</translation>
+    </message>
+    <message>
+        <source>&amp;Signals</source>
+        <translation>&amp;Signale</translation>
+    </message>
+    <message>
+        <source>Stance &amp;detector</source>
+        <translation>Standphasen&amp;detektor</translation>
+    </message>
+    <message>
+        <source>&amp;Settings</source>
+        <translation>&amp;Einstellungen</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Systemstandard</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>The new language is used from the next start of Footpath.</source>
+        <translation>Die neue Sprache gilt ab dem nächsten Start von Footpath.</translation>
+    </message>
+    <message>
+        <source>Loading cancelled.</source>
+        <translation>Laden abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Estimate failed: %1</source>
+        <translation>Schätzung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>defaults</source>
+        <translation>Standardwerte</translation>
+    </message>
+    <message>
+        <source>adjusted in the window</source>
+        <translation>im Fenster angepasst</translation>
+    </message>
+    <message>
+        <source>Export report</source>
+        <translation>Bericht exportieren</translation>
+    </message>
+    <message>
+        <source>There is no estimate to report yet.</source>
+        <translation>Es gibt noch keine Schätzung für einen Bericht.</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Report written to %1</source>
+        <translation>Bericht gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>CSV exportieren</translation>
+    </message>
+    <message>
+        <source>There is no estimate to export yet.</source>
+        <translation>Es gibt noch keine Schätzung zum Exportieren.</translation>
+    </message>
+    <message>
+        <source>Export CSV into folder</source>
+        <translation>CSV in Ordner exportieren</translation>
+    </message>
+    <message>
+        <source>Trajectory, steps, summary and parameters written to %1</source>
+        <translation>Trajektorie, Schritte, Zusammenfassung und Parameter gespeichert in %1</translation>
+    </message>
+    <message>
+        <source>Recordings (*.txt *.csv *.mtb *.TXT *.CSV);;All files (*)</source>
+        <translation>Aufzeichnungen (*.txt *.csv *.mtb *.TXT *.CSV);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Reading %1...</source>
+        <translation>%1 wird gelesen...</translation>
+    </message>
+    <message>
+        <source>Footpath - %1</source>
+        <translation>Footpath - %1</translation>
+    </message>
+    <message>
+        <source>%1 samples, %2 steps, path %3 m, end to start %4 m (%5 %), estimated in %6 ms</source>
+        <translation>%1 Abtastwerte, %2 Schritte, Weg %3 m, Ende–Start %4 m (%5 %), geschätzt in %6 ms</translation>
+    </message>
+    <message>
+        <source>Estimating...</source>
+        <translation>Schätzung läuft...</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::ParameterPanel</name>
+    <message>
+        <source>Reset to defaults</source>
+        <translation>Auf Standardwerte zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Set every parameter back to its default value (one undo step)</source>
+        <translation>Setzt alle Parameter auf ihre Standardwerte zurück (ein Rückgängig-Schritt)</translation>
+    </message>
+    <message>
+        <source>Load preset...</source>
+        <translation>Voreinstellung laden...</translation>
+    </message>
+    <message>
+        <source>Save preset...</source>
+        <translation>Voreinstellung speichern...</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;Range: %3 to %4 %5&lt;br&gt;Default: %6 %5</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;Bereich: %3 bis %4 %5&lt;br&gt;Standardwert: %6 %5</translation>
+    </message>
+    <message>
+        <source>Back to the default (%1)</source>
+        <translation>Zurück zum Standardwert (%1)</translation>
+    </message>
+    <message>
+        <source>Reset parameters to defaults</source>
+        <translation>Parameter auf Standardwerte zurücksetzen</translation>
+    </message>
+    <message>
+        <source>%1 sets values the estimate cannot use: %2</source>
+        <translation>%1 setzt Werte, die die Schätzung nicht verwenden kann: %2</translation>
+    </message>
+    <message>
+        <source>Load preset %1</source>
+        <translation>Voreinstellung %1 laden</translation>
+    </message>
+    <message>
+        <source>Load parameter preset</source>
+        <translation>Parameter-Voreinstellung laden</translation>
+    </message>
+    <message>
+        <source>Parameter presets (*.json);;All files (*)</source>
+        <translation>Parameter-Voreinstellungen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Load preset</source>
+        <translation>Voreinstellung laden</translation>
+    </message>
+    <message>
+        <source>The preset was not loaded.
+
+%1</source>
+        <translation>Die Voreinstellung wurde nicht geladen.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Save parameter preset</source>
+        <translation>Parameter-Voreinstellung speichern</translation>
+    </message>
+    <message>
+        <source>Parameter presets (*.json)</source>
+        <translation>Parameter-Voreinstellungen (*.json)</translation>
+    </message>
+    <message>
+        <source>Save preset</source>
+        <translation>Voreinstellung speichern</translation>
+    </message>
+    <message>
+        <source>The preset was not saved.
+
+%1</source>
+        <translation>Die Voreinstellung wurde nicht gespeichert.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Rückgängig:</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederherstellen:</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::RecordedInputPanel</name>
+    <message>
+        <source>Open recording...</source>
+        <translation>Aufzeichnung öffnen...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Recent</source>
+        <translation>Zuletzt</translation>
+    </message>
+    <message>
+        <source>Open a recording: Xsens text export or .mtb log, pyshoe CSV, or any delimited text with time, acceleration and angular rate. You can also drop a file here.</source>
+        <translation>Öffnen Sie eine Aufzeichnung: Xsens-Textexport oder .mtb-Log, pyshoe-CSV oder beliebigen Text mit Trennzeichen, der Zeit, Beschleunigung und Drehrate enthält. Sie können eine Datei auch hierher ziehen.</translation>
+    </message>
+    <message>
+        <source>Reading %1: %p%</source>
+        <translation>%1 wird gelesen: %p%</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>Abtastwerte</translation>
+    </message>
+    <message>
+        <source>Rate</source>
+        <translation>Rate</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Channels</source>
+        <translation>Kanäle</translation>
+    </message>
+    <message>
+        <source>Units in file</source>
+        <translation>Einheiten in der Datei</translation>
+    </message>
+    <message>
+        <source>Gaps</source>
+        <translation>Lücken</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>%1 (about %2 samples lost), longest %3 s</source>
+        <translation>%1 (etwa %2 Abtastwerte verloren), längste %3 s</translation>
+    </message>
+    <message>
+        <source>Warning:</source>
+        <translation>Warnung:</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::SignalPlots</name>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <source>|a|</source>
+        <translation>|a|</translation>
+    </message>
+    <message>
+        <source>Pressure</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Acceleration
+(m/s²)</source>
+        <translation>Beschleunigung
+(m/s²)</translation>
+    </message>
+    <message>
+        <source>Angular rate</source>
+        <translation>Drehrate</translation>
+    </message>
+    <message>
+        <source>Angular rate
+(rad/s)</source>
+        <translation>Drehrate
+(rad/s)</translation>
+    </message>
+    <message>
+        <source>Magnetic field</source>
+        <translation>Magnetfeld</translation>
+    </message>
+    <message>
+        <source>Magnetic field
+(file units)</source>
+        <translation>Magnetfeld
+(Dateieinheit)</translation>
+    </message>
+    <message>
+        <source>Pressure
+(hPa)</source>
+        <translation>Druck
+(hPa)</translation>
+    </message>
+    <message>
+        <source>Baro. height
+(m)</source>
+        <translation>Baro. Höhe
+(m)</translation>
+    </message>
+    <message>
+        <source>Channels</source>
+        <translation>Kanäle</translation>
+    </message>
+    <message>
+        <source>Stance</source>
+        <translation>Standphase</translation>
+    </message>
+    <message>
+        <source>Show or hide this channel of the %1 row</source>
+        <translation>Diesen Kanal der Zeile „%1“ ein- oder ausblenden</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::StanceFlagsPlot</name>
+    <message>
+        <source>C1: |a| in range</source>
+        <translation>C1: |a| im Bereich</translation>
+    </message>
+    <message>
+        <source>C2: |a| steady</source>
+        <translation>C2: |a| ruhig</translation>
+    </message>
+    <message>
+        <source>C3: |ω| small</source>
+        <translation>C3: |ω| klein</translation>
+    </message>
+    <message>
+        <source>C = C1·C2·C3</source>
+        <translation>C = C1·C2·C3</translation>
+    </message>
+    <message>
+        <source>Stance (median)</source>
+        <translation>Standphase (Median)</translation>
+    </message>
+    <message>
+        <source>|a|</source>
+        <translation>|a|</translation>
+    </message>
+    <message>
+        <source>|a|
+(m/s²)</source>
+        <translation>|a|
+(m/s²)</translation>
+    </message>
+    <message>
+        <source>std of |a|</source>
+        <translation>Std.-Abw. von |a|</translation>
+    </message>
+    <message>
+        <source>std of |a|
+(m/s²)</source>
+        <translation>Std.-Abw. |a|
+(m/s²)</translation>
+    </message>
+    <message>
+        <source>|ω|</source>
+        <translation>|ω|</translation>
+    </message>
+    <message>
+        <source>|ω|
+(rad/s)</source>
+        <translation>|ω|
+(rad/s)</translation>
+    </message>
+    <message>
+        <source>min |a| = %1 m/s²</source>
+        <translation>min |a| = %1 m/s²</translation>
+    </message>
+    <message>
+        <source>max |a| = %1 m/s²</source>
+        <translation>max |a| = %1 m/s²</translation>
+    </message>
+    <message>
+        <source>max std = %1 m/s²</source>
+        <translation>max Std.-Abw. = %1 m/s²</translation>
+    </message>
+    <message>
+        <source>max |ω| = %1 rad/s</source>
+        <translation>max |ω| = %1 rad/s</translation>
+    </message>
+    <message>
+        <source>Detector</source>
+        <translation>Detektor</translation>
+    </message>
+    <message>
+        <source>Show detector inputs</source>
+        <translation>Detektoreingänge zeigen</translation>
+    </message>
+    <message>
+        <source>Plot |a|, its local standard deviation and |ω| with the detector&apos;s thresholds</source>
+        <translation>|a|, seine lokale Standardabweichung und |ω| mit den Schwellwerten des Detektors darstellen</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::SummaryPanel</name>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Start (s)</source>
+        <translation>Beginn (s)</translation>
+    </message>
+    <message>
+        <source>End (s)</source>
+        <translation>Ende (s)</translation>
+    </message>
+    <message>
+        <source>Stance (s)</source>
+        <translation>Standphase (s)</translation>
+    </message>
+    <message>
+        <source>Stride (m)</source>
+        <translation>Doppelschritt (m)</translation>
+    </message>
+    <message>
+        <source>Stride time (s)</source>
+        <translation>Doppelschrittdauer (s)</translation>
+    </message>
+    <message>
+        <source>x (m)</source>
+        <translation>x (m)</translation>
+    </message>
+    <message>
+        <source>y (m)</source>
+        <translation>y (m)</translation>
+    </message>
+    <message>
+        <source>z (m)</source>
+        <translation>z (m)</translation>
+    </message>
+    <message>
+        <source>When the foot came to rest</source>
+        <translation>Zeitpunkt, zu dem der Fuß zur Ruhe kam</translation>
+    </message>
+    <message>
+        <source>When the foot lifted off</source>
+        <translation>Zeitpunkt, zu dem der Fuß abhob</translation>
+    </message>
+    <message>
+        <source>How long the foot was at rest</source>
+        <translation>Wie lange der Fuß ruhte</translation>
+    </message>
+    <message>
+        <source>Horizontal distance from the previous stance</source>
+        <translation>Horizontaler Abstand zur vorigen Standphase</translation>
+    </message>
+    <message>
+        <source>Time from the previous stance start to this one</source>
+        <translation>Zeit vom Beginn der vorigen Standphase bis zum Beginn dieser</translation>
+    </message>
+    <message>
+        <source>Mean position during the stance, relative to the start</source>
+        <translation>Mittlere Position während der Standphase, relativ zum Start</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Schritte</translation>
+    </message>
+    <message>
+        <source>Per step</source>
+        <translation>Je Schritt</translation>
+    </message>
+    <message>
+        <source>Distributions</source>
+        <translation>Verteilungen</translation>
+    </message>
+    <message>
+        <source>Walk</source>
+        <translation>Gang</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Weglänge</translation>
+    </message>
+    <message>
+        <source>Stance phases / strides</source>
+        <translation>Standphasen / Doppelschritte</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <source>Cadence</source>
+        <translation>Schrittfrequenz</translation>
+    </message>
+    <message>
+        <source>Stride length</source>
+        <translation>Doppelschrittlänge</translation>
+    </message>
+    <message>
+        <source>Stride duration</source>
+        <translation>Doppelschrittdauer</translation>
+    </message>
+    <message>
+        <source>Stance duration</source>
+        <translation>Standphasendauer</translation>
+    </message>
+    <message>
+        <source>End to start</source>
+        <translation>Ende–Start</translation>
+    </message>
+    <message>
+        <source>Against the reference</source>
+        <translation>Gegenüber der Referenz</translation>
+    </message>
+    <message>
+        <source>ARMSE 2D</source>
+        <translation>ARMSE 2D</translation>
+    </message>
+    <message>
+        <source>ARMSE 3D</source>
+        <translation>ARMSE 3D</translation>
+    </message>
+    <message>
+        <source>Loop closure</source>
+        <translation>Schleifenschluss</translation>
+    </message>
+    <message>
+        <source>Distance error</source>
+        <translation>Streckenfehler</translation>
+    </message>
+    <message>
+        <source>Stance precision</source>
+        <translation>Standphasen-Präzision</translation>
+    </message>
+    <message>
+        <source>Stance recall</source>
+        <translation>Standphasen-Trefferquote</translation>
+    </message>
+    <message>
+        <source>Stance F1</source>
+        <translation>Standphasen-F1</translation>
+    </message>
+    <message>
+        <source>Stance phases</source>
+        <translation>Standphasen</translation>
+    </message>
+    <message>
+        <source>000 steps/min (00.0 strides/min)</source>
+        <translation>000 Schritte/min (00.0 Doppelschritte/min)</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 steps/min (%2 strides/min)</source>
+        <translation>%1 Schritte/min (%2 Doppelschritte/min)</translation>
+    </message>
+    <message>
+        <source>%1 ± %2 m</source>
+        <translation>%1 ± %2 m</translation>
+    </message>
+    <message>
+        <source>%1 s (median %2 s)</source>
+        <translation>%1 s (Median %2 s)</translation>
+    </message>
+    <message>
+        <source>%1 m (%2 % of the path)</source>
+        <translation>%1 m (%2 % des Wegs)</translation>
+    </message>
+    <message>
+        <source>%1 m (%2 % of %3 m)</source>
+        <translation>%1 m (%2 % von %3 m)</translation>
+    </message>
+    <message>
+        <source>%1 detected, %2 labelled</source>
+        <translation>%1 erkannt, %2 annotiert</translation>
+    </message>
+    <message>
+        <source>Stride length per step</source>
+        <translation>Doppelschrittlänge je Schritt</translation>
+    </message>
+    <message>
+        <source>Stride length (m)</source>
+        <translation>Doppelschrittlänge (m)</translation>
+    </message>
+    <message>
+        <source>Stance duration per step</source>
+        <translation>Standphasendauer je Schritt</translation>
+    </message>
+    <message>
+        <source>Stance duration (s)</source>
+        <translation>Standphasendauer (s)</translation>
+    </message>
+    <message>
+        <source>Grey bars: %1 values below and %2 above the regular bins (outliers such as the standing still at the start and end)</source>
+        <translation>Graue Balken: %1 Werte unterhalb und %2 oberhalb der regulären Klassen (Ausreißer wie das Stillstehen am Anfang und Ende)</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Anzahl</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::TrajectoryView2D</name>
+    <message>
+        <source>Reference</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <source>Foot path</source>
+        <translation>Fußtrajektorie</translation>
+    </message>
+    <message>
+        <source>Stance</source>
+        <translation>Standphase</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Ende</translation>
+    </message>
+    <message>
+        <source>Time cursor</source>
+        <translation>Zeitmarke</translation>
+    </message>
+    <message>
+        <source>x (m)</source>
+        <translation>x (m)</translation>
+    </message>
+    <message>
+        <source>y (m)</source>
+        <translation>y (m)</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>foot speed (m/s)</source>
+        <translation>Fußgeschwindigkeit (m/s)</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::TrajectoryView3D</name>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>Vertical exaggeration: heights are drawn this many times larger</source>
+        <translation>Vertikale Überhöhung: Höhen werden um diesen Faktor vergrößert gezeichnet</translation>
+    </message>
+    <message>
+        <source>Height ×</source>
+        <translation>Höhe ×</translation>
+    </message>
+    <message>
+        <source>Perspective</source>
+        <translation>Perspektive</translation>
+    </message>
+    <message>
+        <source>Reset view</source>
+        <translation>Ansicht zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Oblique view of the whole path (or double-click the view)</source>
+        <translation>Schrägansicht des ganzen Wegs (oder Doppelklick in die Ansicht)</translation>
+    </message>
+    <message>
+        <source>No trajectory</source>
+        <translation>Keine Trajektorie</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <source>Foot path</source>
+        <translation>Fußtrajektorie</translation>
+    </message>
+    <message>
+        <source>Shadow on the floor</source>
+        <translation>Schatten auf dem Boden</translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <source>Stance</source>
+        <translation>Standphase</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Ende</translation>
+    </message>
+    <message>
+        <source>Time cursor</source>
+        <translation>Zeitmarke</translation>
+    </message>
+    <message>
+        <source>Heights drawn × %1</source>
+        <translation>Höhen × %1 gezeichnet</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Foot-mounted inertial navigation</source>
+        <translation>Fußmontierte Inertialnavigation</translation>
+    </message>
+    <message>
+        <source>Recording to open</source>
+        <translation>Zu öffnende Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>Save a PNG of the window once estimated, then quit</source>
+        <translation>Nach der Schätzung ein PNG des Fensters speichern, dann beenden</translation>
+    </message>
+    <message>
+        <source>Language (en, de, zh_CN)</source>
+        <translation>Sprache (en, de, zh_CN)</translation>
+    </message>
+</context>
 </TS>

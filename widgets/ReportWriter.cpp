@@ -346,8 +346,8 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
     const Result& result = *c.result;
     TrajectoryView2D view2D;
     view2D.resize(900, 640);
-    view2D.setReference(c.recording->reference.positions_m);
     view2D.setResult(c.result);
+    view2D.setReference(alignReferenceToEstimate(c.recording->reference.positions_m, result.position_m));
     page.figure(tr("Figure 1. The foot path seen from above (stance positions as dots; reference dashed when present)."),
                 page.mm(110), [&](const QRectF& r) { drawPlot(painter, view2D.plot(), r); });
     page.figure(tr("Figure 2. Height of the foot over time."), page.mm(50),

@@ -345,10 +345,14 @@ TrajectoryView3D::Grid TrajectoryView3D::groundGrid() const
     Grid grid;
     const double extent_m = std::max({sceneMax_m_.x() - sceneMin_m_.x(), sceneMax_m_.y() - sceneMin_m_.y(), 1.0});
     grid.step_m = niceStep(extent_m / 6.0);
-    grid.xMin = std::floor(sceneMin_m_.x() / grid.step_m) * grid.step_m;
-    grid.xMax = std::ceil(sceneMax_m_.x() / grid.step_m) * grid.step_m;
-    grid.yMin = std::floor(sceneMin_m_.y() / grid.step_m) * grid.step_m;
-    grid.yMax = std::ceil(sceneMax_m_.y() / grid.step_m) * grid.step_m;
+    // A walk that starts at 0 and wobbles to -1 cm should not earn a whole extra row of cells.
+    const double slack = 0.1 * grid.step_m;
+    const auto down = [&grid, slack](double v) { return std::floor((v + slack) / grid.step_m) * grid.step_m; };
+    const auto up = [&grid, slack](double v) { return std::ceil((v - slack) / grid.step_m) * grid.step_m; };
+    grid.xMin = down(sceneMin_m_.x());
+    grid.xMax = up(sceneMax_m_.x());
+    grid.yMin = down(sceneMin_m_.y());
+    grid.yMax = up(sceneMax_m_.y());
     // A straight walk has no width: give it two cells so the grid still reads as a floor.
     if (grid.xMax - grid.xMin < 2.0 * grid.step_m) {
         grid.xMin -= grid.step_m;

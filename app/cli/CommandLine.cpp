@@ -22,6 +22,9 @@ std::string usageText()
     return R"(Usage:
   footpath-cli process INPUT [import options] [--params preset.json] [--set name=value ...]
                              [--trajectory out.csv] [--steps out.csv] [--summary out.json]
+                             [--summary-csv out.csv] [--parameters-csv out.csv]
+  footpath-cli report INPUT --pdf out.pdf [--page-size a4|letter] [import options]
+                            [--params preset.json] [--set name=value ...]
   footpath-cli eval INPUT [import options] [--params preset.json] [--set name=value ...]
                           [--reference-columns x,y,z] [--closed-loop] [--length METRES] [--json]
   footpath-cli info INPUT [import options] [--json]
@@ -102,6 +105,13 @@ const std::map<std::string, Handler>& valueOptions()
         {"--trajectory", storeText(&CommandLine::trajectoryOut)},
         {"--steps", storeText(&CommandLine::stepsOut)},
         {"--summary", storeText(&CommandLine::summaryOut)},
+        {"--summary-csv", storeText(&CommandLine::summaryCsvOut)},
+        {"--parameters-csv", storeText(&CommandLine::parametersCsvOut)},
+        {"--pdf", storeText(&CommandLine::pdfOut)},
+        {"--page-size", [](CommandLine& c, const std::string& v) {
+             c.pageSize = v;
+             return v == "a4" || v == "letter" ? std::string() : "--page-size expects a4 or letter, got '" + v + "'";
+         }},
         {"--reference-columns", [](CommandLine& c, const std::string& v) {
              c.referenceColumns = splitList(v);
              return c.referenceColumns.size() == 3 ? std::string()
@@ -150,14 +160,19 @@ std::string checkCombination(const CommandLine& c)
     if (c.input.empty())
         return "missing INPUT file";
     const bool evaluation = !c.referenceColumns.empty() || c.closedLoop || c.length_m > 0.0;
-    const bool outputs = !c.trajectoryOut.empty() || !c.stepsOut.empty() || !c.summaryOut.empty();
+    const bool outputs = !c.trajectoryOut.empty() || !c.stepsOut.empty() || !c.summaryOut.empty()
+                         || !c.summaryCsvOut.empty() || !c.parametersCsvOut.empty();
     const bool estimation = !c.paramsFile.empty() || !c.sets.empty();
     if (c.command != "eval" && evaluation)
         return "--reference-columns, --closed-loop and --length belong to eval";
     if (c.command == "process" && c.json)
         return "--json belongs to eval and info";
     if (c.command != "process" && outputs)
-        return "--trajectory, --steps and --summary belong to process";
+        return "--trajectory, --steps, --summary, --summary-csv and --parameters-csv belong to process";
+    if (c.command == "report" && c.pdfOut.empty())
+        return "report needs --pdf OUT.pdf";
+    if (c.command != "report" && !c.pdfOut.empty())
+        return "--pdf belongs to report";
     if (c.command == "info" && estimation)
         return "--params and --set belong to process and eval";
     return {};
@@ -172,8 +187,9 @@ std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& 
         return {};
     }
     out.command = args[0];
-    if (out.command != "process" && out.command != "eval" && out.command != "info" && out.command != "record")
-        return "unknown command '" + out.command + "'; expected process, eval, info or record";
+    if (out.command != "process" && out.command != "eval" && out.command != "info" && out.command != "report"
+        && out.command != "record")
+        return "unknown command '" + out.command + "'; expected process, eval, info, report or record";
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& arg = args[i];
         if (arg == "--closed-loop") {

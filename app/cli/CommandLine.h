@@ -7,7 +7,7 @@ namespace footpath::cli {
 
 /// What the user asked for, before any file is touched.
 struct CommandLine {
-    std::string command;  ///< "process", "eval", "info", "record" or "help"
+    std::string command;  ///< "process", "eval", "info", "report", "record" or "help"
     std::string input;
     // Parameters
     std::string paramsFile;
@@ -23,6 +23,11 @@ struct CommandLine {
     std::string trajectoryOut;
     std::string stepsOut;
     std::string summaryOut;
+    std::string summaryCsvOut;
+    std::string parametersCsvOut;
+    // Report
+    std::string pdfOut;
+    std::string pageSize = "a4";  ///< a4 or letter
     // Evaluation
     std::vector<std::string> referenceColumns;
     bool closedLoop = false;

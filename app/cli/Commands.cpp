@@ -172,6 +172,8 @@ int runProcess(const CommandLine& cmd)
     writeIfAsked(cmd.trajectoryOut, [&](std::ostream& out) { writeTrajectoryCsv(out, result); });
     writeIfAsked(cmd.stepsOut, [&](std::ostream& out) { writeStepsCsv(out, result); });
     writeIfAsked(cmd.summaryOut, [&](std::ostream& out) { out << summaryToJson(result.summary); });
+    writeIfAsked(cmd.summaryCsvOut, [&](std::ostream& out) { writeSummaryCsv(out, result.summary); });
+    writeIfAsked(cmd.parametersCsvOut, [&](std::ostream& out) { writeParametersCsv(out, params); });
     const Summary& s = result.summary;
     std::printf("%s: %zu samples, %.2f s, %zu steps, path %.3f m, end-to-start %.3f m (%.2f %%), %.3f s\n",
                 cmd.input.c_str(), s.samples, s.duration_s, s.steps, s.pathLength_m, s.endToStart_m, s.endToStartPct,

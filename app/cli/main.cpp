@@ -2,6 +2,7 @@
 #include "cli/CliSupport.h"
 #include "cli/Commands.h"
 #include "cli/RecordCommand.h"
+#include "cli/ReportCommand.h"
 
 #include <exception>
 #include <iostream>
@@ -26,6 +27,8 @@ int dispatch(const std::vector<std::string>& args)
         return runInfo(cmd);
     if (cmd.command == "record")
         return runRecord(cmd);
+    if (cmd.command == "report")
+        return runReport(cmd);
     return cmd.command == "process" ? runProcess(cmd) : runEval(cmd);
 }
 

@@ -97,6 +97,7 @@ void MainWindow::createViews()
     splitter->addWidget(signalTabs_);
     splitter->setStretchFactor(0, 1);
     splitter->setStretchFactor(1, 1);
+    splitter->setSizes({600, 600});  // the path deserves as much room as the signals
     setCentralWidget(splitter);
 }
 
@@ -330,7 +331,6 @@ void MainWindow::onLoaded(const QString& path, const std::shared_ptr<const Impor
     signalPlots_->setRecording(recording);
     flags_->setRecording(recording);
     summary_->setRecording(recording);
-    trajectory2D_->setReference(recording->reference.positions_m);
     session_->setRecording(recording, result->info, path);
 }
 
@@ -362,6 +362,12 @@ void MainWindow::showResult()
     }
     trajectory2D_->setResult(result);
     trajectory3D_->setResult(result);
+    // The reference is drawn in the estimate's frame, aligned as ARMSE aligns it.
+    const std::vector<Eigen::Vector3d> reference =
+        session_->recording() ? alignReferenceToEstimate(session_->recording()->reference.positions_m, result->position_m)
+                              : std::vector<Eigen::Vector3d>();
+    trajectory2D_->setReference(reference);
+    trajectory3D_->setReference(reference);
     const Summary& s = result->summary;
     status_->setText(tr("%1 samples, %2 steps, path %3 m, end to start %4 m (%5 %), estimated in %6 ms")
                          .arg(s.samples)
