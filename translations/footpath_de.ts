@@ -93,7 +93,7 @@
     </message>
     <message>
         <source>Default</source>
-        <translation>Standardwert</translation>
+        <translation>Standard</translation>
     </message>
     <message>
         <source>Unit</source>
@@ -772,7 +772,7 @@
     </message>
     <message>
         <source>Units in file</source>
-        <translation>Einheiten in der Datei</translation>
+        <translation>Dateieinheiten</translation>
     </message>
     <message>
         <source>Gaps</source>
@@ -910,12 +910,12 @@
     </message>
     <message>
         <source>std of |a|</source>
-        <translation>Std.-Abw. von |a|</translation>
+        <translation>SD von |a|</translation>
     </message>
     <message>
         <source>std of |a|
 (m/s²)</source>
-        <translation>Std.-Abw. |a|
+        <translation>SD |a|
 (m/s²)</translation>
     </message>
     <message>
@@ -938,7 +938,7 @@
     </message>
     <message>
         <source>max std = %1 m/s²</source>
-        <translation>max Std.-Abw. = %1 m/s²</translation>
+        <translation>max SD = %1 m/s²</translation>
     </message>
     <message>
         <source>max |ω| = %1 rad/s</source>
@@ -985,7 +985,7 @@
     </message>
     <message>
         <source>Stride time (s)</source>
-        <translation>Doppelschrittdauer (s)</translation>
+        <translation>Doppelschritt (s)</translation>
     </message>
     <message>
         <source>x (m)</source>
@@ -1109,7 +1109,7 @@
     </message>
     <message>
         <source>000 steps/min (00.0 strides/min)</source>
-        <translation>000 Schritte/min (00.0 Doppelschritte/min)</translation>
+        <translation>000/min (00.0 Doppelschritte/min)</translation>
     </message>
     <message>
         <source>%1 m</source>
@@ -1125,7 +1125,7 @@
     </message>
     <message>
         <source>%1 steps/min (%2 strides/min)</source>
-        <translation>%1 Schritte/min (%2 Doppelschritte/min)</translation>
+        <translation>%1/min (%2 Doppelschritte/min)</translation>
     </message>
     <message>
         <source>%1 ± %2 m</source>
@@ -1263,7 +1263,7 @@
     </message>
     <message>
         <source>Shadow on the floor</source>
-        <translation>Schatten auf dem Boden</translation>
+        <translation>Bodenschatten</translation>
     </message>
     <message>
         <source>Reference</source>

@@ -113,7 +113,7 @@
     </message>
     <message>
         <source>Step</source>
-        <translation>步</translation>
+        <translation>步序</translation>
     </message>
     <message>
         <source>Stance from (s)</source>
@@ -209,7 +209,7 @@
     </message>
     <message>
         <source>step</source>
-        <translation>步</translation>
+        <translation>步序</translation>
     </message>
     <message>
         <source>stride length (m)</source>
@@ -880,15 +880,15 @@
     <name>footpath::StanceFlagsPlot</name>
     <message>
         <source>C1: |a| in range</source>
-        <translation>C1：|a| 在范围内</translation>
+        <translation>C1: |a| 在范围内</translation>
     </message>
     <message>
         <source>C2: |a| steady</source>
-        <translation>C2：|a| 平稳</translation>
+        <translation>C2: |a| 平稳</translation>
     </message>
     <message>
         <source>C3: |ω| small</source>
-        <translation>C3：|ω| 较小</translation>
+        <translation>C3: |ω| 较小</translation>
     </message>
     <message>
         <source>C = C1·C2·C3</source>
@@ -965,7 +965,7 @@
     <name>footpath::SummaryPanel</name>
     <message>
         <source>Step</source>
-        <translation>步</translation>
+        <translation>步序</translation>
     </message>
     <message>
         <source>Start (s)</source>

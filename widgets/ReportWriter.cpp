@@ -23,7 +23,8 @@ namespace {
 
 QString tr(const char* text)
 {
-    return QCoreApplication::translate("ReportWriter", text);
+    // lupdate files these strings under the namespace's context.
+    return QCoreApplication::translate("footpath", text);
 }
 
 QString number(double value, int decimals)
