@@ -193,19 +193,25 @@ void drawBars(QPainter& painter, const QRectF& target, const QVector<double>& ke
     drawPlot(painter, &plot, target, logicalWidth);
 }
 
-/// Equal-width bins over the values' range.
-std::pair<QVector<double>, QVector<double>> histogram(const std::vector<double>& values, int bins)
+/// The summary panel's bins (robust range, outliers in end bars), as bar positions and heights.
+std::pair<QVector<double>, QVector<double>> histogramBars(const std::vector<double>& values, double minimumBinWidth,
+                                                          double& binWidth)
 {
+    const Histogram h = makeHistogram(values, minimumBinWidth);
+    binWidth = h.binWidth > 0.0 ? h.binWidth : minimumBinWidth;
     QVector<double> centres, counts;
-    if (values.empty())
-        return {centres, counts};
-    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-    const double width = std::max((*hi - *lo) / bins, 1e-6);
-    counts.fill(0.0, bins);
-    for (double v : values)
-        counts[std::min(bins - 1, int((v - *lo) / width))] += 1.0;
-    for (int b = 0; b < bins; ++b)
-        centres << *lo + (b + 0.5) * width;
+    if (h.below > 0) {
+        centres << h.firstEdge - 0.5 * binWidth;
+        counts << h.below;
+    }
+    for (std::size_t b = 0; b < h.counts.size(); ++b) {
+        centres << h.binCentre(b);
+        counts << h.counts[b];
+    }
+    if (h.above > 0) {
+        centres << h.lastEdge() + 0.5 * binWidth;
+        counts << h.above;
+    }
     return {centres, counts};
 }
 
@@ -325,14 +331,13 @@ void drawGaitFigures(PageComposer& page, QPainter& painter, const GaitStatistics
     page.figure(tr("Figure 7. Stance duration per step."), page.mm(50), [&](const QRectF& r) {
         drawBars(painter, r, stanceSteps, stances, tr("stance phase"), tr("stance duration (s)"), 0.7);
     });
-    const auto [strideBins, strideCounts] = histogram(g.strideLengths_m, 12);
-    const auto [stanceBins, stanceCounts] = histogram(g.stanceDurations_s, 12);
+    double strideWidth = 0.0, stanceWidth = 0.0;
+    const auto [strideBins, strideCounts] = histogramBars(g.strideLengths_m, 0.01, strideWidth);
+    const auto [stanceBins, stanceCounts] = histogramBars(g.stanceDurations_s, 0.01, stanceWidth);
     page.figure(tr("Figure 8. Histograms of stride length (left) and stance duration (right)."), page.mm(50),
                 [&](const QRectF& r) {
                     const QRectF left(r.left(), r.top(), r.width() / 2 - page.mm(2), r.height());
                     const QRectF right(r.center().x() + page.mm(2), r.top(), r.width() / 2 - page.mm(2), r.height());
-                    const double strideWidth = strideBins.size() > 1 ? strideBins[1] - strideBins[0] : 0.1;
-                    const double stanceWidth = stanceBins.size() > 1 ? stanceBins[1] - stanceBins[0] : 0.1;
                     painter.save();
                     drawBars(painter, left, strideBins, strideCounts, tr("stride length (m)"), tr("strides"),
                              strideWidth * 0.9, 380);
