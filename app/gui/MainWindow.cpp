@@ -3,6 +3,7 @@
 #include "AnalysisSession.h"
 #include "AppSettings.h"
 #include "ImportDialog.h"
+#include "LivePanel.h"
 #include "ParameterPanel.h"
 #include "RecordedInputPanel.h"
 #include "RecordingLoader.h"
@@ -106,9 +107,8 @@ void MainWindow::createDocks()
     input_ = new RecordedInputPanel(this);
     parameters_ = new ParameterPanel(this);
     summary_ = new SummaryPanel(this);
-    auto* live = new QLabel(tr("Live input from an Xsens MTi over a serial port comes here."), this);
-    live->setWordWrap(true);
-    live->setAlignment(Qt::AlignCenter);
+    auto* live = new LivePanel(this);
+    connect(live, &LivePanel::recordingFinished, this, [this](const QString& path) { openRecording(path); });
     QDockWidget* inputDock = dock(this, tr("Recorded input"), "inputDock", input_, Qt::LeftDockWidgetArea);
     QDockWidget* liveDock = dock(this, tr("Live input"), "liveDock", live, Qt::LeftDockWidgetArea);
     tabifyDockWidget(inputDock, liveDock);
