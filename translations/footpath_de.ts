@@ -407,6 +407,149 @@
     </message>
 </context>
 <context>
+    <name>footpath::LivePanel</name>
+    <message>
+        <source>A serial port, or type a path such as the emulator&apos;s pseudo-terminal</source>
+        <translation>Eine serielle Schnittstelle, oder geben Sie einen Pfad ein, etwa das Pseudo-Terminal des Emulators</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>Auto (probe)</source>
+        <translation>Automatisch (erkennen)</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>Record...</source>
+        <translation>Aufzeichnen...</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Schnittstelle:</translation>
+    </message>
+    <message>
+        <source>Baud:</source>
+        <translation>Baud:</translation>
+    </message>
+    <message>
+        <source>Rate:</source>
+        <translation>Rate:</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Device ID:</source>
+        <translation>Geräte-ID:</translation>
+    </message>
+    <message>
+        <source>Product code:</source>
+        <translation>Produktcode:</translation>
+    </message>
+    <message>
+        <source>Firmware:</source>
+        <translation>Firmware:</translation>
+    </message>
+    <message>
+        <source>Counters</source>
+        <translation>Zähler</translation>
+    </message>
+    <message>
+        <source>Samples:</source>
+        <translation>Abtastwerte:</translation>
+    </message>
+    <message>
+        <source>Lost packets:</source>
+        <translation>Verlorene Pakete:</translation>
+    </message>
+    <message>
+        <source>Checksum errors:</source>
+        <translation>Prüfsummenfehler:</translation>
+    </message>
+    <message>
+        <source>Resyncs:</source>
+        <translation>Neusynchronisierungen:</translation>
+    </message>
+    <message>
+        <source>estimate lags by %1 s (detector look-ahead)</source>
+        <translation>Schätzung hinkt um %1 s hinterher (Vorausschau des Detektors)</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>Aufzeichnung nach %1</translation>
+    </message>
+    <message>
+        <source>Recording starts when connected: %1</source>
+        <translation>Aufzeichnung beginnt beim Verbinden: %1</translation>
+    </message>
+    <message>
+        <source>Choose a port or type its path.</source>
+        <translation>Wählen Sie eine Schnittstelle oder geben Sie ihren Pfad ein.</translation>
+    </message>
+    <message>
+        <source>Record to</source>
+        <translation>Aufzeichnen nach</translation>
+    </message>
+    <message>
+        <source>Xsens MT binary (*.mtb)</source>
+        <translation>Xsens-MT-Binärdatei (*.mtb)</translation>
+    </message>
+    <message>
+        <source>Connecting...</source>
+        <translation>Verbindung wird hergestellt...</translation>
+    </message>
+    <message>
+        <source>Streaming</source>
+        <translation>Datenstrom läuft</translation>
+    </message>
+    <message>
+        <source>Stopping...</source>
+        <translation>Wird beendet...</translation>
+    </message>
+    <message>
+        <source>Recording stopped: %1</source>
+        <translation>Aufzeichnung angehalten: %1</translation>
+    </message>
+    <message>
+        <source>Recording saved to %1</source>
+        <translation>Aufzeichnung gespeichert unter %1</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Getrennt</translation>
+    </message>
+    <message>
+        <source>Session ended: %1</source>
+        <translation>Sitzung beendet: %1</translation>
+    </message>
+    <message>
+        <source>live</source>
+        <translation>live</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
+    </message>
+    <message>
+        <source>Stop recording</source>
+        <translation>Aufzeichnung beenden</translation>
+    </message>
+</context>
+<context>
     <name>footpath::MainWindow</name>
     <message>
         <source>Footpath</source>
@@ -431,10 +574,6 @@
     <message>
         <source>Trajectory 3D</source>
         <translation>Trajektorie 3D</translation>
-    </message>
-    <message>
-        <source>Live input from an Xsens MTi over a serial port comes here.</source>
-        <translation>Hier erscheint künftig die Live-Eingabe eines Xsens MTi über eine serielle Schnittstelle.</translation>
     </message>
     <message>
         <source>Recorded input</source>

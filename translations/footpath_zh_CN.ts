@@ -407,6 +407,149 @@
     </message>
 </context>
 <context>
+    <name>footpath::LivePanel</name>
+    <message>
+        <source>A serial port, or type a path such as the emulator&apos;s pseudo-terminal</source>
+        <translation>串口，或输入路径，例如模拟器的伪终端</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>刷新</translation>
+    </message>
+    <message>
+        <source>Auto (probe)</source>
+        <translation>自动（探测）</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Record...</source>
+        <translation>记录...</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>端口：</translation>
+    </message>
+    <message>
+        <source>Baud:</source>
+        <translation>波特率：</translation>
+    </message>
+    <message>
+        <source>Rate:</source>
+        <translation>采样率：</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>设备</translation>
+    </message>
+    <message>
+        <source>Device ID:</source>
+        <translation>设备 ID：</translation>
+    </message>
+    <message>
+        <source>Product code:</source>
+        <translation>产品代码：</translation>
+    </message>
+    <message>
+        <source>Firmware:</source>
+        <translation>固件：</translation>
+    </message>
+    <message>
+        <source>Counters</source>
+        <translation>计数器</translation>
+    </message>
+    <message>
+        <source>Samples:</source>
+        <translation>采样点数：</translation>
+    </message>
+    <message>
+        <source>Lost packets:</source>
+        <translation>丢失数据包：</translation>
+    </message>
+    <message>
+        <source>Checksum errors:</source>
+        <translation>校验和错误：</translation>
+    </message>
+    <message>
+        <source>Resyncs:</source>
+        <translation>重新同步：</translation>
+    </message>
+    <message>
+        <source>estimate lags by %1 s (detector look-ahead)</source>
+        <translation>估计滞后 %1 s（检测器前瞻）</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>正在记录到 %1</translation>
+    </message>
+    <message>
+        <source>Recording starts when connected: %1</source>
+        <translation>连接后开始记录：%1</translation>
+    </message>
+    <message>
+        <source>Choose a port or type its path.</source>
+        <translation>请选择端口或输入其路径。</translation>
+    </message>
+    <message>
+        <source>Record to</source>
+        <translation>记录到</translation>
+    </message>
+    <message>
+        <source>Xsens MT binary (*.mtb)</source>
+        <translation>Xsens MT 二进制文件 (*.mtb)</translation>
+    </message>
+    <message>
+        <source>Connecting...</source>
+        <translation>正在连接...</translation>
+    </message>
+    <message>
+        <source>Streaming</source>
+        <translation>正在接收数据流</translation>
+    </message>
+    <message>
+        <source>Stopping...</source>
+        <translation>正在停止...</translation>
+    </message>
+    <message>
+        <source>Recording stopped: %1</source>
+        <translation>记录已停止：%1</translation>
+    </message>
+    <message>
+        <source>Recording saved to %1</source>
+        <translation>记录已保存到 %1</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>已断开连接</translation>
+    </message>
+    <message>
+        <source>Session ended: %1</source>
+        <translation>会话已结束：%1</translation>
+    </message>
+    <message>
+        <source>live</source>
+        <translation>实时</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>断开连接</translation>
+    </message>
+    <message>
+        <source>Stop recording</source>
+        <translation>停止记录</translation>
+    </message>
+</context>
+<context>
     <name>footpath::MainWindow</name>
     <message>
         <source>Footpath</source>
@@ -431,10 +574,6 @@
     <message>
         <source>Trajectory 3D</source>
         <translation>3D 轨迹</translation>
-    </message>
-    <message>
-        <source>Live input from an Xsens MTi over a serial port comes here.</source>
-        <translation>此处将显示通过串口连接的 Xsens MTi 的实时输入。</translation>
     </message>
     <message>
         <source>Recorded input</source>
