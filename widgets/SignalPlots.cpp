@@ -1,5 +1,7 @@
 #include "SignalPlots.h"
 
+#include "TimeAxisNavigation.h"
+
 #include <QApplication>
 #include <QCheckBox>
 #include <QHBoxLayout>
@@ -21,8 +23,6 @@ namespace {
 using Channel = SignalPlots::Channel;
 using Row = SignalPlots::Row;
 
-constexpr double kZoomInFactor = 0.8;  // +/- keys: a fifth of the visible time per press
-constexpr double kPanFraction = 0.1;   // Left/Right keys: a tenth of the visible time per press
 constexpr double kValueMargin = 1.1;   // value axes get 5 % air above and below the data
 const QString kStanceLayer = QStringLiteral("stance");
 const QString kCursorLayer = QStringLiteral("cursor");
@@ -515,26 +515,11 @@ void SignalPlots::onRowRangeChanged(const QCPRange& range)
 
 void SignalPlots::keyPressEvent(QKeyEvent* event)
 {
-    const double centre = (shownFrom_s_ + shownTo_s_) / 2.0;
-    const double width = shownTo_s_ - shownFrom_s_;
-    switch (event->key()) {
-    case Qt::Key_Plus:
-    case Qt::Key_Equal:  // '+' without Shift on most layouts
-        setTimeRange(centre - kZoomInFactor * width / 2.0, centre + kZoomInFactor * width / 2.0);
-        break;
-    case Qt::Key_Minus:
-        setTimeRange(centre - width / kZoomInFactor / 2.0, centre + width / kZoomInFactor / 2.0);
-        break;
-    case Qt::Key_Left:
-        setTimeRange(shownFrom_s_ - kPanFraction * width, shownTo_s_ - kPanFraction * width);
-        break;
-    case Qt::Key_Right:
-        setTimeRange(shownFrom_s_ + kPanFraction * width, shownTo_s_ + kPanFraction * width);
-        break;
-    case Qt::Key_Home:
+    if (event->key() == Qt::Key_Home) {
         showAll();
-        break;
-    default:
+    } else if (const std::optional<QCPRange> range = keyNavigatedRange(event->key(), shownFrom_s_, shownTo_s_)) {
+        setTimeRange(range->lower, range->upper);
+    } else {
         QWidget::keyPressEvent(event);
         return;
     }
@@ -550,7 +535,7 @@ void SignalPlots::onMouseRelease(QMouseEvent* event)
 {
     // A drag pans the time axis; only a click that stayed put places the cursor.
     const QPoint pos = event->position().toPoint();
-    if (event->button() != Qt::LeftButton || (pos - pressPos_).manhattanLength() > QApplication::startDragDistance())
+    if (!isClick(pressPos_, pos, event->button()))
         return;
     for (const RowParts& row : rows_) {
         if (row.rect->layout() != nullptr && row.rect->rect().contains(pos)) {
@@ -564,14 +549,7 @@ void SignalPlots::onMouseRelease(QMouseEvent* event)
 
 void SignalPlots::renderTo(QPainter& painter, const QRect& target)
 {
-    // QCustomPlot draws only through its own QCPPainter; a QPicture records the drawing as vector
-    // commands that the caller's painter (a PDF page, say) replays.
-    QPicture picture;
-    {
-        QCPPainter recorder(&picture);
-        plot_->toPainter(&recorder, target.width(), target.height());
-    }
-    painter.drawPicture(target.topLeft(), picture);
+    renderPlotTo(plot_, painter, target);
 }
 
 }  // namespace footpath

@@ -1,5 +1,7 @@
 #include "StanceFlagsPlot.h"
 
+#include "TimeAxisNavigation.h"
+
 #include "detect/StanceDetector.h"
 
 #include <QApplication>
@@ -22,8 +24,6 @@ using Threshold = StanceFlagsPlot::Threshold;
 
 constexpr double kLaneSpacing = 1.5;   // a lane is 1 high; the rest is the gap to the next
 constexpr double kLaneMargin = 0.3;    // air above the top lane and below the bottom one
-constexpr double kZoomInFactor = 0.8;  // +/- keys: a fifth of the visible time per press
-constexpr double kPanFraction = 0.1;   // Left/Right keys: a tenth of the visible time per press
 constexpr double kBandHeadroom = 1.5;  // |a| row: this many band widths above and below the band
 constexpr double kMinimumAccBand_mps2 = 0.5;  // framing for (invalid) parameters with no band
 constexpr double kThresholdHeadroom = 3.0;    // std and |w| rows: from 0 to this many thresholds
@@ -507,26 +507,11 @@ void StanceFlagsPlot::onRowRangeChanged(const QCPRange& range)
 
 void StanceFlagsPlot::keyPressEvent(QKeyEvent* event)
 {
-    const double centre = (shownFrom_s_ + shownTo_s_) / 2.0;
-    const double width = shownTo_s_ - shownFrom_s_;
-    switch (event->key()) {
-    case Qt::Key_Plus:
-    case Qt::Key_Equal:  // '+' without Shift on most layouts
-        setTimeRange(centre - kZoomInFactor * width / 2.0, centre + kZoomInFactor * width / 2.0);
-        break;
-    case Qt::Key_Minus:
-        setTimeRange(centre - width / kZoomInFactor / 2.0, centre + width / kZoomInFactor / 2.0);
-        break;
-    case Qt::Key_Left:
-        setTimeRange(shownFrom_s_ - kPanFraction * width, shownTo_s_ - kPanFraction * width);
-        break;
-    case Qt::Key_Right:
-        setTimeRange(shownFrom_s_ + kPanFraction * width, shownTo_s_ + kPanFraction * width);
-        break;
-    case Qt::Key_Home:
+    if (event->key() == Qt::Key_Home) {
         showAll();
-        break;
-    default:
+    } else if (const std::optional<QCPRange> range = keyNavigatedRange(event->key(), shownFrom_s_, shownTo_s_)) {
+        setTimeRange(range->lower, range->upper);
+    } else {
         QWidget::keyPressEvent(event);
         return;
     }
@@ -542,7 +527,7 @@ void StanceFlagsPlot::onMouseRelease(QMouseEvent* event)
 {
     // A drag pans the time axis; only a click that stayed put places the cursor.
     const QPoint pos = event->position().toPoint();
-    if (event->button() != Qt::LeftButton || (pos - pressPos_).manhattanLength() > QApplication::startDragDistance())
+    if (!isClick(pressPos_, pos, event->button()))
         return;
     for (const RowParts& row : rows_) {
         if (row.rect->layout() != nullptr && row.rect->rect().contains(pos)) {
@@ -556,14 +541,7 @@ void StanceFlagsPlot::onMouseRelease(QMouseEvent* event)
 
 void StanceFlagsPlot::renderTo(QPainter& painter, const QRect& target)
 {
-    // QCustomPlot draws only through its own QCPPainter; a QPicture records the drawing as vector
-    // commands that the caller's painter (a PDF page, say) replays.
-    QPicture picture;
-    {
-        QCPPainter recorder(&picture);
-        plot_->toPainter(&recorder, target.width(), target.height());
-    }
-    painter.drawPicture(target.topLeft(), picture);
+    renderPlotTo(plot_, painter, target);
 }
 
 }  // namespace footpath
