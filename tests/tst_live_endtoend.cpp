@@ -5,6 +5,7 @@
 // values, the packets lost on the way were counted, and the .mtb and the CSV re-open with the
 // same samples. A second run pulls the plug mid-stream and checks that nothing received before
 // the disconnect is lost. Device time runs 10x faster than wall time to keep the run short.
+#include "LiveTestSupport.h"
 #include "io/Import.h"
 
 #include <QDir>
@@ -22,11 +23,9 @@
 #ifndef FOOTPATH_CLI
 #error "FOOTPATH_CLI must name the footpath-cli binary"
 #endif
-#ifndef FOOTPATH_MTI_SIM
-#error "FOOTPATH_MTI_SIM must name the footpath-mti-sim binary"
-#endif
 
 using namespace footpath;
+using namespace livetest;
 
 namespace {
 
@@ -36,47 +35,12 @@ const QStringList kFaults = {QStringLiteral("--seed"), QStringLiteral("11"), QSt
                              QStringLiteral("--junk-rate"), QStringLiteral("0.02"), QStringLiteral("--speed"),
                              QStringLiteral("10")};
 
-/// One data message as the emulator's sidecar log lists it.
-struct Sent {
-    unsigned counter = 0;
-    unsigned sampleTimeFine = 0;
-    QString fate;  ///< sent, dropped, corrupted
-    std::array<double, 6> values{};
-};
-
 /// One row of the recorded CSV.
 struct Received {
     double time_s = 0.0;
     std::array<double, 6> values{};
     unsigned counter = 0;
 };
-
-QList<QByteArray> dataLines(const QString& path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return {};
-    QList<QByteArray> lines = file.readAll().split('\n');
-    lines.removeFirst();  // header
-    lines.removeAll(QByteArray());
-    return lines;
-}
-
-std::vector<Sent> readSentLog(const QString& path)
-{
-    std::vector<Sent> sent;
-    for (const QByteArray& line : dataLines(path)) {
-        const QList<QByteArray> cells = line.split(',');
-        Sent s;
-        s.counter = cells.at(0).toUInt();
-        s.sampleTimeFine = cells.at(1).toUInt();
-        s.fate = QString::fromLatin1(cells.at(2));
-        for (int i = 0; i < 6; ++i)
-            s.values[std::size_t(i)] = cells.at(3 + i).toDouble();
-        sent.push_back(s);
-    }
-    return sent;
-}
 
 std::vector<Received> readRecordedCsv(const QString& path)
 {
@@ -128,60 +92,12 @@ std::uint64_t lastCounter(const QString& out, const QString& label)
     return value;
 }
 
-/// footpath-mti-sim on a pty reachable through `link`.
-class Emulator {
-public:
-    ~Emulator() { stop(); }
-
-    /// Empty on success, else why the emulator did not come up.
-    QString start(const QString& link, const QString& log, const QStringList& extra)
-    {
-        process_.start(QString::fromUtf8(FOOTPATH_MTI_SIM),
-                       QStringList{QStringLiteral("--simulate"), QStringLiteral("--link"), link, QStringLiteral("--log"),
-                                   log}
-                           + extra);
-        if (!process_.waitForStarted(5000))
-            return QStringLiteral("footpath-mti-sim did not start: ") + process_.errorString();
-        for (int waited = 0; waited < 10000 && !QFileInfo(link).isSymLink(); waited += 10) {
-            if (process_.waitForFinished(10))
-                return QString::fromLocal8Bit(process_.readAllStandardError());
-        }
-        return QFileInfo(link).isSymLink() ? QString() : QStringLiteral("the emulator's port did not appear");
-    }
-    bool waitForExit() { return process_.waitForFinished(10000); }
-    void stop()
-    {
-        if (process_.state() == QProcess::NotRunning)
-            return;
-        process_.terminate();
-        if (!process_.waitForFinished(5000))
-            process_.kill();
-        process_.waitForFinished(1000);
-    }
-
-private:
-    QProcess process_;
-};
-
-/// The sent messages the host should have: sent intact, from the first received one on, within
-/// `window_s` of device time (all if 0).
-std::vector<Sent> expectedSamples(const std::vector<Sent>& sent, unsigned firstTime, double window_s)
-{
-    std::vector<Sent> expected;
-    for (const Sent& s : sent) {
-        const double age_s = (double(s.sampleTimeFine) - double(firstTime)) / 10000.0;
-        if (s.fate == QLatin1String("sent") && age_s >= 0.0 && (window_s <= 0.0 || age_s < window_s - 1e-9))
-            expected.push_back(s);
-    }
-    return expected;
-}
-
 /// Messages that did not arrive intact between the first and the last received one.
 std::uint64_t lostBetween(const std::vector<Sent>& sent, unsigned firstCounter, unsigned lastCounter)
 {
     std::uint64_t lost = 0;
     for (const Sent& s : sent)
-        lost += s.counter > firstCounter && s.counter < lastCounter && s.fate != QLatin1String("sent");
+        lost += s.counter > firstCounter && s.counter < lastCounter && !s.intact();
     return lost;
 }
 

@@ -59,7 +59,7 @@ private slots:
         window.openRecording(path_);
         QVERIFY(shown.wait(30000));
         QCOMPARE(window.session()->recording()->samples.size(), samples_);
-        const auto* plots = window.findChild<SignalPlots*>();
+        const auto* plots = window.findChild<SignalPlots*>(QStringLiteral("signalPlots"));
         QVERIFY(plots);
         QCOMPARE(std::size_t(plots->graph(SignalPlots::Channel::AccX)->dataCount()), samples_);
         QVERIFY(window.session()->result()->summary.steps > 10);

@@ -353,6 +353,42 @@ private slots:
         QVERIFY2(view.plot()->xAxis->range().size() < 0.95 * fittedWidth, "resizing undid the user's zoom");
     }
 
+    void followingAGrowingPathKeepsTheUsersZoom()
+    {
+        TrajectoryView2D view;
+        view.resize(600, 400);
+        const Result walk = longWalk(60.0, 100.0);
+        const auto firstSeconds = [&](std::size_t samples) {
+            Result part;
+            part.time_s.assign(walk.time_s.begin(), walk.time_s.begin() + std::ptrdiff_t(samples));
+            part.position_m.assign(walk.position_m.begin(), walk.position_m.begin() + std::ptrdiff_t(samples));
+            return std::make_shared<const Result>(part);
+        };
+        view.followResult(firstSeconds(500));
+        (void)view.grab();
+        view.followResult(firstSeconds(3000));  // untouched: the view follows the path
+        (void)view.grab();
+        const Eigen::Vector3d newest = walk.position_m[2999];
+        QVERIFY(view.plot()->xAxis->range().contains(newest.x()) && view.plot()->yAxis->range().contains(newest.y()));
+
+        QWheelEvent wheel(QPointF(300, 200), view.plot()->mapToGlobal(QPointF(300, 200)), QPoint(), QPoint(0, 480),
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(view.plot(), &wheel);
+        (void)view.grab();
+        const QCPRange zoomed = view.plot()->xAxis->range();
+        view.followResult(firstSeconds(6000));
+        (void)view.grab();
+        const QCPRange kept = view.plot()->xAxis->range();  // the user's zoom stays while the path grows
+        QVERIFY(std::abs(kept.lower - zoomed.lower) < 1e-9 && std::abs(kept.upper - zoomed.upper) < 1e-9);
+
+        QMouseEvent doubleClick(QEvent::MouseButtonDblClick, QPointF(300, 200), view.plot()->mapToGlobal(QPointF(300, 200)),
+                                Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(view.plot(), &doubleClick);
+        view.followResult(firstSeconds(6000));
+        (void)view.grab();
+        QVERIFY2(view.plot()->xAxis->range().size() > 1.5 * zoomed.size(), "a double-click should fit and follow again");
+    }
+
     void thirtyMinutePathRedrawsWellUnderHalfASecond()
     {
         const Result walk = longWalk(30.0 * 60.0, 100.0);

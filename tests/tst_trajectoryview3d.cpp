@@ -160,6 +160,36 @@ private slots:
         QVERIFY(std::abs(view.elevation_deg()) > 10.0 && std::abs(view.elevation_deg()) < 80.0);  // oblique
     }
 
+    void followingAGrowingPathKeepsTheUsersCamera()
+    {
+        TrajectoryView3D view;
+        view.resize(500, 400);
+        const QRectF target(QPointF(0, 0), QSizeF(view.size()));
+        const Result walk = longWalk(6000, 100.0);
+        const auto firstSamples = [&](std::size_t samples) {
+            Result part = walk;
+            part.time_s.resize(samples);
+            part.position_m.resize(samples);
+            part.flags.stance.resize(samples);
+            part.steps.clear();
+            return std::make_shared<const Result>(part);
+        };
+        view.followResult(firstSamples(300));
+        view.followResult(firstSamples(3000));  // untouched: the camera follows the path
+        QVERIFY(target.contains(projectedBounds(view, firstSamples(3000)->position_m, target)));
+
+        wheel(view, QPoint(250, 200), 5);
+        const double zoom = view.zoom();
+        QVERIFY(zoom > 1.5);
+        view.followResult(firstSamples(6000));
+        QCOMPARE(view.zoom(), zoom);  // the user's camera stays while the path grows
+
+        view.resetView();
+        view.followResult(firstSamples(6000));
+        QCOMPARE(view.zoom(), 1.0);
+        QVERIFY(target.contains(projectedBounds(view, walk.position_m, target)));
+    }
+
     void orbitByLeftDragChangesTheImage()
     {
         TrajectoryView3D view;

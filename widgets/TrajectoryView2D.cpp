@@ -269,6 +269,10 @@ TrajectoryView2D::TrajectoryView2D(QWidget* parent)
     connect(plot_, &QCustomPlot::afterLayout, this, &TrajectoryView2D::keepEqualAxisScales);
     connect(plot_, &QCustomPlot::mousePress, this, &TrajectoryView2D::onMousePress);
     connect(plot_, &QCustomPlot::mouseRelease, this, &TrajectoryView2D::onMouseRelease);
+    connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] {
+        fitViewToData();
+        plot_->replot();
+    });
 }
 
 void TrajectoryView2D::createLegendRow()
@@ -375,6 +379,19 @@ void TrajectoryView2D::setResult(std::shared_ptr<const Result> result)
     plot_->replot();
 }
 
+void TrajectoryView2D::followResult(std::shared_ptr<const Result> result)
+{
+    if (!result) {
+        clear();
+        return;
+    }
+    result_ = std::move(result);
+    showPathAndMarkers();
+    if (!viewMovedByUser_)
+        fitViewToData();
+    plot_->replot();
+}
+
 void TrajectoryView2D::setReference(const std::vector<Eigen::Vector3d>& positions_m)
 {
     referencePositions_m_ = positions_m;
@@ -472,6 +489,7 @@ void TrajectoryView2D::fitViewToData()
     // The fixed part keeps a single point or a straight line from filling the view edge to edge.
     const double margin = 0.05 * std::max(bounds->width(), bounds->height()) + 0.1;
     viewRegion_ = bounds->adjusted(-margin, -margin, margin, margin);
+    viewMovedByUser_ = false;
     // The current ranges count as ours, so the next layout fits viewRegion_ instead of keeping them.
     lastFitted_ = visibleRegion();
     keepEqualAxisScales();
@@ -483,8 +501,10 @@ void TrajectoryView2D::keepEqualAxisScales()
     // from our last fit were panned or zoomed by the user: that becomes the region to keep.
     if (plot_->axisRect()->rect().isEmpty())
         return;
-    if (visibleRegion() != lastFitted_ || viewRegion_.isEmpty())
+    if (visibleRegion() != lastFitted_ || viewRegion_.isEmpty()) {
+        viewMovedByUser_ = viewMovedByUser_ || !viewRegion_.isEmpty();
         viewRegion_ = visibleRegion();
+    }
     fitViewRegionIntoAxisRect();
     // New ranges mean new tick labels, which may widen the margins: lay out once more and fit
     // into the final rect, so equal scales hold for what is drawn, not for the previous frame.

@@ -49,6 +49,9 @@ public:
     explicit TrajectoryView2D(QWidget* parent = nullptr);
 
     void setResult(std::shared_ptr<const Result> result);
+    /// For a path that grows (live input): refits the view unless the user has panned or zoomed
+    /// since the last fit; a double-click fits and follows again.
+    void followResult(std::shared_ptr<const Result> result);
     void showResult(const Result& result);  ///< copies; prefer setResult with the session's pointer
     void clear();  ///< removes path, markers and reference; the axes keep their range
 
@@ -108,6 +111,7 @@ private:
     /// zoomed to. Every layout fits it with equal scales, so resizing never compounds margins.
     QRectF viewRegion_;
     QRectF lastFitted_;  ///< the axis ranges we set last, to tell the user's pan/zoom from our fit
+    bool viewMovedByUser_ = false;  ///< since the last fit to the data; followResult keeps the view
 };
 
 }  // namespace footpath

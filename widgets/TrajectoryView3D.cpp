@@ -225,6 +225,16 @@ void TrajectoryView3D::setResult(std::shared_ptr<const Result> result)
     resetView();
 }
 
+void TrajectoryView3D::followResult(std::shared_ptr<const Result> result)
+{
+    result_ = std::move(result);
+    rebuildScene();
+    if (cameraMovedByUser_)
+        update();
+    else
+        resetView();
+}
+
 void TrajectoryView3D::clear()
 {
     result_.reset();
@@ -295,6 +305,7 @@ void TrajectoryView3D::resetView()
     azimuth_deg_ = kDefaultAzimuth_deg;
     elevation_deg_ = kDefaultElevation_deg;
     zoom_ = 1.0;
+    cameraMovedByUser_ = false;
     // Fit what the default camera sees of the floor grid and the paths, whatever the target, and
     // centre that (not the scene's centre, which sits off-centre once the grid is drawn).
     const Grid grid = groundGrid();
@@ -599,6 +610,8 @@ void TrajectoryView3D::mouseMoveEvent(QMouseEvent* event)
     const QPoint position = event->position().toPoint();
     const QPoint delta = position - lastMousePosition_;
     lastMousePosition_ = position;
+    if (event->buttons() & (Qt::LeftButton | Qt::RightButton | Qt::MiddleButton))
+        cameraMovedByUser_ = true;
     if (event->buttons() & Qt::LeftButton) {
         setViewAngles(azimuth_deg_ - kOrbitDegreesPerPixel * delta.x(), elevation_deg_ + kOrbitDegreesPerPixel * delta.y());
     } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
@@ -617,6 +630,7 @@ void TrajectoryView3D::wheelEvent(QWheelEvent* event)
     // Zoom about the pointer: the scene point under it stays under it.
     const QPointF fromCentre = event->position() - QRectF(rect()).center();
     const QPointF underPointer_m = fromCentre / viewTransform(rect()).pixelsPerMetre - pan_m_;
+    cameraMovedByUser_ = true;
     zoom_ = std::clamp(zoom_ * std::pow(kZoomPerWheelNotch, event->angleDelta().y() / 120.0), 0.05, 500.0);
     pan_m_ = fromCentre / viewTransform(rect()).pixelsPerMetre - underPointer_m;
     event->accept();

@@ -34,6 +34,9 @@ public:
     ~TrajectoryView3D() override;
 
     void setResult(std::shared_ptr<const Result> result);  ///< resets the camera to fit the path
+    /// For a path that grows (live input): refits the camera unless the user has orbited, panned
+    /// or zoomed since the last fit; Reset view or a double-click fits and follows again.
+    void followResult(std::shared_ptr<const Result> result);
     void showResult(const Result& result);  ///< copies; prefer setResult with the session's pointer
     void clear();  ///< removes path, markers and reference
 
@@ -111,6 +114,7 @@ private:
     QPointF fitHalfExtent_m_;
 
     QPoint lastMousePosition_;
+    bool cameraMovedByUser_ = false;  ///< since the last resetView(); followResult keeps the camera
     QWidget* toolbar_;
     QDoubleSpinBox* heightSpin_;
     QCheckBox* perspectiveCheck_;

@@ -1,5 +1,6 @@
 #include "PortDiscovery.h"
 
+#include <QFileInfo>
 #include <QSerialPortInfo>
 #include <QStringList>
 
@@ -61,6 +62,18 @@ QList<SerialPortDescription> availableSerialPorts()
         return a.isXsens() && !b.isXsens();
     });
     return ports;
+}
+
+bool serialPortPresent(const QString& portName)
+{
+    if (portName.isEmpty())
+        return false;
+    if (QFileInfo::exists(portName))  // follows links: a dangling emulator link is not present
+        return true;
+    const QList<QSerialPortInfo> ports = QSerialPortInfo::availablePorts();
+    return std::any_of(ports.begin(), ports.end(), [&](const QSerialPortInfo& info) {
+        return info.portName() == portName || info.systemLocation() == portName;
+    });
 }
 
 }  // namespace footpath

@@ -26,4 +26,8 @@ struct SerialPortDescription {
 /// are not listed by the system; the panel lets the user type such a path.
 QList<SerialPortDescription> availableSerialPorts();
 
+/// Whether `portName` can be opened again: a device node or link that exists (a replugged USB
+/// adapter, the emulator's pseudo-terminal), or a port the system lists (Windows' COM names).
+bool serialPortPresent(const QString& portName);
+
 }  // namespace footpath

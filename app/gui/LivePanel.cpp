@@ -1,10 +1,9 @@
 #include "LivePanel.h"
 
+#include "LiveViews.h"
 #include "PortDiscovery.h"
-#include "SignalPlots.h"
-#include "TrajectoryView2D.h"
-#include "nav/Parameters.h"
-#include "nav/Pipeline.h"
+#include "ReconnectOffer.h"
+#include "nav/StreamingEstimator.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -15,21 +14,18 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTimer>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
-
-#include <algorithm>
 
 namespace footpath {
 
 namespace {
 
-constexpr double kPlotWindow_s = 10.0;
-constexpr int kPlotInterval_ms = 200;      // at most 5 redraws per second
-constexpr int kEstimateInterval_ms = 500;
+constexpr int kViewInterval_ms = 200;  // at most 5 redraws per second
 
 QLabel* valueLabel(QWidget* parent)
 {
@@ -38,7 +34,41 @@ QLabel* valueLabel(QWidget* parent)
     return label;
 }
 
+RecordingPaths recordingPathsFor(const QString& mtbPath)
+{
+    const QFileInfo mtb(mtbPath);
+    return {mtbPath, mtb.dir().filePath(mtb.completeBaseName() + QStringLiteral(".csv"))};
+}
+
+/// Moves every tab of `from` to the end of `to`, keeping its label.
+void moveTabs(QTabWidget* from, QTabWidget* to)
+{
+    while (from->count() > 0) {
+        const QString label = from->tabText(0);
+        QWidget* page = from->widget(0);
+        from->removeTab(0);
+        to->addTab(page, label);
+    }
+}
+
 }  // namespace
+
+QString continuationPath(const QString& mtbPath)
+{
+    const QFileInfo mtb(mtbPath);
+    QString stem = mtb.completeBaseName();
+    int number = 2;
+    static const QRegularExpression numbered(QStringLiteral("^(.*)-(\\d+)$"));
+    if (const QRegularExpressionMatch match = numbered.match(stem); match.hasMatch()) {
+        stem = match.captured(1);
+        number = match.captured(2).toInt() + 1;
+    }
+    for (;; ++number) {
+        const QString base = mtb.dir().filePath(QStringLiteral("%1-%2").arg(stem).arg(number));
+        if (!QFileInfo::exists(base + QStringLiteral(".mtb")) && !QFileInfo::exists(base + QStringLiteral(".csv")))
+            return base + QStringLiteral(".mtb");
+    }
+}
 
 LivePanel::LivePanel(QWidget* parent)
     : QWidget(parent), session_(new DeviceSession(serialDevicePortFactory(), this))
@@ -49,15 +79,11 @@ LivePanel::LivePanel(QWidget* parent)
     updateButtons();
 }
 
-LivePanel::~LivePanel()
-{
-    estimate_.waitForFinished();
-}
+LivePanel::~LivePanel() = default;
 
-double LivePanel::latency_s()
+double LivePanel::latency_s() const
 {
-    const Parameters defaults;
-    return defaults.window_half_s + defaults.median_window_s / 2.0;
+    return StreamingEstimator::latency_s(params_);
 }
 
 void LivePanel::buildUi()
@@ -103,6 +129,8 @@ void LivePanel::buildUi()
 
     status_ = new QLabel(tr("Not connected"), this);
     status_->setWordWrap(true);
+    reconnect_ = new ReconnectOffer(this);
+    connect(reconnect_, &ReconnectOffer::reconnectRequested, this, &LivePanel::onReconnect);
 
     auto* device = new QGroupBox(tr("Device"), this);
     auto* deviceForm = new QFormLayout(device);
@@ -126,40 +154,52 @@ void LivePanel::buildUi()
     countersForm->addRow(tr("Checksum errors:"), checksumLabel_);
     countersForm->addRow(tr("Resyncs:"), resyncLabel_);
 
-    latency_ = new QLabel(tr("estimate lags by %1 s (detector look-ahead)").arg(latency_s(), 0, 'f', 3), this);
-    latency_->setObjectName(QStringLiteral("liveLatency"));
-
-    // The live views are made on the first connection (ensureViews): until then the workspace
-    // holds only its own plots, which the rest of the window (and its tests) look up by type.
-    views_ = new QSplitter(Qt::Vertical, this);
+    // The views sit here until the workspace takes them (moveViewsInto).
+    viewArea_ = new QSplitter(Qt::Vertical, this);
+    views_ = new LiveViews(viewArea_);
+    viewArea_->addWidget(views_->trajectoryTabs());
+    viewArea_->addWidget(views_->signalTabs());
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(settings);
     layout->addWidget(status_);
+    layout->addWidget(reconnect_);
     layout->addWidget(device);
     layout->addWidget(counters);
-    layout->addWidget(latency_);
-    layout->addWidget(views_, 1);
+    layout->addWidget(buildEstimateBox());
+    layout->addWidget(viewArea_, 1);
 
-    plotTimer_ = new QTimer(this);
-    plotTimer_->setInterval(kPlotInterval_ms);
-    connect(plotTimer_, &QTimer::timeout, this, &LivePanel::redrawSignals);
-    estimateTimer_ = new QTimer(this);
-    estimateTimer_->setInterval(kEstimateInterval_ms);
-    connect(estimateTimer_, &QTimer::timeout, this, &LivePanel::startEstimate);
-    connect(&estimate_, &QFutureWatcher<std::shared_ptr<const Result>>::finished, this, &LivePanel::onEstimateDone);
+    viewTimer_ = new QTimer(this);
+    viewTimer_->setInterval(kViewInterval_ms);
+    connect(viewTimer_, &QTimer::timeout, this, [this] { refreshViews(); });
+    showEstimateFigures();
 }
 
-void LivePanel::ensureViews()
+QWidget* LivePanel::buildEstimateBox()
 {
-    if (plots_)
-        return;
-    trajectory_ = new TrajectoryView2D(views_);
-    trajectory_->setMinimumHeight(200);
-    plots_ = new SignalPlots(views_);
-    plots_->setMinimumHeight(200);
-    views_->addWidget(trajectory_);
-    views_->addWidget(plots_);
+    auto* box = new QGroupBox(tr("Estimate"), this);
+    auto* form = new QFormLayout(box);
+    latency_ = valueLabel(box);
+    latency_->setObjectName(QStringLiteral("liveLatency"));
+    latency_->setToolTip(tr("The stance detector looks this far ahead (half its std window plus half its "
+                            "median window), so the estimate trails the sensor by this fixed delay."));
+    estimateState_ = valueLabel(box);
+    estimateState_->setWordWrap(true);
+    steps_ = valueLabel(box);
+    distance_ = valueLabel(box);
+    form->addRow(tr("Latency:"), latency_);
+    form->addRow(tr("State:"), estimateState_);
+    form->addRow(tr("Steps:"), steps_);
+    form->addRow(tr("Distance:"), distance_);
+    return box;
+}
+
+void LivePanel::moveViewsInto(QTabWidget* trajectoryTabs, QTabWidget* signalTabs)
+{
+    moveTabs(views_->trajectoryTabs(), trajectoryTabs);
+    moveTabs(views_->signalTabs(), signalTabs);
+    viewArea_->hide();
+    layout()->addItem(new QSpacerItem(0, 0, QSizePolicy::Minimum, QSizePolicy::Expanding));
 }
 
 void LivePanel::wireSession()
@@ -202,28 +242,25 @@ void LivePanel::connectTo(const QString& port)
 {
     if (session_->state() != SessionState::Idle)
         return;
+    reconnect_->withdraw();
     port_->setEditText(port);
+    lastPort_ = port;
     SessionSettings settings;
     settings.portName = port;
     const int baud = baud_->currentData().toInt();
     settings.probeBaudRates = baud == 0;
     settings.baud = baud == 0 ? 115200u : static_cast<std::uint32_t>(baud);
     settings.rate_hz = static_cast<std::uint16_t>(rate_->value());
-    if (!recordingPath_.isEmpty() && !recordingActive_) {
-        // Asked to record before connecting: record from the first sample on.
-        const QFileInfo mtb(recordingPath_);
-        settings.recording = {recordingPath_, mtb.dir().filePath(mtb.completeBaseName() + QStringLiteral(".csv"))};
-    }
-    samples_.clear();
-    plotDirty_ = false;
-    estimatedSamples_ = 0;
+    if (!recordingPath_.isEmpty() && !recordingActive_)
+        settings.recording = recordingPathsFor(recordingPath_);  // asked before connecting: from the first sample on
+    received_.clear();
+    restartEstimate();
     lastResult_.reset();
-    ensureViews();
-    trajectory_->clear();
+    views_->clear();
     session_->start(settings);
-    plotTimer_->start();
-    estimateTimer_->start();
+    viewTimer_->start();
     updateButtons();
+    emit sessionStarted();
 }
 
 void LivePanel::disconnectDevice()
@@ -242,19 +279,43 @@ void LivePanel::startRecordingTo(const QString& mtbPath)
         updateButtons();
         return;
     }
-    const QFileInfo mtb(mtbPath);
-    session_->startRecording({mtbPath, mtb.dir().filePath(mtb.completeBaseName() + QStringLiteral(".csv"))});
+    session_->startRecording(recordingPathsFor(mtbPath));
 }
 
 void LivePanel::stopRecording()
 {
     if (recordingActive_) {
+        recordingStopAsked_ = true;
         session_->stopRecording();
     } else if (!recordingPath_.isEmpty() && session_->state() == SessionState::Idle) {
         recordingPath_.clear();  // a pending request that never started
         status_->setText(tr("Not connected"));
         updateButtons();
     }
+}
+
+void LivePanel::setParameters(const Parameters& params)
+{
+    if (params == params_)
+        return;
+    params_ = params;
+    views_->setParameters(params_);
+    if (!estimator_)
+        return;
+    restartEstimate();
+    for (const LiveSample& sample : received_)
+        estimator_->push(sample.imu);
+    if (session_->state() == SessionState::Idle)
+        estimator_->finish();
+    refreshViews(true);
+}
+
+void LivePanel::restartEstimate()
+{
+    estimator_ = std::make_unique<StreamingEstimator>(params_);
+    if (!estimator_->error().empty())
+        status_->setText(tr("No live estimate: %1").arg(QString::fromStdString(estimator_->error())));
+    viewsDirty_ = true;
 }
 
 void LivePanel::onConnectClicked()
@@ -288,6 +349,12 @@ void LivePanel::onRecordClicked()
                                                                                    : path + QStringLiteral(".mtb"));
 }
 
+void LivePanel::onReconnect()
+{
+    if (!lastPort_.isEmpty())
+        connectTo(lastPort_);
+}
+
 void LivePanel::onStateChanged(SessionState state)
 {
     switch (state) {
@@ -309,13 +376,16 @@ void LivePanel::onStateChanged(SessionState state)
 
 void LivePanel::onSamplesAvailable()
 {
-    const std::vector<LiveSample> batch = session_->takeSamples();
+    std::vector<LiveSample> batch = session_->takeSamples();
     if (batch.empty())
         return;
-    samples_.reserve(samples_.size() + batch.size());
-    for (const LiveSample& sample : batch)
-        samples_.push_back(sample.imu);
-    plotDirty_ = true;
+    received_.reserve(received_.size() + batch.size());
+    for (LiveSample& sample : batch) {
+        if (estimator_)
+            estimator_->push(sample.imu);
+        received_.push_back(std::move(sample));
+    }
+    viewsDirty_ = true;
 }
 
 void LivePanel::onCounters(const DeviceCounters& counters)
@@ -329,6 +399,9 @@ void LivePanel::onCounters(const DeviceCounters& counters)
 void LivePanel::onRecordingStopped(const RecordingPaths& paths, const QString& error)
 {
     recordingActive_ = false;
+    // Closed without being asked and without a disk error: the session is ending under it.
+    recordingCutBySessionEnd_ = !recordingStopAsked_ && error.isEmpty();
+    recordingStopAsked_ = false;
     if (!error.isEmpty())
         status_->setText(tr("Recording stopped: %1").arg(error));
     else
@@ -340,19 +413,29 @@ void LivePanel::onRecordingStopped(const RecordingPaths& paths, const QString& e
 void LivePanel::onEnded(SessionEnd how, const QString& message)
 {
     onSamplesAvailable();
-    plotTimer_->stop();
-    estimateTimer_->stop();
-    redrawSignals();
-    startEstimate();
+    viewTimer_->stop();
+    if (estimator_)
+        estimator_->finish();  // the tail is decided as the offline analysis decides it
+    refreshViews(true);
     if (how == SessionEnd::Stopped)
         status_->setText(message.isEmpty() ? tr("Disconnected") : message);
     else
         status_->setText(tr("Session ended: %1").arg(message));
+    const bool recordingCut = recordingActive_ || recordingCutBySessionEnd_;
+    recordingCutBySessionEnd_ = false;
     if (recordingActive_) {
         recordingActive_ = false;
         finishRecording(recordingPath_);
     } else if (!recordingPath_.isEmpty() && !QFileInfo::exists(recordingPath_)) {
         recordingPath_.clear();  // the recording never started
+    }
+    if (how == SessionEnd::Vanished) {
+        QString continuation;
+        if (recordingCut && !lastRecordingPath_.isEmpty()) {
+            recordingPath_ = continuationPath(lastRecordingPath_);
+            continuation = QDir::toNativeSeparators(recordingPath_);
+        }
+        reconnect_->offer(lastPort_, message, continuation);
     }
     updateButtons();
 }
@@ -362,48 +445,39 @@ void LivePanel::finishRecording(const QString& mtbPath)
     if (mtbPath.isEmpty() || recordingPath_.isEmpty())
         return;  // already handed on
     recordingPath_.clear();
+    lastRecordingPath_ = mtbPath;
     if (QFileInfo::exists(mtbPath))
         emit recordingFinished(mtbPath);
 }
 
-void LivePanel::redrawSignals()
+void LivePanel::refreshViews(bool force)
 {
-    if (!plotDirty_ || samples_.empty() || !plots_)
+    if (!estimator_ || (!viewsDirty_ && !force))
         return;
-    plotDirty_ = false;
-    auto recording = std::make_shared<Recording>();
-    recording->source = tr("live").toStdString();
-    const double from = samples_.back().time_s - kPlotWindow_s;
-    const auto first = std::lower_bound(samples_.begin(), samples_.end(), from,
-                                        [](const ImuSample& s, double t) { return s.time_s < t; });
-    recording->samples.assign(first, samples_.end());
-    plots_->setRecording(std::move(recording));
+    viewsDirty_ = false;
+    views_->showSignals(received_, estimator_->result());
+    if (std::shared_ptr<const Result> path = views_->showPath(estimator_->result(), force)) {
+        lastResult_ = std::move(path);
+        emit trajectoryUpdated();
+    }
+    showEstimateFigures();
 }
 
-void LivePanel::startEstimate()
+void LivePanel::showEstimateFigures()
 {
-    if (estimate_.isRunning() || samples_.size() == estimatedSamples_ || samples_.size() < 2)
+    latency_->setText(tr("%1 s").arg(latency_s(), 0, 'f', 3));
+    if (!estimator_ || received_.empty()) {
+        estimateState_->setText(tr("Waiting for samples"));
         return;
-    estimatedSamples_ = samples_.size();
-    auto recording = std::make_shared<Recording>();
-    recording->source = tr("live").toStdString();
-    recording->samples = samples_;
-    estimate_.setFuture(QtConcurrent::run([recording]() -> std::shared_ptr<const Result> {
-        PipelineOutput output = runPipeline(*recording, Parameters{});
-        if (!output.error.empty())
-            return {};
-        return std::make_shared<const Result>(std::move(output.result));
-    }));
-}
-
-void LivePanel::onEstimateDone()
-{
-    std::shared_ptr<const Result> result = estimate_.result();
-    if (!result || !trajectory_)
-        return;
-    lastResult_ = result;
-    trajectory_->setResult(std::move(result));
-    emit trajectoryUpdated();
+    }
+    if (!estimator_->aligned())
+        estimateState_->setText(tr("Aligning: keep the foot still for the first %1 s").arg(params_.alignment_s, 0, 'g', 3));
+    else if (!estimator_->result().time_s.empty())
+        estimateState_->setText(tr("Estimating, %1 s behind the sensor")
+                                    .arg(received_.back().imu.time_s - estimator_->result().time_s.back(), 0, 'f', 3));
+    const Summary& summary = estimator_->result().summary;
+    steps_->setText(QString::number(summary.steps));
+    distance_->setText(tr("%1 m").arg(summary.pathLength_m, 0, 'f', 2));
 }
 
 void LivePanel::updateButtons()

@@ -1,10 +1,9 @@
 #pragma once
 
 #include "DeviceSession.h"
-#include "Recording.h"
 #include "Result.h"
+#include "nav/Parameters.h"
 
-#include <QFutureWatcher>
 #include <QWidget>
 
 #include <memory>
@@ -15,17 +14,21 @@ class QLabel;
 class QPushButton;
 class QSpinBox;
 class QSplitter;
+class QTabWidget;
 class QTimer;
 
 namespace footpath {
 
-class SignalPlots;
-class TrajectoryView2D;
+class LiveViews;
+class ReconnectOffer;
+class StreamingEstimator;
 
 /// The "Live input" dock: connects to an Xsens MTi (or the emulator's pseudo-terminal), shows
-/// the device, the counters, the last seconds of signals and the path estimated so far, and
+/// the device and the counters, runs the estimator causally on the samples as they arrive and
+/// shows the path, the last seconds of signals and the detector's lanes (LiveViews), and
 /// records to .mtb plus CSV. When a recording ends, recordingFinished() hands its path on so
-/// the workspace can open it as a recorded walk.
+/// the workspace can open it as a recorded walk. When the port vanishes mid-stream it offers
+/// to reconnect, continuing an interrupted recording in a new file.
 class LivePanel : public QWidget {
     Q_OBJECT
 public:
@@ -39,37 +42,49 @@ public:
     /// streaming, the recording starts with the first sample of the next connection.
     void startRecordingTo(const QString& mtbPath);
     void stopRecording();
+    /// The estimator's parameters (the workspace's); re-estimates what was received so far.
+    void setParameters(const Parameters& params);
+    /// Moves the live views out of the panel into the workspace's tab widgets.
+    void moveViewsInto(QTabWidget* trajectoryTabs, QTabWidget* signalTabs);
 
     DeviceSession* session() const { return session_; }
-    /// The latest live estimate (null until the first run finished).
+    LiveViews* views() const { return views_; }
+    ReconnectOffer* reconnectOffer() const { return reconnect_; }
+    /// Every intact sample of this session, in arrival order.
+    const std::vector<LiveSample>& receivedSamples() const { return received_; }
+    std::size_t sampleCount() const { return received_.size(); }
+    /// The causal estimate so far (null before the first connection).
+    const StreamingEstimator* estimator() const { return estimator_.get(); }
+    /// What the trajectory views show now (null until the first path was drawn).
     std::shared_ptr<const Result> lastResult() const { return lastResult_; }
-    /// Samples received in this session so far.
-    std::size_t sampleCount() const { return samples_.size(); }
-    /// How far the estimate lags behind the device, from the detector's look-ahead window.
-    static double latency_s();
+    /// How far the estimate trails the newest sample: the detector's look-ahead.
+    double latency_s() const;
 
 signals:
     /// A recording was closed (stopped, or the session ended); `mtbPath` can be opened.
     void recordingFinished(const QString& mtbPath);
-    /// The trajectory view shows a new live estimate.
+    /// The trajectory views show a new live estimate.
     void trajectoryUpdated();
+    /// A session starts: the workspace may bring the live views to the front.
+    void sessionStarted();
 
 private:
     void buildUi();
-    void ensureViews();
+    QWidget* buildEstimateBox();
     void wireSession();
     void refreshPorts();
     void onConnectClicked();
     void onRecordClicked();
+    void onReconnect();
     void onStateChanged(SessionState state);
     void onSamplesAvailable();
     void onCounters(const DeviceCounters& counters);
     void onRecordingStopped(const RecordingPaths& paths, const QString& error);
     void onEnded(SessionEnd how, const QString& message);
     void finishRecording(const QString& mtbPath);
-    void redrawSignals();
-    void startEstimate();
-    void onEstimateDone();
+    void restartEstimate();
+    void refreshViews(bool force = false);
+    void showEstimateFigures();
     void updateButtons();
 
     DeviceSession* session_;
@@ -79,6 +94,7 @@ private:
     QPushButton* connect_ = nullptr;
     QPushButton* record_ = nullptr;
     QLabel* status_ = nullptr;
+    ReconnectOffer* reconnect_ = nullptr;
     QLabel* deviceId_ = nullptr;
     QLabel* productCode_ = nullptr;
     QLabel* firmware_ = nullptr;
@@ -88,19 +104,28 @@ private:
     QLabel* checksumLabel_ = nullptr;
     QLabel* resyncLabel_ = nullptr;
     QLabel* latency_ = nullptr;
-    QSplitter* views_ = nullptr;
-    SignalPlots* plots_ = nullptr;  ///< made on the first connection
-    TrajectoryView2D* trajectory_ = nullptr;  ///< made on the first connection
-    QTimer* plotTimer_ = nullptr;
-    QTimer* estimateTimer_ = nullptr;
+    QLabel* estimateState_ = nullptr;
+    QLabel* steps_ = nullptr;
+    QLabel* distance_ = nullptr;
+    QSplitter* viewArea_ = nullptr;
+    LiveViews* views_ = nullptr;
+    QTimer* viewTimer_ = nullptr;
 
-    std::vector<ImuSample> samples_;
-    bool plotDirty_ = false;
-    std::size_t estimatedSamples_ = 0;  ///< samples the last started estimate used
-    QFutureWatcher<std::shared_ptr<const Result>> estimate_;
+    Parameters params_;
+    std::vector<LiveSample> received_;
+    std::unique_ptr<StreamingEstimator> estimator_;
+    bool viewsDirty_ = false;
     std::shared_ptr<const Result> lastResult_;
+    QString lastPort_;
     QString recordingPath_;  ///< the .mtb being recorded (or pending for the next session)
+    QString lastRecordingPath_;  ///< the last one handed on, which a reconnect continues
     bool recordingActive_ = false;
+    bool recordingStopAsked_ = false;        ///< by the user, through stopRecording()
+    bool recordingCutBySessionEnd_ = false;  ///< a reconnect after a vanished port continues it
 };
+
+/// Where a recording interrupted by a vanished port continues: "walk.mtb" -> "walk-2.mtb", or
+/// the next number whose .mtb and .csv do not exist yet.
+QString continuationPath(const QString& mtbPath);
 
 }  // namespace footpath

@@ -4,6 +4,7 @@
 #include "AppSettings.h"
 #include "ImportDialog.h"
 #include "LivePanel.h"
+#include "LiveViews.h"
 #include "ParameterPanel.h"
 #include "RecordedInputPanel.h"
 #include "RecordingLoader.h"
@@ -75,6 +76,7 @@ MainWindow::MainWindow(AppSettings& settings, QWidget* parent)
     statusBar()->addWidget(status_, 1);
     input_->setRecentFiles(settings_.recentFiles());
     parameters_->setParameters(session_->parameters());
+    live_->setParameters(session_->parameters());
     restoreLayout();
 }
 
@@ -86,6 +88,11 @@ void MainWindow::createViews()
     flags_ = new StanceFlagsPlot(this);
     trajectory2D_ = new TrajectoryView2D(this);
     trajectory3D_ = new TrajectoryView3D(this);
+    // Named, as the live panel's views of the same types share the tab widgets.
+    signalPlots_->setObjectName(QStringLiteral("signalPlots"));
+    flags_->setObjectName(QStringLiteral("stanceFlags"));
+    trajectory2D_->setObjectName(QStringLiteral("trajectory2D"));
+    trajectory3D_->setObjectName(QStringLiteral("trajectory3D"));
     signalTabs_ = new QTabWidget(this);
     signalTabs_->addTab(signalPlots_, tr("Signals"));
     signalTabs_->addTab(flags_, tr("Stance detector"));
@@ -107,10 +114,19 @@ void MainWindow::createDocks()
     input_ = new RecordedInputPanel(this);
     parameters_ = new ParameterPanel(this);
     summary_ = new SummaryPanel(this);
-    auto* live = new LivePanel(this);
-    connect(live, &LivePanel::recordingFinished, this, [this](const QString& path) { openRecording(path); });
+    live_ = new LivePanel(this);
+    live_->moveViewsInto(trajectoryTabs_, signalTabs_);
+    connect(live_, &LivePanel::sessionStarted, this, [this] {
+        trajectoryTabs_->setCurrentWidget(live_->views()->trajectory2D());
+        signalTabs_->setCurrentWidget(live_->views()->signalPlots());
+    });
+    connect(live_, &LivePanel::recordingFinished, this, [this](const QString& path) {
+        trajectoryTabs_->setCurrentWidget(trajectory2D_);  // the recorded walk's full analysis
+        signalTabs_->setCurrentWidget(signalPlots_);
+        openRecording(path);
+    });
     QDockWidget* inputDock = dock(this, tr("Recorded input"), "inputDock", input_, Qt::LeftDockWidgetArea);
-    QDockWidget* liveDock = dock(this, tr("Live input"), "liveDock", live, Qt::LeftDockWidgetArea);
+    QDockWidget* liveDock = dock(this, tr("Live input"), "liveDock", live_, Qt::LeftDockWidgetArea);
     tabifyDockWidget(inputDock, liveDock);
     inputDock->raise();
     dock(this, tr("Parameters"), "parametersDock", parameters_, Qt::RightDockWidgetArea);
@@ -221,6 +237,7 @@ void MainWindow::wireSession()
     connect(session_, &AnalysisSession::parametersChanged, this, [this] {
         parameters_->setParameters(session_->parameters());
         flags_->setParameters(session_->parameters());
+        live_->setParameters(session_->parameters());  // tuning works on the live estimate too
     });
     connect(parameters_, &ParameterPanel::parameterEdited, session_, &AnalysisSession::setParameter);
     connect(parameters_, &ParameterPanel::parametersReplaced, session_, &AnalysisSession::setParameters);

@@ -16,6 +16,7 @@ namespace footpath {
 
 class AnalysisSession;
 class AppSettings;
+class LivePanel;
 class ParameterPanel;
 class RecordedInputPanel;
 class RecordingLoader;
@@ -78,6 +79,7 @@ private:
     TrajectoryView3D* trajectory3D_ = nullptr;
     QTabWidget* signalTabs_ = nullptr;
     QTabWidget* trajectoryTabs_ = nullptr;
+    LivePanel* live_ = nullptr;
     QLabel* status_ = nullptr;
     QMenu* viewMenu_ = nullptr;
 };

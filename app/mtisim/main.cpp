@@ -51,6 +51,7 @@ struct Options {
     bool simulate = false;
     QString link;
     QString log;
+    double replugAfter_s = 0.0;  ///< after vanishing, come back on the same link after this long; 0: never
     MtiEmulatorConfig emulator;
 };
 
@@ -86,6 +87,10 @@ void addOptions(QCommandLineParser& parser)
         {QStringLiteral("junk-rate"), QStringLiteral("probability of junk bytes before a data message"),
          QStringLiteral("P")},
         {QStringLiteral("disconnect-after"), QStringLiteral("vanish after S device seconds of streaming"),
+         QStringLiteral("S")},
+        {QStringLiteral("replug-after"),
+         QStringLiteral("after vanishing, come back on the same --link after S wall seconds, like a sensor plugged in "
+                        "again (try the live panel's reconnect offer)"),
          QStringLiteral("S")},
         {QStringLiteral("once"), QStringLiteral("vanish at the end of the recording instead of playing it again")},
         {QStringLiteral("log"), QStringLiteral("write every data message and its fate to this CSV"),
@@ -135,7 +140,11 @@ std::string parseOptions(const QCoreApplication& app, Options& options)
         return "give either a recording to play or --simulate";
     options.link = parser.value(QStringLiteral("link"));
     options.log = parser.value(QStringLiteral("log"));
-    return readFaults(parser, options.emulator);
+    std::string problem;
+    options.replugAfter_s = numberOption(parser, QStringLiteral("replug-after"), 0, 1e6, problem).value_or(0.0);
+    if (options.replugAfter_s > 0.0 && options.link.isEmpty())
+        problem = "--replug-after needs --link: the pseudo-terminal gets a new name when it comes back";
+    return problem.empty() ? readFaults(parser, options.emulator) : problem;
 }
 
 // ---- playback ---------------------------------------------------------------------------
@@ -351,7 +360,7 @@ void logRecord(std::FILE* log, const MtiEmulator::DataRecord& record)
                  gyr.y(), gyr.z());
 }
 
-std::FILE* openLog(const QString& path, MtiEmulator& emulator, std::string& problem)
+std::FILE* openLog(const QString& path, std::string& problem)
 {
     if (path.isEmpty())
         return nullptr;
@@ -361,11 +370,47 @@ std::FILE* openLog(const QString& path, MtiEmulator& emulator, std::string& prob
         return nullptr;
     }
     std::fprintf(log, "packet_counter,sample_time_fine,fate,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n");
+    return log;
+}
+
+void observeInto(std::FILE* log, MtiEmulator& emulator)
+{
+    if (log == nullptr)
+        return;
     emulator.setDataObserver([log](const MtiEmulator::DataRecord& record) {
         logRecord(log, record);
         std::fflush(log);  // a test may read it while the emulator still runs
     });
-    return log;
+}
+
+/// Plays until stopped, or until the port vanished and no replug is asked for. Each plug-in is
+/// a fresh device: a new pty behind the same link, the playback from its start.
+std::string serve(const Options& options, const Recording& playback, std::FILE* log)
+{
+    for (bool first = true;; first = false) {
+        if (!first) {
+            say("plugged out; back in " + QString::number(options.replugAfter_s).toStdString() + " s");
+            const double until = nowSeconds() + options.replugAfter_s;
+            while (!g_stop && nowSeconds() < until)
+                std::this_thread::sleep_for(std::chrono::milliseconds(kIdlePoll_ms));
+            if (g_stop)
+                return {};
+        }
+        MtiEmulator emulator(playback, options.emulator);
+        observeInto(log, emulator);
+        Pty pty;
+        std::string problem;
+        if (!pty.create(problem) || (!options.link.isEmpty() && !pty.link(options.link.toStdString(), problem)))
+            return problem;
+        say(options.emulator.productCode + " (" + formatDeviceId(options.emulator.deviceId) + ") on " + pty.path()
+            + (options.link.isEmpty() ? "" : " = " + options.link.toStdString()) + ", playing "
+            + (options.simulate ? std::string("a simulated walk") : options.recording.toStdString()) + " ("
+            + std::to_string(playback.samples.size()) + " samples) at speed "
+            + QString::number(options.emulator.speed).toStdString());
+        Runner(pty, emulator).run();
+        if (g_stop || options.replugAfter_s <= 0.0)
+            return {};
+    }
 }
 
 int fail(const std::string& problem)
@@ -386,21 +431,13 @@ int main(int argc, char** argv)
     std::optional<Recording> playback = loadPlayback(options, problem);
     if (!playback)
         return fail(problem);
-    const std::size_t sampleCount = playback->samples.size();
-    MtiEmulator emulator(std::move(*playback), options.emulator);
-    std::FILE* log = openLog(options.log, emulator, problem);
-    Pty pty;
-    if (!problem.empty() || !pty.create(problem) || (!options.link.isEmpty() && !pty.link(options.link.toStdString(), problem)))
+    std::FILE* log = openLog(options.log, problem);
+    if (!problem.empty())
         return fail(problem);
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
-    say(options.emulator.productCode + " (" + formatDeviceId(options.emulator.deviceId) + ") on " + pty.path()
-        + (options.link.isEmpty() ? "" : " = " + options.link.toStdString()) + ", playing "
-        + (options.simulate ? std::string("a simulated walk") : options.recording.toStdString()) + " ("
-        + std::to_string(sampleCount) + " samples) at speed " + QString::number(options.emulator.speed).toStdString());
-    Runner(pty, emulator).run();
-    pty.close();
+    problem = serve(options, *playback, log);
     if (log != nullptr)
         std::fclose(log);
-    return 0;
+    return problem.empty() ? 0 : fail(problem);
 }

@@ -4,6 +4,9 @@
 #include "Result.h"
 #include "nav/Parameters.h"
 
+#include <cstddef>
+#include <cstdint>
+#include <deque>
 #include <vector>
 
 namespace footpath {
@@ -24,5 +27,77 @@ std::vector<double> centredStdDev(const std::vector<double>& times, const std::v
 /// input value.
 std::vector<std::uint8_t> medianFilter(const std::vector<double>& times, const std::vector<std::uint8_t>& flags,
                                        double window_s);
+
+/// The detector's flags of one sample: one entry of each vector of StanceFlags.
+struct SampleStanceFlags {
+    std::uint8_t c1 = 0;
+    std::uint8_t c2 = 0;
+    std::uint8_t c3 = 0;
+    std::uint8_t c = 0;
+    std::uint8_t stance = 0;
+};
+
+/// detectStance run causally, on samples as they arrive (a live device). A sample's flags become
+/// final once the samples that close its windows have arrived: its median window
+/// (median_window_s / 2 ahead) and the C2 window (window_half_s) of every sample in it, both found
+/// on the sample times, so the decision trails the newest sample by about window_half_s +
+/// median_window_s / 2. finish() decides the rest with the windows truncated at the end of data.
+/// Over a whole recording the flags equal detectStance's value for value: the same prefix sums
+/// (kept as running totals) and the same window arithmetic. Only the samples some open window
+/// still needs are kept, so memory is bounded by the window lengths.
+class CausalStanceDetector {
+public:
+    explicit CausalStanceDetector(const Parameters& params);
+
+    /// Takes the next sample; its time must be later than the previous one's (the caller checks).
+    /// Appends to decided the flags that became final, oldest first.
+    void push(const ImuSample& sample, std::deque<SampleStanceFlags>& decided);
+    /// End of data: appends the flags of every sample not yet decided.
+    void finish(std::deque<SampleStanceFlags>& decided);
+
+    /// Samples whose flags were handed out.
+    std::size_t decidedSamples() const { return stanceNext_; }
+    /// Samples held: those windows still open need, plus at most as many (or kMinimumDrop)
+    /// waiting to be dropped in one go.
+    std::size_t bufferedSamples() const { return entries_.size(); }
+    static constexpr std::size_t kMinimumDrop = 64;
+
+private:
+    struct Entry {
+        double time_s = 0.0;
+        double sumBefore = 0.0;    ///< prefix sums of the shifted |a| over the samples before this one
+        double sumSqBefore = 0.0;
+        std::size_t onesBefore = 0;  ///< c flags set before this one; valid once its c2 is decided
+        SampleStanceFlags flags;
+    };
+
+    std::size_t received() const { return base_ + entries_.size(); }
+    const Entry& at(std::size_t k) const { return entries_[k - base_]; }
+    Entry& at(std::size_t k) { return entries_[k - base_]; }
+    double sumBefore(std::size_t k) const;
+    double sumSqBefore(std::size_t k) const;
+    std::size_t onesBefore(std::size_t k) const;
+
+    void decide(bool endOfData, std::deque<SampleStanceFlags>& decided);
+    bool decideNextC2(bool endOfData);
+    bool decideNextStance(bool endOfData, std::deque<SampleStanceFlags>& decided);
+    void dropSamplesNoWindowNeeds();
+
+    Parameters params_;
+    std::vector<Entry> entries_;
+    std::size_t base_ = 0;  ///< index of entries_.front() in the whole stream
+    double shift_ = 0.0;    ///< |a| of the first sample, as centredStdDev shifts by values.front()
+    double sum_ = 0.0;      ///< prefix sums over every sample received
+    double sumSq_ = 0.0;
+    std::size_t ones_ = 0;  ///< c flags set among the samples before c2Next_
+    // Indices in the whole stream: the next sample to decide and its window [first, last), for
+    // C2 and for the median. Like detectStance's, the windows only move forward.
+    std::size_t c2Next_ = 0;
+    std::size_t c2First_ = 0;
+    std::size_t c2Last_ = 0;
+    std::size_t stanceNext_ = 0;
+    std::size_t medianFirst_ = 0;
+    std::size_t medianLast_ = 0;
+};
 
 }  // namespace footpath

@@ -67,11 +67,9 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
     ErrorStateEkf ekf(params, alignment.bodyToNav);
     reserveResult(result, samples.size());
     for (std::size_t k = 0; k < samples.size(); ++k) {
-        if (k > 0)
-            ekf.propagate(samples[k].acc_mps2, samples[k].gyr_radps, samples[k].time_s - samples[k - 1].time_s);
-        if (flags.stance[k])
-            applyStanceUpdates(ekf, samples[k], params);
-        recordState(result, samples[k].time_s, ekf.state());
+        const std::optional<double> previousTime_s =
+            k > 0 ? std::optional<double>(samples[k - 1].time_s) : std::nullopt;
+        filterSample(ekf, samples[k], previousTime_s, flags.stance[k] != 0, params, result);
         if (progress && k % kProgressInterval == 0 && !progress(static_cast<double>(k) / static_cast<double>(samples.size())))
             return false;
     }
@@ -96,6 +94,40 @@ Step makeStep(const Result& result, std::size_t first, std::size_t last)
 
 }  // namespace
 
+void filterSample(ErrorStateEkf& ekf, const ImuSample& sample, std::optional<double> previousTime_s, bool stance,
+                  const Parameters& params, Result& result)
+{
+    if (previousTime_s)
+        ekf.propagate(sample.acc_mps2, sample.gyr_radps, sample.time_s - *previousTime_s);
+    if (stance)
+        applyStanceUpdates(ekf, sample, params);
+    recordState(result, sample.time_s, ekf.state());
+}
+
+void appendStep(Result& result, std::size_t first, std::size_t last)
+{
+    Step step = makeStep(result, first, last);
+    if (!result.steps.empty()) {
+        const Step& previous = result.steps.back();
+        step.strideLength_m = horizontalDistance(step.position_m, previous.position_m);
+        step.strideDuration_s = step.stanceStart_s - previous.stanceStart_s;
+    }
+    result.steps.push_back(step);
+}
+
+void summarize(Result& result, double pathLength_m)
+{
+    Summary& summary = result.summary;
+    summary.samples = result.time_s.size();
+    summary.duration_s = result.time_s.empty() ? 0.0 : result.time_s.back() - result.time_s.front();
+    summary.stancePhases = result.steps.size();
+    summary.steps = result.steps.empty() ? 0 : result.steps.size() - 1;
+    summary.pathLength_m = pathLength_m;
+    const LoopClosure closure = computeLoopClosure(result.position_m, summary.pathLength_m);
+    summary.endToStart_m = closure.dbse_m;
+    summary.endToStartPct = closure.dbsePct;
+}
+
 void fillStepsAndSummary(Result& result)
 {
     const std::vector<std::uint8_t>& stance = result.flags.stance;
@@ -108,24 +140,10 @@ void fillStepsAndSummary(Result& result)
         std::size_t end = k;
         while (end < stance.size() && stance[end])
             ++end;
-        Step step = makeStep(result, k, end);
-        if (!result.steps.empty()) {
-            const Step& previous = result.steps.back();
-            step.strideLength_m = horizontalDistance(step.position_m, previous.position_m);
-            step.strideDuration_s = step.stanceStart_s - previous.stanceStart_s;
-        }
-        result.steps.push_back(step);
+        appendStep(result, k, end);
         k = end;
     }
-    Summary& summary = result.summary;
-    summary.samples = result.time_s.size();
-    summary.duration_s = result.time_s.empty() ? 0.0 : result.time_s.back() - result.time_s.front();
-    summary.stancePhases = result.steps.size();
-    summary.steps = result.steps.empty() ? 0 : result.steps.size() - 1;
-    summary.pathLength_m = stancePathLength(result.steps);
-    const LoopClosure closure = computeLoopClosure(result.position_m, summary.pathLength_m);
-    summary.endToStart_m = closure.dbse_m;
-    summary.endToStartPct = closure.dbsePct;
+    summarize(result, stancePathLength(result.steps));
 }
 
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress)

@@ -5,9 +5,12 @@
 #include "nav/Parameters.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace footpath {
+
+class ErrorStateEkf;
 
 /// Called now and then with the fraction done (0..1); return false to cancel the run.
 using ProgressCallback = std::function<bool(double fraction)>;
@@ -27,5 +30,22 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
 /// Stance phases of the result as steps (stance times, mean stance position, stride) and the summary
 /// figures that depend on them. Exposed for tests; runPipeline calls it.
 void fillStepsAndSummary(Result& result);
+
+// The pieces below are shared with StreamingEstimator, which runs them one sample at a time and so
+// gives the same numbers as runPipeline.
+
+/// The filter's work on one sample: propagation over the time since the previous sample (none for
+/// the first), ZUPT/ZARU as enabled when the foot is at rest, then the state appended to result
+/// (the stance flags are the caller's to append).
+void filterSample(ErrorStateEkf& ekf, const ImuSample& sample, std::optional<double> previousTime_s, bool stance,
+                  const Parameters& params, Result& result);
+
+/// Appends the stance phase of samples [first, last) of result as a step, with its stride from the
+/// previous step. Summary fields are left alone.
+void appendStep(Result& result, std::size_t first, std::size_t last);
+
+/// Sets every summary field but runtime_s from the samples and steps so far, with the given path
+/// length (the sum of the steps' stride lengths). Constant time; result must hold a sample.
+void summarize(Result& result, double pathLength_m);
 
 }  // namespace footpath

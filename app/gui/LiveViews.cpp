@@ -1,0 +1,135 @@
+#include "LiveViews.h"
+
+#include "SignalPlots.h"
+#include "StanceFlagsPlot.h"
+#include "TrajectoryView2D.h"
+#include "TrajectoryView3D.h"
+
+#include <QTabWidget>
+
+#include <algorithm>
+
+namespace footpath {
+
+namespace {
+
+constexpr qint64 kPathCostFactor = 5;  // path updates take at most a fifth of the GUI thread
+
+std::size_t firstAtOrAfter(const std::vector<double>& times, double from_s)
+{
+    return static_cast<std::size_t>(std::lower_bound(times.begin(), times.end(), from_s) - times.begin());
+}
+
+template <typename T>
+std::vector<T> tailFrom(const std::vector<T>& values, std::size_t first)
+{
+    return first < values.size() ? std::vector<T>(values.begin() + static_cast<std::ptrdiff_t>(first), values.end())
+                                 : std::vector<T>();
+}
+
+}  // namespace
+
+Result resultWindow(const Result& result, double from_s)
+{
+    const std::size_t first = firstAtOrAfter(result.time_s, from_s);
+    Result window;
+    window.time_s = tailFrom(result.time_s, first);
+    window.position_m = tailFrom(result.position_m, first);
+    window.velocity_mps = tailFrom(result.velocity_mps, first);
+    window.rollPitchYaw_rad = tailFrom(result.rollPitchYaw_rad, first);
+    window.gyroBias_radps = tailFrom(result.gyroBias_radps, first);
+    window.accBias_mps2 = tailFrom(result.accBias_mps2, first);
+    window.flags.c1 = tailFrom(result.flags.c1, first);
+    window.flags.c2 = tailFrom(result.flags.c2, first);
+    window.flags.c3 = tailFrom(result.flags.c3, first);
+    window.flags.c = tailFrom(result.flags.c, first);
+    window.flags.stance = tailFrom(result.flags.stance, first);
+    return window;
+}
+
+Result pathOnly(const Result& result)
+{
+    Result path;
+    path.time_s = result.time_s;
+    path.position_m = result.position_m;
+    path.velocity_mps = result.velocity_mps;
+    path.flags.stance = result.flags.stance;
+    path.steps = result.steps;
+    path.summary = result.summary;
+    return path;
+}
+
+LiveViews::LiveViews(QWidget* parent)
+    : QObject(parent),
+      trajectory2D_(new TrajectoryView2D),
+      trajectory3D_(new TrajectoryView3D),
+      signals_(new SignalPlots),
+      flags_(new StanceFlagsPlot),
+      trajectoryTabs_(new QTabWidget(parent)),
+      signalTabs_(new QTabWidget(parent))
+{
+    // Object names tell these apart from the workspace's own views of a recorded walk.
+    trajectory2D_->setObjectName(QStringLiteral("liveTrajectory2D"));
+    trajectory3D_->setObjectName(QStringLiteral("liveTrajectory3D"));
+    signals_->setObjectName(QStringLiteral("liveSignals"));
+    flags_->setObjectName(QStringLiteral("liveStanceFlags"));
+    trajectoryTabs_->addTab(trajectory2D_, tr("Live path 2D"));
+    trajectoryTabs_->addTab(trajectory3D_, tr("Live path 3D"));
+    signalTabs_->addTab(signals_, tr("Live signals"));
+    signalTabs_->addTab(flags_, tr("Live stance detector"));
+    flags_->setParameters(Parameters{});
+    sincePathUpdate_.start();
+}
+
+void LiveViews::clear()
+{
+    trajectory2D_->clear();
+    trajectory3D_->clear();
+    signals_->setRecording(nullptr);
+    flags_->setRecording(nullptr);
+    lastPathUpdateCost_ms_ = 0;
+}
+
+void LiveViews::setParameters(const Parameters& params)
+{
+    flags_->setParameters(params);
+}
+
+void LiveViews::showSignals(const std::vector<LiveSample>& samples, const Result& estimate)
+{
+    if (samples.empty())
+        return;
+    const double newest_s = samples.back().imu.time_s;
+    const double from_s = newest_s - kWindow_s;
+    const auto first = std::lower_bound(samples.begin(), samples.end(), from_s,
+                                        [](const LiveSample& s, double t) { return s.imu.time_s < t; });
+    auto recording = std::make_shared<Recording>();
+    recording->source = tr("live").toStdString();
+    recording->samples.reserve(static_cast<std::size_t>(samples.end() - first));
+    for (auto it = first; it != samples.end(); ++it)
+        recording->samples.push_back(it->imu);
+    auto window = std::make_shared<const Result>(resultWindow(estimate, from_s));
+    signals_->setRecording(recording);
+    signals_->setResult(window);
+    flags_->setRecording(recording);
+    flags_->setResult(window);
+    // A whole window even in the first seconds, so the plots scroll instead of stretching.
+    signals_->setTimeRange(from_s, newest_s);
+    flags_->setTimeRange(from_s, newest_s);
+}
+
+std::shared_ptr<const Result> LiveViews::showPath(const Result& estimate, bool force)
+{
+    if (!force && sincePathUpdate_.elapsed() < kPathCostFactor * lastPathUpdateCost_ms_)
+        return {};
+    QElapsedTimer cost;
+    cost.start();
+    auto path = std::make_shared<const Result>(pathOnly(estimate));
+    trajectory2D_->followResult(path);
+    trajectory3D_->followResult(path);
+    lastPathUpdateCost_ms_ = cost.elapsed();
+    sincePathUpdate_.restart();
+    return path;
+}
+
+}  // namespace footpath

@@ -1,0 +1,227 @@
+#include "nav/StreamingEstimator.h"
+
+#include "detect/StanceDetector.h"
+#include "nav/Alignment.h"
+#include "nav/ErrorStateEkf.h"
+#include "nav/Pipeline.h"
+
+#include <cmath>
+#include <deque>
+#include <optional>
+#include <sstream>
+
+namespace footpath {
+
+namespace {
+
+std::string joinProblems(const std::vector<std::string>& problems)
+{
+    std::ostringstream out;
+    for (std::size_t i = 0; i < problems.size(); ++i)
+        out << (i > 0 ? "\n" : "") << problems[i];
+    return out.str();
+}
+
+void appendFlags(StanceFlags& flags, const SampleStanceFlags& sample)
+{
+    flags.c1.push_back(sample.c1);
+    flags.c2.push_back(sample.c2);
+    flags.c3.push_back(sample.c3);
+    flags.c.push_back(sample.c);
+    flags.stance.push_back(sample.stance);
+}
+
+}  // namespace
+
+struct StreamingEstimator::Impl {
+    explicit Impl(const Parameters& p)
+        : params(p)
+        , detector(p)
+    {
+    }
+
+    bool accepts(const ImuSample& sample) const;
+    void accept(const ImuSample& sample);
+    void end();
+    bool alignmentInputsFinal() const;
+    void align();
+    void estimateDecided();
+    void estimate(const ImuSample& sample, const SampleStanceFlags& flags);
+    void closeStancePhase(std::size_t end);
+
+    Parameters params;
+    std::string error;
+    CausalStanceDetector detector;
+    std::deque<ImuSample> pending;               ///< pushed, not yet estimated; oldest first
+    std::deque<SampleStanceFlags> decidedFlags;  ///< final flags of the oldest pending samples
+    std::size_t received = 0;
+    std::optional<double> newestTime_s;
+    std::size_t rejected = 0;
+    bool finished = false;
+
+    // Alignment: the samples with t <= t0 + alignment_s, and whether a later one has arrived.
+    double alignmentEnd_s = 0.0;
+    std::size_t alignmentSamples = 0;
+    bool alignmentPeriodOver = false;
+
+    std::optional<ErrorStateEkf> ekf;  ///< set once aligned
+    std::optional<double> previousTime_s;  ///< of the last estimated sample
+    std::optional<std::size_t> stancePhaseStart;  ///< index in result of the open stance phase
+    double pathLength_m = 0.0;  ///< sum of the strides so far (stancePathLength, kept running)
+    Result result;
+};
+
+bool StreamingEstimator::Impl::accepts(const ImuSample& sample) const
+{
+    if (finished || !std::isfinite(sample.time_s))
+        return false;
+    return !newestTime_s || sample.time_s > *newestTime_s;
+}
+
+void StreamingEstimator::Impl::accept(const ImuSample& sample)
+{
+    if (received == 0)
+        alignmentEnd_s = sample.time_s + params.alignment_s;  // as averageStatic computes it
+    if (!ekf) {
+        if (sample.time_s <= alignmentEnd_s)
+            ++alignmentSamples;
+        else
+            alignmentPeriodOver = true;
+    }
+    ++received;
+    newestTime_s = sample.time_s;
+    pending.push_back(sample);
+    detector.push(sample, decidedFlags);
+    if (!ekf && alignmentInputsFinal())
+        align();
+    estimateDecided();
+}
+
+void StreamingEstimator::Impl::end()
+{
+    if (received < 2) {
+        // runPipeline refuses such a recording too; its result stays empty.
+        error = "only " + std::to_string(received) + " samples arrived; at least 2 are needed";
+        return;
+    }
+    detector.finish(decidedFlags);
+    if (!ekf)
+        align();
+    estimateDecided();
+    if (stancePhaseStart)
+        closeStancePhase(result.time_s.size());  // offline, a stance phase up to the end is a step too
+    summarize(result, pathLength_m);
+}
+
+bool StreamingEstimator::Impl::alignmentInputsFinal() const
+{
+    return alignmentPeriodOver && decidedFlags.size() >= alignmentSamples;
+}
+
+/// alignInitialAttitude on exactly what runPipeline gives it (its loop stops at the first sample
+/// after the alignment period), so the initial attitude is the offline one.
+void StreamingEstimator::Impl::align()
+{
+    const std::vector<ImuSample> samples(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(alignmentSamples));
+    std::vector<std::uint8_t> stance(alignmentSamples);
+    for (std::size_t k = 0; k < alignmentSamples; ++k)
+        stance[k] = decidedFlags[k].stance;
+    ekf.emplace(params, alignInitialAttitude(samples, stance, params).bodyToNav);
+}
+
+void StreamingEstimator::Impl::estimateDecided()
+{
+    if (!ekf || decidedFlags.empty())
+        return;
+    while (!decidedFlags.empty()) {
+        estimate(pending.front(), decidedFlags.front());
+        pending.pop_front();
+        decidedFlags.pop_front();
+    }
+    summarize(result, pathLength_m);
+}
+
+void StreamingEstimator::Impl::estimate(const ImuSample& sample, const SampleStanceFlags& flags)
+{
+    filterSample(*ekf, sample, previousTime_s, flags.stance != 0, params, result);
+    appendFlags(result.flags, flags);
+    previousTime_s = sample.time_s;
+    const std::size_t k = result.time_s.size() - 1;
+    if (flags.stance && !stancePhaseStart)
+        stancePhaseStart = k;
+    else if (!flags.stance && stancePhaseStart)
+        closeStancePhase(k);
+}
+
+/// The open stance phase, result samples [start, end), becomes a step as fillStepsAndSummary makes it.
+void StreamingEstimator::Impl::closeStancePhase(std::size_t end)
+{
+    appendStep(result, *stancePhaseStart, end);
+    pathLength_m += result.steps.back().strideLength_m;
+    stancePhaseStart.reset();
+}
+
+StreamingEstimator::StreamingEstimator(const Parameters& params)
+    : impl_(std::make_unique<Impl>(params))
+{
+    impl_->error = joinProblems(params.validate());
+}
+
+StreamingEstimator::~StreamingEstimator() = default;
+
+const std::string& StreamingEstimator::error() const
+{
+    return impl_->error;
+}
+
+void StreamingEstimator::push(const ImuSample& sample)
+{
+    if (!impl_->error.empty())
+        return;
+    if (!impl_->accepts(sample)) {
+        ++impl_->rejected;
+        return;
+    }
+    impl_->accept(sample);
+}
+
+void StreamingEstimator::finish()
+{
+    if (impl_->finished)
+        return;
+    impl_->finished = true;
+    if (impl_->error.empty())
+        impl_->end();
+}
+
+const Result& StreamingEstimator::result() const
+{
+    return impl_->result;
+}
+
+std::size_t StreamingEstimator::pendingSamples() const
+{
+    return impl_->pending.size();
+}
+
+std::size_t StreamingEstimator::rejectedSamples() const
+{
+    return impl_->rejected;
+}
+
+bool StreamingEstimator::aligned() const
+{
+    return impl_->ekf.has_value();
+}
+
+const Parameters& StreamingEstimator::parameters() const
+{
+    return impl_->params;
+}
+
+double StreamingEstimator::latency_s(const Parameters& params)
+{
+    return params.window_half_s + params.median_window_s / 2.0;
+}
+
+}  // namespace footpath
