@@ -485,10 +485,6 @@
         <translation>Neusynchronisierungen:</translation>
     </message>
     <message>
-        <source>estimate lags by %1 s (detector look-ahead)</source>
-        <translation>Schätzung hinkt um %1 s hinterher (Vorausschau des Detektors)</translation>
-    </message>
-    <message>
         <source>Recording to %1</source>
         <translation>Aufzeichnung nach %1</translation>
     </message>
@@ -537,16 +533,83 @@
         <translation>Sitzung beendet: %1</translation>
     </message>
     <message>
-        <source>live</source>
-        <translation>live</translation>
-    </message>
-    <message>
         <source>Disconnect</source>
         <translation>Trennen</translation>
     </message>
     <message>
         <source>Stop recording</source>
         <translation>Aufzeichnung beenden</translation>
+    </message>
+    <message>
+        <source>Estimate</source>
+        <translation>Schätzung</translation>
+    </message>
+    <message>
+        <source>The stance detector looks this far ahead (half its std window plus half its median window), so the estimate trails the sensor by this fixed delay.</source>
+        <translation>Der Standphasendetektor blickt so weit voraus (halbes Fenster der Standardabweichung plus halbes Medianfenster), daher folgt die Schätzung dem Sensor mit dieser festen Verzögerung.</translation>
+    </message>
+    <message>
+        <source>Latency:</source>
+        <translation>Latenz:</translation>
+    </message>
+    <message>
+        <source>State:</source>
+        <translation>Zustand:</translation>
+    </message>
+    <message>
+        <source>Steps:</source>
+        <translation>Schritte:</translation>
+    </message>
+    <message>
+        <source>Distance:</source>
+        <translation>Strecke:</translation>
+    </message>
+    <message>
+        <source>No live estimate: %1</source>
+        <translation>Keine Live-Schätzung: %1</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Waiting for samples</source>
+        <translation>Warte auf Abtastwerte</translation>
+    </message>
+    <message>
+        <source>Aligning: keep the foot still for the first %1 s</source>
+        <translation>Ausrichtung: den Fuß die ersten %1 s ruhig halten</translation>
+    </message>
+    <message>
+        <source>Estimating, %1 s behind the sensor</source>
+        <translation>Schätzung läuft, %1 s hinter dem Sensor</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::LiveViews</name>
+    <message>
+        <source>Live 2D</source>
+        <translation>Live 2D</translation>
+    </message>
+    <message>
+        <source>Live 3D</source>
+        <translation>Live 3D</translation>
+    </message>
+    <message>
+        <source>Live signals</source>
+        <translation>Live-Signale</translation>
+    </message>
+    <message>
+        <source>Live detector</source>
+        <translation>Live-Detektor</translation>
+    </message>
+    <message>
+        <source>live</source>
+        <translation>live</translation>
     </message>
 </context>
 <context>
@@ -767,6 +830,14 @@
         <source>Estimating...</source>
         <translation>Schätzung läuft...</translation>
     </message>
+    <message>
+        <source>&amp;Live path</source>
+        <translation>&amp;Live-Weg</translation>
+    </message>
+    <message>
+        <source>Live si&amp;gnals</source>
+        <translation>Live-Si&amp;gnale</translation>
+    </message>
 </context>
 <context>
     <name>footpath::ParameterPanel</name>
@@ -853,6 +924,33 @@
     <message>
         <source>Redo</source>
         <translation>Wiederherstellen:</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::ReconnectOffer</name>
+    <message>
+        <source>Reconnect</source>
+        <translation>Neu verbinden</translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The device went away.&lt;/b&gt; %1&lt;br&gt;Everything received until then was kept.</source>
+        <translation>&lt;b&gt;Das Gerät ist verschwunden.&lt;/b&gt; %1&lt;br&gt;Alles bis dahin Empfangene wurde behalten.</translation>
+    </message>
+    <message>
+        <source>Reconnecting continues the recording in %1.</source>
+        <translation>Beim erneuten Verbinden wird die Aufzeichnung in %1 fortgesetzt.</translation>
+    </message>
+    <message>
+        <source>%1 is back: reconnect?</source>
+        <translation>%1 ist wieder da: neu verbinden?</translation>
+    </message>
+    <message>
+        <source>Waiting for %1 to come back (plug the sensor in again)...</source>
+        <translation>Warte, bis %1 wieder da ist (Sensor erneut anstecken)...</translation>
     </message>
 </context>
 <context>
@@ -1446,6 +1544,10 @@
     <message>
         <source>Language (en, de, zh_CN)</source>
         <translation>Sprache (en, de, zh_CN)</translation>
+    </message>
+    <message>
+        <source>Connect the live input to this serial port or emulator link</source>
+        <translation>Den Live-Eingang mit dieser seriellen Schnittstelle oder Emulator-Verknüpfung verbinden</translation>
     </message>
 </context>
 </TS>

@@ -485,10 +485,6 @@
         <translation>重新同步：</translation>
     </message>
     <message>
-        <source>estimate lags by %1 s (detector look-ahead)</source>
-        <translation>估计滞后 %1 s（检测器前瞻）</translation>
-    </message>
-    <message>
         <source>Recording to %1</source>
         <translation>正在记录到 %1</translation>
     </message>
@@ -537,16 +533,83 @@
         <translation>会话已结束：%1</translation>
     </message>
     <message>
-        <source>live</source>
-        <translation>实时</translation>
-    </message>
-    <message>
         <source>Disconnect</source>
         <translation>断开连接</translation>
     </message>
     <message>
         <source>Stop recording</source>
         <translation>停止记录</translation>
+    </message>
+    <message>
+        <source>Estimate</source>
+        <translation>估计</translation>
+    </message>
+    <message>
+        <source>The stance detector looks this far ahead (half its std window plus half its median window), so the estimate trails the sensor by this fixed delay.</source>
+        <translation>站立检测器需要向前查看这么长时间（标准差窗口的一半加中值窗口的一半），因此估计结果以这一固定延迟落后于传感器。</translation>
+    </message>
+    <message>
+        <source>Latency:</source>
+        <translation>延迟：</translation>
+    </message>
+    <message>
+        <source>State:</source>
+        <translation>状态：</translation>
+    </message>
+    <message>
+        <source>Steps:</source>
+        <translation>步数：</translation>
+    </message>
+    <message>
+        <source>Distance:</source>
+        <translation>距离：</translation>
+    </message>
+    <message>
+        <source>No live estimate: %1</source>
+        <translation>无实时估计：%1</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Waiting for samples</source>
+        <translation>等待采样</translation>
+    </message>
+    <message>
+        <source>Aligning: keep the foot still for the first %1 s</source>
+        <translation>对准中：前 %1 秒请保持脚静止</translation>
+    </message>
+    <message>
+        <source>Estimating, %1 s behind the sensor</source>
+        <translation>估计中，落后传感器 %1 秒</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::LiveViews</name>
+    <message>
+        <source>Live 2D</source>
+        <translation>实时 2D</translation>
+    </message>
+    <message>
+        <source>Live 3D</source>
+        <translation>实时 3D</translation>
+    </message>
+    <message>
+        <source>Live signals</source>
+        <translation>实时信号</translation>
+    </message>
+    <message>
+        <source>Live detector</source>
+        <translation>实时检测器</translation>
+    </message>
+    <message>
+        <source>live</source>
+        <translation>实时</translation>
     </message>
 </context>
 <context>
@@ -767,6 +830,14 @@
         <source>Estimating...</source>
         <translation>正在估计...</translation>
     </message>
+    <message>
+        <source>&amp;Live path</source>
+        <translation>实时轨迹(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Live si&amp;gnals</source>
+        <translation>实时信号(&amp;G)</translation>
+    </message>
 </context>
 <context>
     <name>footpath::ParameterPanel</name>
@@ -853,6 +924,33 @@
     <message>
         <source>Redo</source>
         <translation>重做</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::ReconnectOffer</name>
+    <message>
+        <source>Reconnect</source>
+        <translation>重新连接</translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The device went away.&lt;/b&gt; %1&lt;br&gt;Everything received until then was kept.</source>
+        <translation>&lt;b&gt;设备已断开。&lt;/b&gt;%1&lt;br&gt;此前收到的所有数据均已保留。</translation>
+    </message>
+    <message>
+        <source>Reconnecting continues the recording in %1.</source>
+        <translation>重新连接后将在 %1 中继续录制。</translation>
+    </message>
+    <message>
+        <source>%1 is back: reconnect?</source>
+        <translation>%1 已恢复：是否重新连接？</translation>
+    </message>
+    <message>
+        <source>Waiting for %1 to come back (plug the sensor in again)...</source>
+        <translation>等待 %1 恢复（请重新插入传感器）...</translation>
     </message>
 </context>
 <context>
@@ -1446,6 +1544,10 @@
     <message>
         <source>Language (en, de, zh_CN)</source>
         <translation>语言（en、de、zh_CN）</translation>
+    </message>
+    <message>
+        <source>Connect the live input to this serial port or emulator link</source>
+        <translation>将实时输入连接到此串口或模拟器链接</translation>
     </message>
 </context>
 </TS>

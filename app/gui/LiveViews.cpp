@@ -73,10 +73,10 @@ LiveViews::LiveViews(QWidget* parent)
     trajectory3D_->setObjectName(QStringLiteral("liveTrajectory3D"));
     signals_->setObjectName(QStringLiteral("liveSignals"));
     flags_->setObjectName(QStringLiteral("liveStanceFlags"));
-    trajectoryTabs_->addTab(trajectory2D_, tr("Live path 2D"));
-    trajectoryTabs_->addTab(trajectory3D_, tr("Live path 3D"));
+    trajectoryTabs_->addTab(trajectory2D_, tr("Live 2D"));
+    trajectoryTabs_->addTab(trajectory3D_, tr("Live 3D"));
     signalTabs_->addTab(signals_, tr("Live signals"));
-    signalTabs_->addTab(flags_, tr("Live stance detector"));
+    signalTabs_->addTab(flags_, tr("Live detector"));
     flags_->setParameters(Parameters{});
     sincePathUpdate_.start();
 }

@@ -133,6 +133,13 @@ void MainWindow::createDocks()
     dock(this, tr("Summary"), "summaryDock", summary_, Qt::BottomDockWidgetArea);
 }
 
+void MainWindow::connectLive(const QString& port)
+{
+    if (auto* liveDock = findChild<QDockWidget*>(QStringLiteral("liveDock")))
+        liveDock->raise();
+    live_->connectTo(port);
+}
+
 void MainWindow::createMenus()
 {
     createFileMenu();
@@ -194,6 +201,10 @@ void MainWindow::createViewMenu()
                          [this] { signalTabs_->setCurrentWidget(signalPlots_); });
     viewMenu_->addAction(tr("Stance &detector"), QKeySequence(Qt::CTRL | Qt::Key_4), this,
                          [this] { signalTabs_->setCurrentWidget(flags_); });
+    viewMenu_->addAction(tr("&Live path"), QKeySequence(Qt::CTRL | Qt::Key_5), this,
+                         [this] { trajectoryTabs_->setCurrentWidget(live_->views()->trajectory2D()); });
+    viewMenu_->addAction(tr("Live si&gnals"), QKeySequence(Qt::CTRL | Qt::Key_6), this,
+                         [this] { signalTabs_->setCurrentWidget(live_->views()->signalPlots()); });
     viewMenu_->addSeparator();
     for (QDockWidget* widget : findChildren<QDockWidget*>())
         viewMenu_->addAction(widget->toggleViewAction());

@@ -34,6 +34,8 @@ public:
     ~MainWindow() override;
 
     /// Starts loading a recording (a file path or a ":/" resource) in the background.
+    /// Raises the Live input dock and connects it to `port` (a device or the emulator's link).
+    void connectLive(const QString& port);
     void openRecording(const QString& path, const ImportOptions& options = {});
     AnalysisSession* session() const { return session_; }
 

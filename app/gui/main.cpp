@@ -46,8 +46,11 @@ int main(int argc, char** argv)
     const QCommandLineOption screenshot(
         "screenshot", QApplication::translate("main", "Save a PNG of the window once estimated, then quit"), "file");
     const QCommandLineOption language("language", QApplication::translate("main", "Language (en, de, zh_CN)"), "code");
+    const QCommandLineOption connectPort(
+        "connect", QApplication::translate("main", "Connect the live input to this serial port or emulator link"), "port");
     parser.addOption(screenshot);
     parser.addOption(language);
+    parser.addOption(connectPort);
     parser.process(app);
     installTranslations(app, parser.isSet(language) ? parser.value(language) : settings.language());
 
@@ -55,7 +58,15 @@ int main(int argc, char** argv)
     window.show();
     const QStringList files = parser.positionalArguments();
     window.openRecording(files.isEmpty() ? QString::fromUtf8(kSampleWalk) : files.first());
-    if (parser.isSet(screenshot)) {
+    if (parser.isSet(connectPort))
+        window.connectLive(parser.value(connectPort));
+    if (parser.isSet(screenshot) && parser.isSet(connectPort)) {
+        // Live: grab after some seconds of streaming, so the path and the lanes have grown.
+        QTimer::singleShot(12000, &window, [&window, path = parser.value(screenshot)] {
+            window.grab().save(path);
+            QApplication::quit();
+        });
+    } else if (parser.isSet(screenshot)) {
         // For documentation and visual checks under xvfb-run: grab once the first result is drawn.
         QObject::connect(&window, &footpath::MainWindow::resultShown, &window, [&window, path = parser.value(screenshot)] {
             QTimer::singleShot(500, &window, [&window, path] {
