@@ -1,15 +1,21 @@
 // The workspace as a user drives it: open a file, tune a slider, toggle ZARU, undo, switch language.
 #include "AnalysisSession.h"
 #include "AppSettings.h"
+#include "LivePanel.h"
+#include "LiveViews.h"
 #include "MainWindow.h"
 #include "ParameterPanel.h"
 #include "SignalPlots.h"
+#include "StanceFlagsPlot.h"
+#include "TrajectoryView2D.h"
+#include "TrajectoryView3D.h"
 #include "sim/WalkSimulator.h"
 
 #include <QCheckBox>
 #include <QMenuBar>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QTabWidget>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTranslator>
@@ -86,6 +92,30 @@ private slots:
         QCOMPARE(window.session()->parameters().acc_std_max_mps2, Parameters().acc_std_max_mps2);
         QTRY_VERIFY_WITH_TIMEOUT(window.session()->result() && window.session()->result()->flags.c2 == before->flags.c2,
                                  30000);
+    }
+
+    void liveViewsSitBesideTheRecordedOnesAndFollowTheParameters()
+    {
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));
+        MainWindow window(settings);
+        auto* live = window.findChild<LivePanel*>();
+        QVERIFY(live);
+        // The live views are tabs of the workspace's central tab widgets, not squeezed into the dock.
+        for (QWidget* view : {static_cast<QWidget*>(live->views()->trajectory2D()),
+                              static_cast<QWidget*>(live->views()->trajectory3D()),
+                              static_cast<QWidget*>(live->views()->signalPlots()),
+                              static_cast<QWidget*>(live->views()->stanceFlags())}) {
+            QWidget* tabs = view->parentWidget() ? view->parentWidget()->parentWidget() : nullptr;
+            QVERIFY(qobject_cast<QTabWidget*>(tabs));
+            QVERIFY(!live->isAncestorOf(view));
+        }
+        const double before = live->latency_s();
+        auto* slider = window.findChild<QSlider*>(QStringLiteral("slider_window_half_s"));
+        QVERIFY(slider);
+        slider->setValue(slider->maximum());
+        QVERIFY(live->latency_s() > before);  // the live estimator uses the workspace's parameters
+        QCOMPARE(live->latency_s(), window.session()->parameters().window_half_s
+                                        + window.session()->parameters().median_window_s / 2.0);
     }
 
     void togglingZaruChangesTheEstimate()

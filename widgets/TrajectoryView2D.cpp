@@ -369,14 +369,8 @@ void TrajectoryView2D::showResult(const Result& result)
 
 void TrajectoryView2D::setResult(std::shared_ptr<const Result> result)
 {
-    if (!result) {
-        clear();
-        return;
-    }
-    result_ = std::move(result);
-    showPathAndMarkers();
-    fitViewToData();
-    plot_->replot();
+    viewMovedByUser_ = false;  // a new result is fitted whatever the user did to the old one
+    followResult(std::move(result));
 }
 
 void TrajectoryView2D::followResult(std::shared_ptr<const Result> result)

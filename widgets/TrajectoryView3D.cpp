@@ -220,9 +220,8 @@ void TrajectoryView3D::showResult(const Result& result)
 
 void TrajectoryView3D::setResult(std::shared_ptr<const Result> result)
 {
-    result_ = std::move(result);
-    rebuildScene();
-    resetView();
+    cameraMovedByUser_ = false;  // a new result is fitted whatever the user did to the old one
+    followResult(std::move(result));
 }
 
 void TrajectoryView3D::followResult(std::shared_ptr<const Result> result)
