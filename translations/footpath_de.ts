@@ -588,6 +588,14 @@
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
+    <message>
+        <source>Disconnected: the port went away.</source>
+        <translation>Getrennt: die Schnittstelle ist verschwunden.</translation>
+    </message>
+    <message>
+        <source>Complete: every sample estimated, as the offline analysis does</source>
+        <translation>Fertig: jeder Abtastwert geschätzt, wie in der Offline-Analyse</translation>
+    </message>
 </context>
 <context>
     <name>footpath::LiveViews</name>
@@ -937,8 +945,8 @@
         <translation>Schließen</translation>
     </message>
     <message>
-        <source>&lt;b&gt;The device went away.&lt;/b&gt; %1&lt;br&gt;Everything received until then was kept.</source>
-        <translation>&lt;b&gt;Das Gerät ist verschwunden.&lt;/b&gt; %1&lt;br&gt;Alles bis dahin Empfangene wurde behalten.</translation>
+        <source>&lt;b&gt;The device went away:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Das Gerät ist verschwunden:&lt;/b&gt; %1</translation>
     </message>
     <message>
         <source>Reconnecting continues the recording in %1.</source>

@@ -588,6 +588,14 @@
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
+    <message>
+        <source>Disconnected: the port went away.</source>
+        <translation>已断开：端口已消失。</translation>
+    </message>
+    <message>
+        <source>Complete: every sample estimated, as the offline analysis does</source>
+        <translation>完成：所有采样均已估计，与离线分析一致</translation>
+    </message>
 </context>
 <context>
     <name>footpath::LiveViews</name>
@@ -937,8 +945,8 @@
         <translation>关闭</translation>
     </message>
     <message>
-        <source>&lt;b&gt;The device went away.&lt;/b&gt; %1&lt;br&gt;Everything received until then was kept.</source>
-        <translation>&lt;b&gt;设备已断开。&lt;/b&gt;%1&lt;br&gt;此前收到的所有数据均已保留。</translation>
+        <source>&lt;b&gt;The device went away:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;设备已断开：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>Reconnecting continues the recording in %1.</source>

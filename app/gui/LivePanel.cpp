@@ -15,6 +15,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTabWidget>
@@ -160,7 +161,16 @@ void LivePanel::buildUi()
     viewArea_->addWidget(views_->trajectoryTabs());
     viewArea_->addWidget(views_->signalTabs());
 
-    auto* layout = new QVBoxLayout(this);
+    // Scrolls rather than squeezes when the dock is short: the rows stay readable.
+    auto* content = new QWidget;
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    outer->addWidget(scroll);
+    auto* layout = new QVBoxLayout(content);
+    contentLayout_ = layout;
     layout->addLayout(settings);
     layout->addWidget(status_);
     layout->addWidget(reconnect_);
@@ -168,6 +178,7 @@ void LivePanel::buildUi()
     layout->addWidget(counters);
     layout->addWidget(buildEstimateBox());
     layout->addWidget(viewArea_, 1);
+    scroll->setWidget(content);
 
     viewTimer_ = new QTimer(this);
     viewTimer_->setInterval(kViewInterval_ms);
@@ -199,7 +210,7 @@ void LivePanel::moveViewsInto(QTabWidget* trajectoryTabs, QTabWidget* signalTabs
     moveTabs(views_->trajectoryTabs(), trajectoryTabs);
     moveTabs(views_->signalTabs(), signalTabs);
     viewArea_->hide();
-    layout()->addItem(new QSpacerItem(0, 0, QSizePolicy::Minimum, QSizePolicy::Expanding));
+    contentLayout_->addStretch(1);
 }
 
 void LivePanel::wireSession()
@@ -419,6 +430,8 @@ void LivePanel::onEnded(SessionEnd how, const QString& message)
     refreshViews(true);
     if (how == SessionEnd::Stopped)
         status_->setText(message.isEmpty() ? tr("Disconnected") : message);
+    else if (how == SessionEnd::Vanished)
+        status_->setText(tr("Disconnected: the port went away."));  // the reconnect offer has the details
     else
         status_->setText(tr("Session ended: %1").arg(message));
     const bool recordingCut = recordingActive_ || recordingCutBySessionEnd_;
@@ -470,7 +483,9 @@ void LivePanel::showEstimateFigures()
         estimateState_->setText(tr("Waiting for samples"));
         return;
     }
-    if (!estimator_->aligned())
+    if (session_->state() == SessionState::Idle && estimator_->pendingSamples() == 0 && estimator_->aligned())
+        estimateState_->setText(tr("Complete: every sample estimated, as the offline analysis does"));
+    else if (!estimator_->aligned())
         estimateState_->setText(tr("Aligning: keep the foot still for the first %1 s").arg(params_.alignment_s, 0, 'g', 3));
     else if (!estimator_->result().time_s.empty())
         estimateState_->setText(tr("Estimating, %1 s behind the sensor")

@@ -16,6 +16,7 @@ class QSpinBox;
 class QSplitter;
 class QTabWidget;
 class QTimer;
+class QVBoxLayout;
 
 namespace footpath {
 
@@ -107,6 +108,7 @@ private:
     QLabel* estimateState_ = nullptr;
     QLabel* steps_ = nullptr;
     QLabel* distance_ = nullptr;
+    QVBoxLayout* contentLayout_ = nullptr;
     QSplitter* viewArea_ = nullptr;
     LiveViews* views_ = nullptr;
     QTimer* viewTimer_ = nullptr;

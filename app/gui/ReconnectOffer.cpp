@@ -73,7 +73,8 @@ void ReconnectOffer::checkPort()
 
 void ReconnectOffer::showText()
 {
-    QString text = tr("<b>The device went away.</b> %1<br>Everything received until then was kept.").arg(why_.toHtmlEscaped());
+    // The session's own words say what was kept.
+    QString text = tr("<b>The device went away:</b> %1").arg(why_.toHtmlEscaped());
     if (!continuation_.isEmpty())
         text += QStringLiteral("<br>") + tr("Reconnecting continues the recording in %1.").arg(continuation_.toHtmlEscaped());
     text += QStringLiteral("<br>")
