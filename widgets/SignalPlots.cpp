@@ -261,10 +261,6 @@ void SignalPlots::createRows()
         auto* rect = new QCPAxisRect(plot_);
         plot_->plotLayout()->addElement(static_cast<int>(r), 0, rect);  // arrangeRows() sorts
         rect->setMarginGroup(QCP::msLeft | QCP::msRight, alignedMargins);
-        rect->setRangeDrag(Qt::Horizontal);
-        rect->setRangeZoom(Qt::Horizontal);
-        rect->setRangeDragAxes(timeAxis(rect), nullptr);
-        rect->setRangeZoomAxes(timeAxis(rect), nullptr);
         rect->axis(QCPAxis::atLeft)->setLabel(tr(kRowInfos[r].axisLabel));
         unitAxis(rect)->setRange(0.0, 1.0);
         rows_[r].rect = rect;
@@ -321,12 +317,14 @@ void SignalPlots::createToolBar()
 
 void SignalPlots::wireInteractions()
 {
-    for (const RowParts& row : rows_) {
-        connect(timeAxis(row.rect), qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
-                &SignalPlots::onRowRangeChanged);
-    }
-    connect(plot_, &QCustomPlot::mousePress, this, &SignalPlots::onMousePress);
-    connect(plot_, &QCustomPlot::mouseRelease, this, &SignalPlots::onMouseRelease);
+    timeRows_ = new LinkedTimeRows(plot_);
+    for (const RowParts& row : rows_)
+        timeRows_->addRow(row.rect);
+    connect(timeRows_, &LinkedTimeRows::rangeChanged, this, &SignalPlots::timeRangeChanged);
+    connect(timeRows_, &LinkedTimeRows::clicked, this, [this](double time_s) {
+        setTimeCursor(time_s);
+        emit timeCursorMoved(time_s);
+    });
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         const Channel channel = static_cast<Channel>(c);
         connect(channelBoxes_[c], &QCheckBox::toggled, this, [this, channel](bool on) { setChannelVisible(channel, on); });
@@ -475,7 +473,7 @@ QCPAxisRect* SignalPlots::axisRect(Row row) const { return rows_[slot(row)].rect
 QCPGraph* SignalPlots::graph(Channel channel) const { return graphs_[slot(channel)]; }
 bool SignalPlots::isStanceShaded(double time_s) const { return rows_.front().stance->contains(time_s); }
 QCPItemStraightLine* SignalPlots::cursorLine(Row row) const { return rows_[slot(row)].cursor; }
-QCPRange SignalPlots::timeRange() const { return QCPRange(shownFrom_s_, shownTo_s_); }
+QCPRange SignalPlots::timeRange() const { return timeRows_->range(); }
 
 void SignalPlots::setTimeCursor(double time_s)
 {
@@ -491,8 +489,7 @@ void SignalPlots::setTimeCursor(double time_s)
 
 void SignalPlots::setTimeRange(double from_s, double to_s)
 {
-    // Any row will do: onRowRangeChanged passes the range on to the others.
-    timeAxis(rows_.front().rect)->setRange(from_s, to_s);
+    timeRows_->setRange(from_s, to_s);
 }
 
 void SignalPlots::showAll()
@@ -501,50 +498,13 @@ void SignalPlots::showAll()
         setTimeRange(recording_->samples.front().time_s, recording_->samples.back().time_s);
 }
 
-void SignalPlots::onRowRangeChanged(const QCPRange& range)
-{
-    if (range.lower == shownFrom_s_ && range.upper == shownTo_s_)
-        return;  // the echo from a row this handler has just set
-    shownFrom_s_ = range.lower;
-    shownTo_s_ = range.upper;
-    for (RowParts& row : rows_)
-        timeAxis(row.rect)->setRange(range);
-    plot_->replot(QCustomPlot::rpQueuedReplot);  // a drag changes the range many times per frame
-    emit timeRangeChanged(range.lower, range.upper);
-}
-
 void SignalPlots::keyPressEvent(QKeyEvent* event)
 {
-    if (event->key() == Qt::Key_Home) {
+    if (event->key() == Qt::Key_Home)
         showAll();
-    } else if (const std::optional<QCPRange> range = keyNavigatedRange(event->key(), shownFrom_s_, shownTo_s_)) {
-        setTimeRange(range->lower, range->upper);
-    } else {
-        QWidget::keyPressEvent(event);
-        return;
-    }
+    else if (!timeRows_->navigate(event->key()))
+        return QWidget::keyPressEvent(event);
     event->accept();
-}
-
-void SignalPlots::onMousePress(QMouseEvent* event)
-{
-    pressPos_ = event->position().toPoint();
-}
-
-void SignalPlots::onMouseRelease(QMouseEvent* event)
-{
-    // A drag pans the time axis; only a click that stayed put places the cursor.
-    const QPoint pos = event->position().toPoint();
-    if (!isClick(pressPos_, pos, event->button()))
-        return;
-    for (const RowParts& row : rows_) {
-        if (row.rect->layout() != nullptr && row.rect->rect().contains(pos)) {
-            const double time_s = timeAxis(row.rect)->pixelToCoord(pos.x());
-            setTimeCursor(time_s);
-            emit timeCursorMoved(time_s);
-            return;
-        }
-    }
 }
 
 void SignalPlots::renderTo(QPainter& painter, const QRect& target)

@@ -22,6 +22,8 @@ class QToolBar;
 
 namespace footpath {
 
+class LinkedTimeRows;
+
 /// The recording's raw signals in stacked rows that share one time axis: acceleration, angular
 /// rate, magnetic field and pressure/barometric height (the last two only when recorded). Stance
 /// phases of a result are shaded behind every row; a time cursor runs through all rows.
@@ -102,9 +104,6 @@ private:
     void arrangeRows();
     void refreshLegend(std::size_t row, bool withStance);
     bool rowHasData(Row row) const;
-    void onRowRangeChanged(const QCPRange& range);
-    void onMousePress(QMouseEvent* event);
-    void onMouseRelease(QMouseEvent* event);
 
     QCustomPlot* plot_;
     QToolBar* toolBar_;
@@ -117,9 +116,7 @@ private:
     std::shared_ptr<const Result> result_;
     double timeCursor_s_ = 0.0;
     bool cursorPlaced_ = false;  ///< the cursor stays hidden until someone places it
-    double shownFrom_s_ = 0.0;  ///< the range all rows share; compared to stop the linking recursing
-    double shownTo_s_ = 0.0;
-    QPoint pressPos_;
+    LinkedTimeRows* timeRows_ = nullptr;  ///< made with the rows
 };
 
 }  // namespace footpath

@@ -240,10 +240,6 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
         row.rect = new QCPAxisRect(plot_);
         plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, row.rect);  // arrangeRows() sorts
         row.rect->setMarginGroup(QCP::msLeft | QCP::msRight, alignedMargins);
-        row.rect->setRangeDrag(Qt::Horizontal);
-        row.rect->setRangeZoom(Qt::Horizontal);
-        row.rect->setRangeDragAxes(timeAxis(row.rect), nullptr);
-        row.rect->setRangeZoomAxes(timeAxis(row.rect), nullptr);
         unitAxis(row.rect)->setRange(0.0, 1.0);
         row.cursor = addCursorLine(plot_, row.rect);
     }
@@ -320,12 +316,14 @@ void StanceFlagsPlot::createInputRows()
 
 void StanceFlagsPlot::wireInteractions()
 {
-    for (const RowParts& row : rows_) {
-        connect(timeAxis(row.rect), qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
-                &StanceFlagsPlot::onRowRangeChanged);
-    }
-    connect(plot_, &QCustomPlot::mousePress, this, &StanceFlagsPlot::onMousePress);
-    connect(plot_, &QCustomPlot::mouseRelease, this, &StanceFlagsPlot::onMouseRelease);
+    timeRows_ = new LinkedTimeRows(plot_);
+    for (const RowParts& row : rows_)
+        timeRows_->addRow(row.rect);
+    connect(timeRows_, &LinkedTimeRows::rangeChanged, this, &StanceFlagsPlot::timeRangeChanged);
+    connect(timeRows_, &LinkedTimeRows::clicked, this, [this](double time_s) {
+        setTimeCursor(time_s);
+        emit timeCursorMoved(time_s);
+    });
     connect(inputsAction_, &QAction::toggled, this, &StanceFlagsPlot::setInputsVisible);
 }
 
@@ -467,7 +465,7 @@ QCPAxisRect* StanceFlagsPlot::inputRect(Input input) const { return rows_[rowOf(
 QCPGraph* StanceFlagsPlot::laneGraph(Lane lane) const { return lanes_[slot(lane)]; }
 QCPGraph* StanceFlagsPlot::inputGraph(Input input) const { return inputs_[slot(input)]; }
 QCPGraph* StanceFlagsPlot::thresholdGraph(Threshold threshold) const { return thresholds_[slot(threshold)]; }
-QCPRange StanceFlagsPlot::timeRange() const { return QCPRange(shownFrom_s_, shownTo_s_); }
+QCPRange StanceFlagsPlot::timeRange() const { return timeRows_->range(); }
 
 void StanceFlagsPlot::setTimeCursor(double time_s)
 {
@@ -483,8 +481,7 @@ void StanceFlagsPlot::setTimeCursor(double time_s)
 
 void StanceFlagsPlot::setTimeRange(double from_s, double to_s)
 {
-    // Any row will do: onRowRangeChanged passes the range on to the others.
-    timeAxis(rows_.front().rect)->setRange(from_s, to_s);
+    timeRows_->setRange(from_s, to_s);
 }
 
 void StanceFlagsPlot::showAll()
@@ -493,50 +490,13 @@ void StanceFlagsPlot::showAll()
         setTimeRange(times_s_.front(), times_s_.back());
 }
 
-void StanceFlagsPlot::onRowRangeChanged(const QCPRange& range)
-{
-    if (range.lower == shownFrom_s_ && range.upper == shownTo_s_)
-        return;  // the echo from a row this handler has just set
-    shownFrom_s_ = range.lower;
-    shownTo_s_ = range.upper;
-    for (RowParts& row : rows_)
-        timeAxis(row.rect)->setRange(range);
-    plot_->replot(QCustomPlot::rpQueuedReplot);  // a drag changes the range many times per frame
-    emit timeRangeChanged(range.lower, range.upper);
-}
-
 void StanceFlagsPlot::keyPressEvent(QKeyEvent* event)
 {
-    if (event->key() == Qt::Key_Home) {
+    if (event->key() == Qt::Key_Home)
         showAll();
-    } else if (const std::optional<QCPRange> range = keyNavigatedRange(event->key(), shownFrom_s_, shownTo_s_)) {
-        setTimeRange(range->lower, range->upper);
-    } else {
-        QWidget::keyPressEvent(event);
-        return;
-    }
+    else if (!timeRows_->navigate(event->key()))
+        return QWidget::keyPressEvent(event);
     event->accept();
-}
-
-void StanceFlagsPlot::onMousePress(QMouseEvent* event)
-{
-    pressPos_ = event->position().toPoint();
-}
-
-void StanceFlagsPlot::onMouseRelease(QMouseEvent* event)
-{
-    // A drag pans the time axis; only a click that stayed put places the cursor.
-    const QPoint pos = event->position().toPoint();
-    if (!isClick(pressPos_, pos, event->button()))
-        return;
-    for (const RowParts& row : rows_) {
-        if (row.rect->layout() != nullptr && row.rect->rect().contains(pos)) {
-            const double time_s = timeAxis(row.rect)->pixelToCoord(pos.x());
-            setTimeCursor(time_s);
-            emit timeCursorMoved(time_s);
-            return;
-        }
-    }
 }
 
 void StanceFlagsPlot::renderTo(QPainter& painter, const QRect& target)

@@ -22,6 +22,8 @@ class QToolBar;
 
 namespace footpath {
 
+class LinkedTimeRows;
+
 /// The stance detector at work: its flags C1, C2, C3, C and the median-filtered stance as 0/1 lanes
 /// and, on demand, its inputs (|a|, the centred std of |a|, |w|) with the thresholds they are
 /// compared against, so a user sees which condition failed where.
@@ -100,9 +102,6 @@ private:
     void plotThresholds();
     void rescaleInputAxes();
     void arrangeRows();
-    void onRowRangeChanged(const QCPRange& range);
-    void onMousePress(QMouseEvent* event);
-    void onMouseRelease(QMouseEvent* event);
 
     QCustomPlot* plot_;
     QToolBar* toolBar_;
@@ -119,9 +118,7 @@ private:
     bool inputsVisible_ = false;
     double timeCursor_s_ = 0.0;
     bool cursorPlaced_ = false;  ///< the cursor stays hidden until someone places it
-    double shownFrom_s_ = 0.0;   ///< the range all rows share; compared to stop the linking recursing
-    double shownTo_s_ = 0.0;
-    QPoint pressPos_;
+    LinkedTimeRows* timeRows_ = nullptr;  ///< made with the rows
 };
 
 }  // namespace footpath

@@ -44,4 +44,62 @@ void renderPlotTo(QCustomPlot* plot, QPainter& painter, const QRect& target)
     painter.drawPicture(target.topLeft(), picture);
 }
 
+LinkedTimeRows::LinkedTimeRows(QCustomPlot* plot) : QObject(plot), plot_(plot)
+{
+    connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* event) { pressPos_ = event->position().toPoint(); });
+    connect(plot_, &QCustomPlot::mouseRelease, this, &LinkedTimeRows::onMouseRelease);
+}
+
+void LinkedTimeRows::addRow(QCPAxisRect* rect)
+{
+    QCPAxis* time = rect->axis(QCPAxis::atBottom);
+    rect->setRangeDrag(Qt::Horizontal);
+    rect->setRangeZoom(Qt::Horizontal);
+    rect->setRangeDragAxes(time, nullptr);
+    rect->setRangeZoomAxes(time, nullptr);
+    connect(time, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, &LinkedTimeRows::onRowRangeChanged);
+    rows_.push_back(rect);
+}
+
+void LinkedTimeRows::setRange(double from_s, double to_s)
+{
+    // Any row will do: onRowRangeChanged passes the range on to the others.
+    if (!rows_.empty())
+        rows_.front()->axis(QCPAxis::atBottom)->setRange(from_s, to_s);
+}
+
+bool LinkedTimeRows::navigate(int key)
+{
+    const std::optional<QCPRange> range = keyNavigatedRange(key, from_s_, to_s_);
+    if (range)
+        setRange(range->lower, range->upper);
+    return range.has_value();
+}
+
+void LinkedTimeRows::onRowRangeChanged(const QCPRange& range)
+{
+    if (range.lower == from_s_ && range.upper == to_s_)
+        return;  // the echo from a row this handler has just set
+    from_s_ = range.lower;
+    to_s_ = range.upper;
+    for (QCPAxisRect* row : rows_)
+        row->axis(QCPAxis::atBottom)->setRange(range);
+    plot_->replot(QCustomPlot::rpQueuedReplot);  // a drag changes the range many times per frame
+    emit rangeChanged(range.lower, range.upper);
+}
+
+void LinkedTimeRows::onMouseRelease(QMouseEvent* event)
+{
+    // A drag pans the time axis; only a click that stayed put places the cursor.
+    const QPoint pos = event->position().toPoint();
+    if (!isClick(pressPos_, pos, event->button()))
+        return;
+    for (QCPAxisRect* row : rows_) {
+        if (row->layout() != nullptr && row->rect().contains(pos)) {  // hidden rows are out of the layout
+            emit clicked(row->axis(QCPAxis::atBottom)->pixelToCoord(pos.x()));
+            return;
+        }
+    }
+}
+
 }  // namespace footpath

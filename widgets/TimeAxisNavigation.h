@@ -4,6 +4,7 @@
 #include <qcustomplot.h>
 
 #include <optional>
+#include <vector>
 
 class QPainter;
 
@@ -22,5 +23,36 @@ bool isClick(const QPoint& pressed, const QPoint& released, Qt::MouseButton butt
 /// Draws the plot into target as vector commands: QCustomPlot paints only through its own
 /// QCPPainter, so the drawing is recorded in a QPicture that the caller's painter replays.
 void renderPlotTo(QCustomPlot* plot, QPainter& painter, const QRect& target);
+
+/// The rows of one QCustomPlot that share a time axis (SignalPlots, StanceFlagsPlot): dragging or
+/// zooming any row moves them all, navigation keys move them, and a click that stayed put (not
+/// the end of a pan) in a shown row becomes a time.
+class LinkedTimeRows : public QObject {
+    Q_OBJECT
+public:
+    explicit LinkedTimeRows(QCustomPlot* plot);
+
+    /// Links the row's bottom (time) axis; drag and zoom act on it alone.
+    void addRow(QCPAxisRect* rect);
+    /// Shows [from_s, to_s] in every row; rangeChanged follows if that is a change.
+    void setRange(double from_s, double to_s);
+    QCPRange range() const { return QCPRange(from_s_, to_s_); }
+    /// Applies +/-, Left or Right (keyNavigatedRange); false for any other key.
+    bool navigate(int key);
+
+signals:
+    void rangeChanged(double from_s, double to_s);
+    void clicked(double time_s);
+
+private:
+    void onRowRangeChanged(const QCPRange& range);
+    void onMouseRelease(QMouseEvent* event);
+
+    QCustomPlot* plot_;
+    std::vector<QCPAxisRect*> rows_;
+    double from_s_ = 0.0;  ///< the range all rows share; compared to stop the linking recursing
+    double to_s_ = 0.0;
+    QPoint pressPos_;
+};
 
 }  // namespace footpath
