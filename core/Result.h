@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace footpath {
@@ -13,8 +14,34 @@ struct StanceFlags {
     std::vector<std::uint8_t> c2;      ///< std of |a| over the centred window below threshold
     std::vector<std::uint8_t> c3;      ///< |w| < w_max
     std::vector<std::uint8_t> c;       ///< c1 & c2 & c3
-    std::vector<std::uint8_t> stance;  ///< c after the median filter: 1 = foot at rest
+    std::vector<std::uint8_t> stance;  ///< the final decision: 1 = foot at rest
+    /// The chosen detector's test statistic, log10, one per sample (for C1/C2/C3 the log10 of the
+    /// C2 input, the std of |a|). Units depend on the detector (see detect/ZeroVelocityDetectors.h).
+    std::vector<float> logStatistic;
+    /// log10 of the threshold the statistic was compared against at each sample (adaptive
+    /// detectors move it with the motion; fixed ones draw a flat line).
+    std::vector<float> logThreshold;
 };
+
+/// What a plausibility check found wrong with a result, over the time span it concerns.
+struct PlausibilityWarning {
+    enum class Kind {
+        NoInitialRest,      ///< the recording does not start with the foot at rest
+        LongSwing,          ///< no stance for longer than a human swing (a missed stance)
+        StrideLength,       ///< a stride longer than a human stride
+        StrideDuration,     ///< a stride longer in time than human gait
+        StanceRatio,        ///< the share of stance time far from normal gait
+        ImplausibleSpeed,   ///< the foot moved faster than a foot can (the filter ran away)
+        FewStances,         ///< too few stance phases for the recording's length
+    };
+    Kind kind = Kind::LongSwing;
+    double start_s = 0.0;  ///< the span the finding concerns (recording time)
+    double end_s = 0.0;
+    std::string message;   ///< one sentence for the user, with the figures and why it matters
+};
+
+/// Stable identifier of a warning kind for JSON and CSV ("long_swing").
+const char* warningKindName(PlausibilityWarning::Kind kind);
 
 /// One stance phase and the stride that led to it.
 struct Step {
@@ -47,6 +74,9 @@ struct Result {
     StanceFlags flags;
     std::vector<Step> steps;
     Summary summary;
+    /// Findings of the plausibility checks (core/nav/Plausibility.h), in time order. Empty when the
+    /// result looks like human walking or running.
+    std::vector<PlausibilityWarning> warnings;
     bool cancelled = false;  ///< the progress callback asked to stop; the vectors are partial
 };
 

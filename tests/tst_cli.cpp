@@ -1,8 +1,9 @@
 // The real footpath-cli binary (FOOTPATH_CLI) run through QProcess on a simulated 10 m straight walk:
-// output files and their formats, the summary's figures, eval's reports, presets and --set, and the
-// exit code 2 with a precise message for every kind of bad input. Inputs and outputs live in a
-// QTemporaryDir.
+// output files and their formats, the summary's figures, eval's reports (one file, or several files
+// and folders at once), presets and --set, and the exit code 2 with a precise message for every
+// kind of bad input. Inputs and outputs live in a QTemporaryDir.
 
+#include "TestData.h"
 #include "io/ParameterIo.h"
 #include "nav/Parameters.h"
 #include "sim/WalkSimulator.h"
@@ -10,6 +11,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -140,6 +142,23 @@ QStringList filesIn(const QString& dir)
     return QDir(dir).entryList(QDir::Files | QDir::Dirs | QDir::Hidden | QDir::NoDotAndDotDot, QDir::Name);
 }
 
+/// The first word of every table row that names a .csv file, in printed order.
+QStringList rowNamesOf(const QString& out)
+{
+    QStringList names;
+    const QRegularExpression row(QStringLiteral("^(\\S+\\.csv)\\s"));
+    for (const QString& line : out.split(QLatin1Char('\n')))
+        if (const QRegularExpressionMatch match = row.match(line); match.hasMatch())
+            names << match.captured(1);
+    return names;
+}
+
+/// The method set eval names for the default parameters (ZARU is on or off by default).
+QString defaultMethodSet()
+{
+    return footpath::Parameters().use_zaru ? QStringLiteral("ZUPT+ZARU") : QStringLiteral("ZUPT");
+}
+
 QString substitute(QString text, const QString& dir, const QString& walk)
 {
     return text.replace(QStringLiteral("{dir}"), dir).replace(QStringLiteral("{walk}"), walk);
@@ -165,6 +184,13 @@ private slots:
     void eval_setOverridesThePresetAndBothAreApplied();
     void eval_lengthJsonReportsDistanceError();
     void eval_closedLoopPrintsTableWithDbse();
+    void eval_severalInputsGiveOneRowEachAndASummary();
+    void eval_severalInputsJsonKeepsTheInputOrder();
+    void eval_warningsGoToStderrAndJson();
+    void eval_missingPathExitsTwoNamingIt();
+    void eval_unreadableFileInAFolderIsAnErrorRow();
+    void eval_jobsDoNotChangeTheOutput();
+    void eval_datasetFolderSummarisesEveryTrial();
     void badInput_exitsTwoWithAPreciseMessage_data();
     void badInput_exitsTwoWithAPreciseMessage();
     void failedWrite_leavesNoPartialFile();
@@ -172,6 +198,9 @@ private slots:
     void help_exitsZeroAndPrintsUsage();
 
 private:
+    /// A folder with copies of the walk under names, beside files eval must skip.
+    bool makeWalkFolder(const QString& folder, const QStringList& names) const;
+
     QTemporaryDir dir_;
     QString walkCsv_;
     std::size_t sampleCount_ = 0;
@@ -284,6 +313,8 @@ void TestCli::process_summaryFiguresArePlausible()
     for (const char* key : {"samples", "duration_s", "steps", "path_length_m", "end_to_start_m", "end_to_start_pct",
                             "runtime_s"})
         QVERIFY2(json.value(QLatin1String(key)).isDouble(), key);
+    // The plausibility checks' findings: the list is there even when it is empty.
+    QVERIFY(json.value(QStringLiteral("warnings")).isArray());
 
     QCOMPARE(json.value(QStringLiteral("samples")).toInteger(), qint64(sampleCount_));
     QVERIFY(std::abs(json.value(QStringLiteral("duration_s")).toDouble() - (lastTime_s_ - firstTime_s_)) < 1e-6);
@@ -367,7 +398,8 @@ void TestCli::eval_setOverridesThePresetAndBothAreApplied()
 
     // --set alone.
     const Run setOnly = runCli({QStringLiteral("eval"), walkCsv_, QStringLiteral("--json"), QStringLiteral("--set"),
-                                QStringLiteral("use_zupt=false")});
+                                QStringLiteral("use_zupt=false"), QStringLiteral("--set"),
+                                QStringLiteral("use_zaru=true")});
     VERIFY_EXIT(setOnly, 0);
     json = readJsonObject(setOnly.out.toUtf8(), &error);
     QVERIFY2(error.isEmpty(), qPrintable(error));
@@ -385,7 +417,7 @@ void TestCli::eval_lengthJsonReportsDistanceError()
 
     QCOMPARE(json.value(QStringLiteral("recording")).toString(), walkCsv_);
     QCOMPARE(json.value(QStringLiteral("parameters")).toString(), QStringLiteral("defaults"));
-    QCOMPARE(json.value(QStringLiteral("methods")).toString(), QStringLiteral("ZUPT+ZARU"));
+    QCOMPARE(json.value(QStringLiteral("methods")).toString(), defaultMethodSet());
     QVERIFY(json.contains(QStringLiteral("distance_error_m")));
     QCOMPARE(json.value(QStringLiteral("reference_length_m")).toDouble(), 10.0);
     const double path_m = json.value(QStringLiteral("path_length_m")).toDouble();
@@ -398,6 +430,8 @@ void TestCli::eval_lengthJsonReportsDistanceError()
     QCOMPARE(json.value(QStringLiteral("steps")).toInt(), trueStrides_);
     // No reference positions and no --closed-loop: no DBSE.
     QVERIFY(!json.contains(QStringLiteral("dbse_m")));
+    const QJsonArray warnings = json.value(QStringLiteral("warnings")).toArray();
+    QCOMPARE(json.value(QStringLiteral("warning_count")).toInt(), int(warnings.size()));
 }
 
 void TestCli::eval_closedLoopPrintsTableWithDbse()
@@ -407,7 +441,7 @@ void TestCli::eval_closedLoopPrintsTableWithDbse()
     QVERIFY2(run.err.isEmpty(), qPrintable(run.err));
     QVERIFY2(run.out.contains(QStringLiteral("DBSE")), qPrintable(run.out));
     QVERIFY2(run.out.contains(QStringLiteral("recording   ") + walkCsv_), qPrintable(run.out));
-    QVERIFY2(run.out.contains(QStringLiteral("methods     ZUPT+ZARU")), qPrintable(run.out));
+    QVERIFY2(run.out.contains(QStringLiteral("methods     ") + defaultMethodSet()), qPrintable(run.out));
 
     // "end-to-start DBSE (m)   <value>": a straight 10 m walk does not close its loop.
     const QRegularExpression dbseRow(QStringLiteral("end-to-start DBSE \\(m\\)\\s+(-?[0-9.]+)\\s*$"),
@@ -420,6 +454,260 @@ void TestCli::eval_closedLoopPrintsTableWithDbse()
                  .match(run.out)
                  .hasMatch(),
              qPrintable(run.out));
+}
+
+bool TestCli::makeWalkFolder(const QString& folder, const QStringList& names) const
+{
+    if (!QDir().mkpath(folder) || !QDir(folder).mkdir(QStringLiteral("sub")))
+        return false;
+    QStringList copies = names;
+    // Not recordings, or not to be read on their own: eval must pass over every one of these.
+    copies << QStringLiteral(".hidden.csv") << QStringLiteral("sub/nested.csv");
+    for (const QString& name : copies)
+        if (!QFile::copy(walkCsv_, QDir(folder).filePath(name)))
+            return false;
+    return writeFile(QDir(folder).filePath(QStringLiteral("notes.md")), "# notes\n")
+           && writeFile(QDir(folder).filePath(QStringLiteral("1-1.json")), "{}\n")
+           && writeFile(QDir(folder).filePath(QStringLiteral("track.png")), "\x89PNG\r\n")
+           && writeFile(QDir(folder).filePath(QStringLiteral("report.pdf")), "%PDF-1.4\n");
+}
+
+void TestCli::eval_severalInputsGiveOneRowEachAndASummary()
+{
+    QTemporaryDir work;
+    QVERIFY(work.isValid());
+    const QString folder = work.filePath(QStringLiteral("walks"));
+    QVERIFY(makeWalkFolder(folder, {QStringLiteral("b.csv"), QStringLiteral("a.csv")}));
+
+    const Run run =
+        runCli({QStringLiteral("eval"), folder, walkCsv_, QStringLiteral("--length"), QStringLiteral("10")});
+    VERIFY_EXIT(run, 0);
+    // Every results table names its parameter set and method set.
+    const QString header =
+        QStringLiteral("parameters  defaults\nmethods     ") + defaultMethodSet() + QStringLiteral("\n\n");
+    QVERIFY2(run.out.startsWith(header), qPrintable(run.out));
+    // The folder's recordings by name, then the file; hidden, nested and metadata files skipped.
+    QCOMPARE(rowNamesOf(run.out), (QStringList{QStringLiteral("a.csv"), QStringLiteral("b.csv"),
+                                               QStringLiteral("walk.csv")}));
+    const auto multiline = QRegularExpression::MultilineOption;
+    QVERIFY2(QRegularExpression(QStringLiteral("^file\\s+dist err %\\s+steps\\s+warnings$"), multiline)
+                 .match(run.out)
+                 .hasMatch(),
+             qPrintable(run.out));
+
+    // The summary: known length only (no positions, no loop), the same walk three times.
+    QVERIFY2(run.out.contains(QStringLiteral("\nknown length\n")), qPrintable(run.out));
+    QVERIFY2(!run.out.contains(QStringLiteral("\npositions\n")) && !run.out.contains(QStringLiteral("\nclosed loop\n")),
+             qPrintable(run.out));
+    const QString number = QStringLiteral("\\s+([0-9.]+)");
+    const QRegularExpressionMatch distance =
+        QRegularExpression(QStringLiteral("^  distance error \\(%\\)") + number + number + number
+                               + QStringLiteral("\\s+(\\d+)$"),
+                           multiline)
+            .match(run.out);
+    QVERIFY2(distance.hasMatch(), qPrintable(run.out));
+    QCOMPARE(distance.captured(4).toInt(), 3);
+    QVERIFY2(distance.captured(1).toDouble() < 5.0, qPrintable(run.out));
+    QCOMPARE(distance.captured(1), distance.captured(2));
+    QCOMPARE(distance.captured(1), distance.captured(3));
+    QVERIFY2(run.out.contains(QStringLiteral("3 recordings: 3 evaluated, 0 failed")), qPrintable(run.out));
+}
+
+void TestCli::eval_severalInputsJsonKeepsTheInputOrder()
+{
+    QTemporaryDir work;
+    QVERIFY(work.isValid());
+    const QString folder = work.filePath(QStringLiteral("walks"));
+    QVERIFY(makeWalkFolder(folder, {QStringLiteral("d.csv"), QStringLiteral("c.csv")}));
+    const QString b = work.filePath(QStringLiteral("b.csv"));
+    const QString a = work.filePath(QStringLiteral("a.csv"));
+    QVERIFY(QFile::copy(walkCsv_, b) && QFile::copy(walkCsv_, a));
+    const QStringList options{QStringLiteral("--length"), QStringLiteral("10"), QStringLiteral("--closed-loop"),
+                              QStringLiteral("--json")};
+
+    const Run run = runCli(QStringList{QStringLiteral("eval"), b, a, folder} + options);
+    VERIFY_EXIT(run, 0);
+    QString error;
+    const QJsonObject root = readJsonObject(run.out.toUtf8(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    const Run alone = runCli(QStringList{QStringLiteral("eval"), walkCsv_} + options);
+    VERIFY_EXIT(alone, 0);
+    const QJsonObject single = readJsonObject(alone.out.toUtf8(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(root.value(QStringLiteral("parameters")).toString(), QStringLiteral("defaults"));
+    QCOMPARE(root.value(QStringLiteral("methods")), single.value(QStringLiteral("methods")));
+
+    // The input order, whichever thread finished first; each object as eval of that file alone prints it.
+    const QJsonArray recordings = root.value(QStringLiteral("recordings")).toArray();
+    const QStringList expected{b, a, folder + QStringLiteral("/c.csv"), folder + QStringLiteral("/d.csv")};
+    QCOMPARE(int(recordings.size()), int(expected.size()));
+    for (int i = 0; i < recordings.size(); ++i) {
+        QJsonObject recording = recordings[i].toObject();
+        QCOMPARE(recording.value(QStringLiteral("recording")).toString(), expected[i]);
+        QVERIFY(!recording.contains(QStringLiteral("error")));
+        QVERIFY(recording.value(QStringLiteral("warnings")).isArray());
+        recording.insert(QStringLiteral("recording"), walkCsv_);
+        QCOMPARE(recording, single);
+    }
+
+    // Summary: mean, median, worst and count of every metric; none for references these files lack.
+    const QJsonObject summary = root.value(QStringLiteral("summary")).toObject();
+    for (const char* key : {"dbse_m", "dbse_pct", "distance_error_pct", "warning_count"}) {
+        const QJsonObject stats = summary.value(QLatin1String(key)).toObject();
+        QVERIFY2(stats.value(QStringLiteral("count")).toInt() == 4, key);
+        QVERIFY2(stats.value(QStringLiteral("mean")).isDouble() && stats.value(QStringLiteral("median")).isDouble()
+                     && stats.value(QStringLiteral("worst")).isDouble(),
+                 key);
+    }
+    QCOMPARE(summary.value(QStringLiteral("distance_error_pct")).toObject().value(QStringLiteral("worst")).toDouble(),
+             single.value(QStringLiteral("distance_error_pct")).toDouble());
+    QCOMPARE(summary.value(QStringLiteral("armse_2d_m")).toObject().value(QStringLiteral("count")).toInt(), 0);
+    QCOMPARE(summary.value(QStringLiteral("stance_f1")).toObject().value(QStringLiteral("count")).toInt(), 0);
+}
+
+void TestCli::eval_warningsGoToStderrAndJson()
+{
+    // The bundled sample walk cut 10 s in, mid-walk: it no longer starts with the foot at rest, which
+    // is one of the things the plausibility checks look for.
+    const QStringList lines = readLines(QStringLiteral(FOOTPATH_SOURCE_DIR)
+                                        + QStringLiteral("/resources/samples/pyshoe-vicon-2017-11-22-11-27-30.csv"));
+    QVERIFY(lines.size() > 3000);
+    QTemporaryDir work;
+    QVERIFY(work.isValid());
+    const QString sample = work.filePath(QStringLiteral("moving-start.csv"));
+    QVERIFY(writeFile(sample, (QStringList{lines.first()} + lines.mid(1999)).join(QLatin1Char('\n')).toUtf8() + '\n'));
+    const Run run = runCli({QStringLiteral("eval"), sample, QStringLiteral("--json")});
+    VERIFY_EXIT(run, 0);
+    QString error;
+    const QJsonObject json = readJsonObject(run.out.toUtf8(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    const QJsonArray warnings = json.value(QStringLiteral("warnings")).toArray();
+    QVERIFY2(!warnings.isEmpty(), qPrintable(run.out));
+    QCOMPARE(json.value(QStringLiteral("warning_count")).toInt(), int(warnings.size()));
+    // One stderr line per warning, "FILE: warning: [t0-t1 s] message", in the JSON's order.
+    const QString prefix = sample + QStringLiteral(": warning: [");
+    const QStringList printed = run.err.split(QLatin1Char('\n')).filter(prefix);
+    QCOMPARE(int(printed.size()), int(warnings.size()));
+    for (int i = 0; i < warnings.size(); ++i) {
+        const QJsonObject warning = warnings[i].toObject();
+        QVERIFY(!warning.value(QStringLiteral("kind")).toString().isEmpty());
+        const double start_s = warning.value(QStringLiteral("start_s")).toDouble();
+        const double end_s = warning.value(QStringLiteral("end_s")).toDouble();
+        QVERIFY(start_s <= end_s);
+        const QString message = warning.value(QStringLiteral("message")).toString();
+        QCOMPARE(printed[i], QString::asprintf("%s: warning: [%.2f-%.2f s] %s", qPrintable(sample), start_s, end_s,
+                                               qPrintable(message)));
+    }
+
+    // process reports the same warnings on stderr and in its summary JSON.
+    const QString summaryPath = work.filePath(QStringLiteral("summary.json"));
+    const Run process = runCli({QStringLiteral("process"), sample, QStringLiteral("--summary"), summaryPath});
+    VERIFY_EXIT(process, 0);
+    QCOMPARE(process.err.split(QLatin1Char('\n')).filter(prefix), printed);
+    QFile file(summaryPath);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonArray written = readJsonObject(file.readAll(), &error).value(QStringLiteral("warnings")).toArray();
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(int(written.size()), int(warnings.size()));
+    for (int i = 0; i < warnings.size(); ++i) {
+        const QJsonObject fromEval = warnings[i].toObject();
+        const QJsonObject fromProcess = written[i].toObject();
+        for (const char* key : {"kind", "message"})
+            QCOMPARE(fromProcess.value(QLatin1String(key)), fromEval.value(QLatin1String(key)));
+        for (const char* key : {"start_s", "end_s"})  // the summary keeps 10 significant digits
+            QVERIFY(std::abs(fromProcess.value(QLatin1String(key)).toDouble()
+                             - fromEval.value(QLatin1String(key)).toDouble())
+                    < 1e-6);
+    }
+}
+
+void TestCli::eval_missingPathExitsTwoNamingIt()
+{
+    QTemporaryDir work;
+    QVERIFY(work.isValid());
+    const QString absent = work.filePath(QStringLiteral("no-such-folder"));
+    const Run run = runCli({QStringLiteral("eval"), walkCsv_, absent});
+    VERIFY_EXIT(run, kExitBadInput);
+    QVERIFY2(run.err.contains(absent + QStringLiteral(": no such file or folder")), qPrintable(run.err));
+    QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
+}
+
+void TestCli::eval_unreadableFileInAFolderIsAnErrorRow()
+{
+    QTemporaryDir work;
+    QVERIFY(work.isValid());
+    QVERIFY(QFile::copy(walkCsv_, work.filePath(QStringLiteral("good.csv"))));
+    const QString junk = work.filePath(QStringLiteral("junk.csv"));
+    QVERIFY(writeFile(junk, QByteArray("\x00\x01\x02 not a recording\n", 21)));
+
+    const Run run = runCli({QStringLiteral("eval"), work.path()});
+    VERIFY_EXIT(run, kExitBadInput);
+    const auto multiline = QRegularExpression::MultilineOption;
+    // A file with no reference: its steps and warning count.
+    QVERIFY2(QRegularExpression(QStringLiteral("^good\\.csv\\s+[0-9]+\\s+[0-9]+$"), multiline)
+                 .match(run.out)
+                 .hasMatch(),
+             qPrintable(run.out));
+    QVERIFY2(QRegularExpression(QStringLiteral("^junk\\.csv\\s+error: ") + QRegularExpression::escape(junk), multiline)
+                 .match(run.out)
+                 .hasMatch(),
+             qPrintable(run.out));
+    QVERIFY2(run.out.contains(QStringLiteral("2 recordings: 1 evaluated, 1 failed")), qPrintable(run.out));
+    QVERIFY2(run.err.contains(QStringLiteral("could not be evaluated: ") + junk), qPrintable(run.err));
+
+    const Run json = runCli({QStringLiteral("eval"), work.path(), QStringLiteral("--json")});
+    VERIFY_EXIT(json, kExitBadInput);
+    QString error;
+    const QJsonObject root = readJsonObject(json.out.toUtf8(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    const QJsonArray recordings = root.value(QStringLiteral("recordings")).toArray();
+    QCOMPARE(int(recordings.size()), 2);
+    QVERIFY(recordings[0].toObject().value(QStringLiteral("path_length_m")).isDouble());
+    QVERIFY(recordings[1].toObject().value(QStringLiteral("error")).toString().startsWith(junk));
+}
+
+void TestCli::eval_jobsDoNotChangeTheOutput()
+{
+    QTemporaryDir work;
+    QVERIFY(work.isValid());
+    QVERIFY(makeWalkFolder(work.path(), {QStringLiteral("w1.csv"), QStringLiteral("w2.csv"), QStringLiteral("w3.csv"),
+                                         QStringLiteral("w4.csv")}));
+    for (const QStringList& format : {QStringList{}, QStringList{QStringLiteral("--json")}}) {
+        const QStringList args =
+            QStringList{QStringLiteral("eval"), work.path(), QStringLiteral("--closed-loop")} + format;
+        const Run one = runCli(args + QStringList{QStringLiteral("--jobs"), QStringLiteral("1")});
+        const Run two = runCli(args + QStringList{QStringLiteral("--jobs"), QStringLiteral("2")});
+        VERIFY_EXIT(one, 0);
+        VERIFY_EXIT(two, 0);
+        QCOMPARE(two.out, one.out);
+        QCOMPARE(two.err, one.err);
+        QVERIFY(one.out.contains(QStringLiteral("w4.csv")));
+    }
+}
+
+void TestCli::eval_datasetFolderSummarisesEveryTrial()
+{
+    FOOTPATH_REQUIRE_DATASETS();
+    const QString folder = datasetPath(QStringLiteral("pyshoe-vicon"));
+    const QStringList trials = QDir(folder).entryList({QStringLiteral("*.csv")}, QDir::Files, QDir::Name);
+    QVERIFY(!trials.isEmpty());
+
+    const Run run = runCli({QStringLiteral("eval"), folder, QStringLiteral("--json")});
+    VERIFY_EXIT(run, 0);
+    QString error;
+    const QJsonObject root = readJsonObject(run.out.toUtf8(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    const QJsonArray recordings = root.value(QStringLiteral("recordings")).toArray();
+    QCOMPARE(int(recordings.size()), int(trials.size()));
+    for (int i = 0; i < recordings.size(); ++i) {
+        const QString path = recordings[i].toObject().value(QStringLiteral("recording")).toString();
+        QCOMPARE(QFileInfo(path).fileName(), trials[i]);
+    }
+    // Every VICON trial has a reference trajectory and is a closed loop.
+    const QJsonObject summary = root.value(QStringLiteral("summary")).toObject();
+    for (const char* key : {"armse_2d_m", "armse_3d_m", "dbse_m", "dbse_pct"})
+        QVERIFY2(summary.value(QLatin1String(key)).toObject().value(QStringLiteral("count")).toInt() == trials.size(),
+                 key);
 }
 
 void TestCli::badInput_exitsTwoWithAPreciseMessage_data()
@@ -482,6 +770,17 @@ void TestCli::badInput_exitsTwoWithAPreciseMessage_data()
     QTest::newRow("--length not a number")
         << QStringList{QStringLiteral("eval"), QStringLiteral("{walk}"), QStringLiteral("--length"), QStringLiteral("ten")}
         << QByteArray() << QStringList{QStringLiteral("--length expects metres > 0, got 'ten'")};
+    QTest::newRow("--jobs 0") << QStringList{QStringLiteral("eval"), QStringLiteral("{walk}"), QStringLiteral("--jobs"),
+                                             QStringLiteral("0")}
+                              << QByteArray() << QStringList{QStringLiteral("--jobs expects a whole number")};
+    QTest::newRow("--jobs with process")
+        << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--jobs"), QStringLiteral("2")} << QByteArray()
+        << QStringList{QStringLiteral("--jobs belongs to eval")};
+    QTest::newRow("two inputs for process") << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("{walk}")}
+                                            << QByteArray() << QStringList{QStringLiteral("unexpected argument")};
+    QTest::newRow("eval of a missing file")
+        << QStringList{QStringLiteral("eval"), QStringLiteral("{dir}/absent.csv")} << QByteArray()
+        << QStringList{QStringLiteral("{dir}/absent.csv: no such file or folder")};
     QTest::newRow("process with an eval option")
         << QStringList{process, QStringLiteral("{walk}"), QStringLiteral("--closed-loop")} << QByteArray()
         << QStringList{QStringLiteral("belong to eval")};

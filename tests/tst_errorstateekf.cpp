@@ -61,7 +61,7 @@ Vector15 errorBetween(const NavState& estimate, const NavState& truth)
 
 Parameters zeroInitialUncertainty()
 {
-    Parameters params;
+    Parameters params = guo2015Parameters();
     params.p0_gyro_bias_radps = 0.0;
     params.p0_acc_bias_mps2 = 0.0;
     return params;
@@ -92,7 +92,7 @@ private slots:
         const Eigen::Vector3d navForce = strapdownStep(estimate, acc, gyr, dt, 9.81);
         const Vector15 propagated = errorBetween(estimate, truth);
 
-        const ErrorStateEkf ekf(Parameters(), estimate.bodyToNav);
+        const ErrorStateEkf ekf(guo2015Parameters(), estimate.bodyToNav);
         const Matrix15 phi = ekf.transitionMatrix(navForce, dt);
         const Vector15 predicted = phi * dx;
         // The first-order part (Phi - I) dx must match to a few per mille; the rest is O(dt^2) and
@@ -105,7 +105,7 @@ private slots:
 
     void structuredPropagationEqualsDenseProduct()
     {
-        Parameters params;
+        Parameters params = guo2015Parameters();
         params.q_gyro_bias_radps = 1e-5;
         params.q_pos_m = 1e-5;
         params.q_acc_bias_mps2 = 1e-5;
@@ -133,7 +133,7 @@ private slots:
         const Eigen::Vector3d trueBias(0.01, -0.02, 0.005);
         const Eigen::Matrix3d attitude = rotationFromRollPitchYaw(0.05, -0.1, 0.0);
         const Eigen::Vector3d acc = attitude.transpose() * Eigen::Vector3d(0, 0, 9.81);
-        ErrorStateEkf ekf(Parameters(), attitude);
+        ErrorStateEkf ekf(guo2015Parameters(), attitude);
         for (int k = 0; k < 6000; ++k) {  // one minute at 100 Hz
             ekf.propagate(acc, trueBias, 0.01);
             ekf.updateZeroVelocityAndRate(trueBias);
@@ -150,7 +150,7 @@ private slots:
     void zuptAloneKeepsAStaticImuInPlace()
     {
         const Eigen::Vector3d acc(0.0, 0.0, 9.81);
-        ErrorStateEkf ekf(Parameters(), Eigen::Matrix3d::Identity());
+        ErrorStateEkf ekf(guo2015Parameters(), Eigen::Matrix3d::Identity());
         for (int k = 0; k < 6000; ++k) {
             ekf.propagate(acc + Eigen::Vector3d(0.0, 0.0, 0.01 * ((k % 7) - 3)), Eigen::Vector3d::Zero(), 0.01);
             ekf.updateZeroVelocity();
@@ -161,7 +161,7 @@ private slots:
 
     void josephUpdateKeepsCovarianceSymmetricPositiveDefinite()
     {
-        Parameters params;
+        Parameters params = guo2015Parameters();
         params.p0_pos_m = 1.0;
         params.p0_vel_mps = 1.0;
         params.p0_att_rad = 0.1;
@@ -195,7 +195,7 @@ private slots:
 
     void zeroTimeStepIsIgnored()
     {
-        ErrorStateEkf ekf(Parameters(), Eigen::Matrix3d::Identity());
+        ErrorStateEkf ekf(guo2015Parameters(), Eigen::Matrix3d::Identity());
         const Matrix15 before = ekf.covariance();
         ekf.propagate(Eigen::Vector3d(5.0, 0.0, 9.81), Eigen::Vector3d(1.0, 0.0, 0.0), 0.0);
         QCOMPARE(ekf.state().velocity_mps.norm(), 0.0);

@@ -118,8 +118,9 @@ void TestLivePanel::initTestCase()
 void TestLivePanel::latencyFollowsParameters()
 {
     LivePanel panel;
-    QCOMPARE(panel.latency_s(), 0.15 + 0.11 / 2.0);
-    Parameters params;
+    // The default detector: half the statistic window and half the adaptive window.
+    QCOMPARE(panel.latency_s(), 0.025 / 2.0 + 1.5 / 2.0);
+    Parameters params = footpath::guo2015Parameters();
     params.window_half_s = 0.2;
     params.median_window_s = 0.3;
     panel.setParameters(params);

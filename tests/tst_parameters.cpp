@@ -141,7 +141,7 @@ void TestParameters::defaults_areThePaperValues()
     QFETCH(double, expected);
     const ParameterField* field = footpath::findParameterField(name.toStdString());
     QVERIFY2(field, qPrintable(name));
-    QCOMPARE(footpath::parameterValue(Parameters(), *field), expected);
+    QCOMPARE(footpath::parameterValue(footpath::guo2015Parameters(), *field), expected);
 }
 
 void TestParameters::fieldNames_mapToTheirMembers()
@@ -158,6 +158,18 @@ void TestParameters::fieldNames_mapToTheirMembers()
         {"window_half_s", &Parameters::window_half_s},
         {"gyr_max_radps", &Parameters::gyr_max_radps},
         {"median_window_s", &Parameters::median_window_s},
+        {"zv_window_s", &Parameters::zv_window_s},
+        {"zv_sigma_acc_mps2", &Parameters::zv_sigma_acc_mps2},
+        {"zv_sigma_gyr_radps", &Parameters::zv_sigma_gyr_radps},
+        {"zv_log_threshold", &Parameters::zv_log_threshold},
+        {"zv_adapt_window_s", &Parameters::zv_adapt_window_s},
+        {"zv_adapt_offset_dec", &Parameters::zv_adapt_offset_dec},
+        {"zv_adapt_fraction", &Parameters::zv_adapt_fraction},
+        {"zv_log_always", &Parameters::zv_log_always},
+        {"zv_log_never", &Parameters::zv_log_never},
+        {"zv_min_stance_s", &Parameters::zv_min_stance_s},
+        {"zupt_gate_mps", &Parameters::zupt_gate_mps},
+        {"zupt_gate_window_s", &Parameters::zupt_gate_window_s},
         {"q_att_rad", &Parameters::q_att_rad},
         {"q_gyro_bias_radps", &Parameters::q_gyro_bias_radps},
         {"q_pos_m", &Parameters::q_pos_m},
@@ -174,8 +186,23 @@ void TestParameters::fieldNames_mapToTheirMembers()
     const std::pair<const char*, bool Parameters::*> flags[] = {
         {"use_zupt", &Parameters::use_zupt},
         {"use_zaru", &Parameters::use_zaru},
+        {"zv_adaptive", &Parameters::zv_adaptive},
     };
-    QCOMPARE(footpath::parameterFields().size(), std::size(reals) + std::size(flags));
+    const std::pair<const char*, int Parameters::*> choices[] = {
+        {"detector", &Parameters::detector},
+        {"filter_states", &Parameters::filter_states},
+    };
+    QCOMPARE(footpath::parameterFields().size(), std::size(reals) + std::size(flags) + std::size(choices));
+    for (const auto& [name, member] : choices) {
+        const ParameterField* field = footpath::findParameterField(name);
+        QVERIFY2(field && field->choice == member, name);
+        Parameters params;
+        const char* last = field->choiceNames.back();
+        QVERIFY2(footpath::setParameter(params, name, last).empty(), name);
+        QCOMPARE(params.*member, static_cast<int>(field->choiceNames.size()) - 1);
+        QCOMPARE(footpath::choiceName(params, *field), std::string(last));
+        QVERIFY(!footpath::setParameter(params, name, "no-such-choice").empty());
+    }
     for (const auto& [name, member] : reals) {
         Parameters params;
         QVERIFY2(footpath::setParameter(params, name, "0.4375").empty(), name);
@@ -393,6 +420,12 @@ void TestParameters::parameterFields_areUniqueDescribedAndDefaultsInRange()
             for (double Parameters::*other : realMembers)
                 QVERIFY2(other != field.real, qPrintable(name + " shares a member with another field"));
             realMembers.push_back(field.real);
+        } else if (field.kind == ParameterField::Kind::Choice) {
+            QVERIFY2(field.choice && !field.real && !field.flag, qPrintable(name));
+            QVERIFY2(field.choiceNames.size() >= 2 && field.choiceNames.size() == field.choiceLabels.size(),
+                     qPrintable(name));
+            const int value = defaults.*field.choice;
+            QVERIFY2(value >= 0 && value < static_cast<int>(field.choiceNames.size()), qPrintable(name));
         } else {
             QVERIFY2(field.flag && !field.real, qPrintable(name));
             for (bool Parameters::*other : flagMembers)

@@ -62,7 +62,7 @@ private slots:
         QFETCH(bool, expected);
         std::vector<ImuSample> samples = restingSamples(5, 100.0);
         samples[2].acc_mps2 = Eigen::Vector3d(0.6, 0.0, 0.8) * norm;
-        const StanceFlags result = detectStance(samples, Parameters());
+        const StanceFlags result = detectStance(samples, guo2015Parameters());
         QCOMPARE(bool(result.c1[2]), expected);
         QCOMPARE(bool(result.c1[1]), true);
     }
@@ -72,7 +72,7 @@ private slots:
         std::vector<ImuSample> samples = restingSamples(3, 100.0);
         samples[0].gyr_radps = Eigen::Vector3d(0.6, 0.6, 0.6);  // |w| = 1.04 > 1
         samples[1].gyr_radps = Eigen::Vector3d(0.5, 0.5, 0.5);  // |w| = 0.87 < 1
-        const StanceFlags result = detectStance(samples, Parameters());
+        const StanceFlags result = detectStance(samples, guo2015Parameters());
         QCOMPARE(pattern(result.c3), std::string("011"));
     }
 
@@ -82,7 +82,7 @@ private slots:
         // std of samples 35..65 and of no other.
         std::vector<ImuSample> samples = restingSamples(101, 100.0);
         samples[50].acc_mps2.z() = 20.0;
-        const StanceFlags result = detectStance(samples, Parameters());
+        const StanceFlags result = detectStance(samples, guo2015Parameters());
         for (std::size_t k = 0; k < samples.size(); ++k) {
             const bool insideWindow = k >= 35 && k <= 65;
             QVERIFY2(bool(result.c2[k]) == !insideWindow, qPrintable(QString("sample %1").arg(k)));
@@ -107,7 +107,7 @@ private slots:
         // The same spike at 200 Hz reaches 0.15 s = 30 samples each side.
         std::vector<ImuSample> samples = restingSamples(201, 200.0);
         samples[100].acc_mps2.z() = 20.0;
-        const StanceFlags result = detectStance(samples, Parameters());
+        const StanceFlags result = detectStance(samples, guo2015Parameters());
         QCOMPARE(bool(result.c2[70]), false);
         QCOMPARE(bool(result.c2[69]), true);
         QCOMPARE(bool(result.c2[130]), false);
@@ -121,7 +121,7 @@ private slots:
         for (std::size_t k = 20; k < samples.size(); ++k)
             samples[k].time_s += 1.0;
         samples[19].acc_mps2.z() = 20.0;
-        const StanceFlags result = detectStance(samples, Parameters());
+        const StanceFlags result = detectStance(samples, guo2015Parameters());
         QCOMPARE(bool(result.c2[18]), false);
         QCOMPARE(bool(result.c2[20]), true);
     }
@@ -156,7 +156,7 @@ private slots:
         for (std::size_t k = 40; k < 60; ++k)
             samples[k].gyr_radps = Eigen::Vector3d(0, 3.0, 0);
         samples[80].gyr_radps = Eigen::Vector3d(0, 3.0, 0);  // one sample: removed by the median
-        const StanceFlags result = detectStance(samples, Parameters());
+        const StanceFlags result = detectStance(samples, guo2015Parameters());
         QCOMPARE(bool(result.c[80]), false);
         QCOMPARE(bool(result.stance[80]), true);
         for (std::size_t k = 40; k < 60; ++k)

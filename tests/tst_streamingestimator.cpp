@@ -211,9 +211,10 @@ Recording readRecording(const QString& relativePath, const ImportOptions& option
     return std::move(read.recording);
 }
 
+/// The paper's C1/C2/C3 detector with other windows.
 Parameters withDetector(double windowHalf_s, double medianWindow_s)
 {
-    Parameters params;
+    Parameters params = guo2015Parameters();
     params.window_half_s = windowHalf_s;
     params.median_window_s = medianWindow_s;
     return params;
@@ -323,7 +324,7 @@ private slots:
     {
         QFETCH(double, rate_hz);
         QFETCH(std::size_t, lookAheadSamples);
-        const Parameters params;
+        const Parameters params = guo2015Parameters();
         const double latency = StreamingEstimator::latency_s(params);
         const std::vector<ImuSample> samples = simulatedRectangle(rate_hz).samples;
         const double alignmentEnd = samples.front().time_s + params.alignment_s;
@@ -415,7 +416,7 @@ private slots:
 
     void causalDetectorKeepsOnlyTheOpenWindows()
     {
-        const Parameters params;
+        const Parameters params = guo2015Parameters();
         const std::vector<ImuSample> samples = simulatedRectangle(100.0).samples;
         CausalStanceDetector detector(params);
         std::deque<SampleStanceFlags> decided;
@@ -457,7 +458,7 @@ private slots:
     void sampleAfterALongGapClosesEveryWindowBeforeIt()
     {
         const Recording recording = withGap(simulatedRectangle(100.0), 10.004, 13.004);
-        StreamingEstimator estimator{Parameters()};
+        StreamingEstimator estimator{guo2015Parameters()};
         std::size_t k = 0;
         while (recording.samples[k].time_s < 13.0)
             estimator.push(recording.samples[k++]);

@@ -5,13 +5,15 @@
 #include "io/ResultWriters.h"
 #include "nav/Pipeline.h"
 
+#include <cstdio>
 #include <iostream>
 
 namespace footpath::cli {
 
 namespace {
 
-ImportOptions importOptionsOf(const CommandLine& cmd)
+/// The import options as given, before a preset completes them.
+ImportOptions importOptionsGiven(const CommandLine& cmd)
 {
     ImportOptions options;
     options.format = cmd.format;
@@ -26,6 +28,8 @@ ImportOptions importOptionsOf(const CommandLine& cmd)
         throw BadInput{"--time-unit expects s, ms or us, got '" + cmd.timeUnit + "'"};
     return options;
 }
+
+}  // namespace
 
 void saveImportPresetIfAsked(const CommandLine& cmd, const ImportOptions& options)
 {
@@ -43,8 +47,6 @@ void saveImportPresetIfAsked(const CommandLine& cmd, const ImportOptions& option
         throw BadInput{problem};
     std::cerr << "saved import preset '" << preset.name << "' in " << importPresetDirectory() << "\n";
 }
-
-}  // namespace
 
 Parameters loadParameterSet(const CommandLine& cmd)
 {
@@ -66,21 +68,39 @@ Parameters loadParameterSet(const CommandLine& cmd)
     return params;
 }
 
-ImportResult importInput(const CommandLine& cmd, bool echoWarnings)
+ImportOptions importOptionsOf(const CommandLine& cmd)
 {
-    ImportOptions options = importOptionsOf(cmd);
+    ImportOptions options = importOptionsGiven(cmd);
     if (!cmd.importPreset.empty()) {
         ImportPreset preset;
         if (std::string problem = loadImportPreset(cmd.importPreset, preset); !problem.empty())
             throw BadInput{problem};
         applyImportPreset(preset, options);
     }
-    ImportResult read = importRecording(cmd.input, options);
+    return options;
+}
+
+ImportResult importFile(const std::string& path, const ImportOptions& options)
+{
+    ImportResult read = importRecording(path, options);
     if (!read.ok())
         throw BadInput{read.error->text()};
+    return read;
+}
+
+void printImportWarnings(const std::string& path, const std::vector<std::string>& warnings)
+{
+    for (const std::string& warning : warnings)
+        std::cerr << "warning: " << path << ": " << warning << "\n";
+}
+
+ImportResult importInput(const CommandLine& cmd, bool echoWarnings)
+{
+    const ImportOptions options = importOptionsOf(cmd);
+    ImportResult read = importFile(cmd.input, options);
     saveImportPresetIfAsked(cmd, options);
-    for (const std::string& warning : echoWarnings ? read.recording.warnings : std::vector<std::string>{})
-        std::cerr << "warning: " << cmd.input << ": " << warning << "\n";
+    if (echoWarnings)
+        printImportWarnings(cmd.input, read.recording.warnings);
     return read;
 }
 
@@ -106,6 +126,19 @@ std::string describeParameters(const CommandLine& cmd)
     for (const std::string& assignment : cmd.sets)
         text += " " + assignment;
     return text;
+}
+
+std::string describeWarning(const PlausibilityWarning& warning)
+{
+    char span[64];
+    std::snprintf(span, sizeof span, "[%.2f-%.2f s] ", warning.start_s, warning.end_s);
+    return span + warning.message;
+}
+
+void printPlausibilityWarnings(const std::string& path, const std::vector<PlausibilityWarning>& warnings)
+{
+    for (const PlausibilityWarning& warning : warnings)
+        std::cerr << path << ": warning: " << describeWarning(warning) << "\n";
 }
 
 std::string methodSet(const Parameters& params)

@@ -25,8 +25,9 @@ std::string usageText()
                              [--summary-csv out.csv] [--parameters-csv out.csv]
   footpath-cli report INPUT --pdf out.pdf [--page-size a4|letter] [import options]
                             [--params preset.json] [--set name=value ...]
-  footpath-cli eval INPUT [import options] [--params preset.json] [--set name=value ...]
-                          [--reference-columns x,y,z] [--closed-loop] [--length METRES] [--json]
+  footpath-cli eval INPUT... [import options] [--params preset.json] [--set name=value ...]
+                          [--reference-columns x,y,z] [--closed-loop] [--length METRES]
+                          [--jobs N] [--json]
   footpath-cli info INPUT [import options] [--json]
   footpath-cli record --port PATH [--baud N] [--rate HZ] [--duration S] --out FILE.mtb [--csv FILE.csv]
 
@@ -46,6 +47,13 @@ the raw bytes to FILE.mtb and the decoded samples to FILE.csv as they arrive, fl
 until --duration seconds of device time (default: until Ctrl+C). Without --baud it starts at 115200
 and probes the common rates; --rate is the output rate (default 100 Hz). It prints the device and
 the counters (samples, lost packets, checksum errors, resyncs).
+eval takes any number of INPUTs, files or folders (a folder: every recording directly in it, in
+name order; hidden files and *.json, *.md, *.pdf, *.png are skipped), all with the same options.
+One file prints its metrics as a table (or one JSON object); several print one row per file, then
+mean, median, worst and count of each metric per kind of reference (or one JSON object with
+"recordings" and "summary"). --jobs N evaluates N files at once (default: one per core); the
+output keeps the input order. A file that cannot be read becomes an error row, the others go on.
+eval and process print the plausibility warnings to stderr: FILE: warning: [t0-t1 s] message.
 Exit codes: 0 success, 2 bad input or options or a device problem, 1 internal error.
 )";
 }
@@ -74,6 +82,16 @@ Handler storeList(std::vector<std::string> CommandLine::*member)
     return [member](CommandLine& c, const std::string& v) {
         c.*member = splitList(v);
         return std::string();
+    };
+}
+
+Handler storeJobs()
+{
+    return [](CommandLine& c, const std::string& v) {
+        double jobs = 0.0;
+        const bool whole = parsePositive(v, jobs) && jobs == std::floor(jobs) && jobs <= 1024.0;
+        c.jobs = whole ? static_cast<int>(jobs) : 0;
+        return whole ? std::string() : "--jobs expects a whole number of parallel runs from 1 to 1024, got '" + v + "'";
     };
 }
 
@@ -118,6 +136,7 @@ const std::map<std::string, Handler>& valueOptions()
                                                    : "--reference-columns expects three names x,y,z, got '" + v + "'";
          }},
         {"--length", storePositive(&CommandLine::length_m, "--length", "metres")},
+        {"--jobs", storeJobs()},
         {"--port", storeText(&CommandLine::port)},
         {"--baud", storePositive(&CommandLine::baud, "--baud", "a baud rate")},
         {"--duration", storePositive(&CommandLine::duration_s, "--duration", "seconds")},
@@ -139,7 +158,7 @@ std::string checkRecordCombination(const CommandLine& c)
                               || !c.importPreset.empty() || !c.saveImportPreset.empty() || !c.accUnit.empty()
                               || !c.gyrUnit.empty() || !c.timeUnit.empty() || !c.trajectoryOut.empty()
                               || !c.stepsOut.empty() || !c.summaryOut.empty() || !c.referenceColumns.empty()
-                              || c.closedLoop || c.length_m > 0.0 || c.json;
+                              || c.closedLoop || c.length_m > 0.0 || c.json || c.jobs > 0;
     if (otherOptions)
         return "record takes only --port, --baud, --rate, --duration, --out and --csv";
     if (c.baud > 0.0 && c.baud != std::floor(c.baud))
@@ -165,6 +184,8 @@ std::string checkCombination(const CommandLine& c)
     const bool estimation = !c.paramsFile.empty() || !c.sets.empty();
     if (c.command != "eval" && evaluation)
         return "--reference-columns, --closed-loop and --length belong to eval";
+    if (c.command != "eval" && c.jobs > 0)
+        return "--jobs belongs to eval";
     if (c.command == "process" && c.json)
         return "--json belongs to eval and info";
     if (c.command != "process" && outputs)
@@ -203,8 +224,10 @@ std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& 
                 return problem;
         } else if (arg.rfind("--", 0) == 0) {
             return "unknown option '" + arg + "'";
-        } else if (out.input.empty()) {
-            out.input = arg;
+        } else if (out.input.empty() || out.command == "eval") {
+            if (out.input.empty())
+                out.input = arg;
+            out.inputs.push_back(arg);
         } else {
             return "unexpected argument '" + arg + "' (INPUT is already '" + out.input + "')";
         }

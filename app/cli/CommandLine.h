@@ -8,7 +8,8 @@ namespace footpath::cli {
 /// What the user asked for, before any file is touched.
 struct CommandLine {
     std::string command;  ///< "process", "eval", "info", "report", "record" or "help"
-    std::string input;
+    std::string input;                ///< the first INPUT
+    std::vector<std::string> inputs;  ///< every INPUT (several only for eval)
     // Parameters
     std::string paramsFile;
     std::vector<std::string> sets;  ///< "name=value"
@@ -33,6 +34,7 @@ struct CommandLine {
     bool closedLoop = false;
     double length_m = 0.0;
     bool json = false;
+    int jobs = 0;  ///< eval's parallel runs; 0: one per core
     // Live recording (record)
     std::string port;
     double baud = 0.0;      ///< 0: 115200 with a probe of the common rates

@@ -1,99 +1,22 @@
 #include "cli/Commands.h"
 
 #include "cli/CliSupport.h"
+#include "cli/EvalOutput.h"
+#include "cli/EvalRun.h"
 #include "io/ResultWriters.h"
-#include "metrics/Evaluation.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QThread>
 
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
 namespace footpath::cli {
 
 namespace {
-
-struct Metric {
-    std::string key;
-    std::string label;
-    double value;
-};
-
-/// The reference to evaluate against: the command line's, else what the recording carries.
-struct EvaluationReference {
-    bool closedLoop = false;
-    double length_m = 0.0;
-};
-
-EvaluationReference referenceFor(const CommandLine& cmd, const Recording& recording)
-{
-    EvaluationReference reference;
-    reference.closedLoop = cmd.closedLoop || (!cmd.closedLoop && cmd.length_m <= 0.0 && recording.reference.closedLoop);
-    reference.length_m = cmd.length_m > 0.0 ? cmd.length_m : recording.reference.knownLength_m;
-    return reference;
-}
-
-std::vector<Metric> computeMetrics(const Recording& recording, const Result& result, const EvaluationReference& ref)
-{
-    std::vector<Metric> metrics;
-    const double pathLength = result.summary.pathLength_m;
-    metrics.push_back({"path_length_m", "path length (m)", pathLength});
-    if (!recording.reference.positions_m.empty()) {
-        const ArmseResult armse = computeArmse(result.position_m, recording.reference.positions_m);
-        metrics.push_back({"armse_2d_m", "ARMSE 2D (m)", armse.armse2d_m});
-        metrics.push_back({"armse_3d_m", "ARMSE 3D (m)", armse.armse3d_m});
-    }
-    if (ref.closedLoop) {
-        const LoopClosure closure = computeLoopClosure(result.position_m, pathLength, ref.length_m);
-        metrics.push_back({"dbse_m", "end-to-start DBSE (m)", closure.dbse_m});
-        metrics.push_back({"dbse_pct", "end-to-start DBSE (% of length)", closure.dbsePct});
-    }
-    if (ref.length_m > 0.0) {
-        const DistanceError distance = computeDistanceError(pathLength, ref.length_m);
-        metrics.push_back({"reference_length_m", "reference length (m)", distance.reference_m});
-        metrics.push_back({"distance_error_m", "distance error (m)", distance.error_m});
-        metrics.push_back({"distance_error_pct", "distance error (%)", distance.errorPct});
-    }
-    if (!recording.reference.swings.empty()) {
-        const Reference& r = recording.reference;
-        const StanceScore stance = scoreStanceDetection(result.flags.stance, r.swings,
-                                                        r.hasTrialBoundaries ? &r.trialBoundaries : nullptr);
-        metrics.push_back({"stance_precision", "stance precision", stance.precision});
-        metrics.push_back({"stance_recall", "stance recall", stance.recall});
-        metrics.push_back({"stance_f1", "stance F1", stance.f1});
-        metrics.push_back({"stance_phase_count_error", "stance phases detected - labelled",
-                           static_cast<double>(stance.stepCountError)});
-    }
-    metrics.push_back({"steps", "steps", static_cast<double>(result.summary.steps)});
-    return metrics;
-}
-
-void printMetrics(const CommandLine& cmd, const Parameters& params, const Recording& recording,
-                  const std::vector<Metric>& metrics)
-{
-    if (cmd.json) {
-        QJsonObject root{{"recording", QString::fromStdString(cmd.input)},
-                         {"parameters", QString::fromStdString(describeParameters(cmd))},
-                         {"methods", QString::fromStdString(methodSet(params))}};
-        for (const Metric& metric : metrics)
-            root.insert(QString::fromStdString(metric.key), std::isfinite(metric.value) ? QJsonValue(metric.value)
-                                                                                        : QJsonValue());
-        std::cout << QJsonDocument(root).toJson(QJsonDocument::Compact).toStdString() << "\n";
-        return;
-    }
-    std::cout << "recording   " << cmd.input << "\nparameters  " << describeParameters(cmd) << "\nmethods     "
-              << methodSet(params) << "\n";
-    for (const std::string& note : recording.reference.notes)
-        std::cout << "reference   " << note << "\n";
-    for (const Metric& metric : metrics) {
-        char line[128];
-        std::snprintf(line, sizeof line, "%-34s %12.4f\n", metric.label.c_str(), metric.value);
-        std::cout << line;
-    }
-}
 
 QJsonArray toJsonArray(const std::vector<std::string>& items)
 {
@@ -162,6 +85,38 @@ void printInfoTable(const ImportResult& read)
         std::printf("warning     %s\n", warning.c_str());
 }
 
+EvalSetup evalSetupOf(const CommandLine& cmd)
+{
+    EvalSetup setup;
+    setup.params = loadParameterSet(cmd);
+    setup.import = importOptionsOf(cmd);
+    setup.closedLoop = cmd.closedLoop;
+    setup.length_m = cmd.length_m;
+    return setup;
+}
+
+/// On stderr, file by file in input order, whatever order the threads finished in.
+void printEvalWarnings(const std::vector<RecordingEvaluation>& evaluations)
+{
+    for (const RecordingEvaluation& evaluation : evaluations) {
+        printImportWarnings(evaluation.path, evaluation.importWarnings);
+        printPlausibilityWarnings(evaluation.path, evaluation.warnings);
+    }
+}
+
+/// 0 when every file was evaluated; else BadInput naming the files that were not (exit code 2).
+int reportFailures(const std::vector<RecordingEvaluation>& evaluations)
+{
+    std::vector<std::string> failed;
+    for (const RecordingEvaluation& evaluation : evaluations)
+        if (!evaluation.ok())
+            failed.push_back(evaluation.path);
+    if (failed.empty())
+        return 0;
+    throw BadInput{std::to_string(failed.size()) + " of " + std::to_string(evaluations.size())
+                   + " recordings could not be evaluated: " + joined(failed)};
+}
+
 }  // namespace
 
 int runProcess(const CommandLine& cmd)
@@ -171,7 +126,8 @@ int runProcess(const CommandLine& cmd)
     const Result result = estimate(read.recording, params);
     writeIfAsked(cmd.trajectoryOut, [&](std::ostream& out) { writeTrajectoryCsv(out, result); });
     writeIfAsked(cmd.stepsOut, [&](std::ostream& out) { writeStepsCsv(out, result); });
-    writeIfAsked(cmd.summaryOut, [&](std::ostream& out) { out << summaryToJson(result.summary); });
+    printPlausibilityWarnings(cmd.input, result.warnings);
+    writeIfAsked(cmd.summaryOut, [&](std::ostream& out) { out << summaryToJson(result.summary, result.warnings); });
     writeIfAsked(cmd.summaryCsvOut, [&](std::ostream& out) { writeSummaryCsv(out, result.summary); });
     writeIfAsked(cmd.parametersCsvOut, [&](std::ostream& out) { writeParametersCsv(out, params); });
     const Summary& s = result.summary;
@@ -183,12 +139,22 @@ int runProcess(const CommandLine& cmd)
 
 int runEval(const CommandLine& cmd)
 {
-    const Parameters params = loadParameterSet(cmd);
-    const ImportResult read = importInput(cmd);
-    const Result result = estimate(read.recording, params);
-    const EvaluationReference reference = referenceFor(cmd, read.recording);
-    printMetrics(cmd, params, read.recording, computeMetrics(read.recording, result, reference));
-    return 0;
+    const EvalSetup setup = evalSetupOf(cmd);
+    const std::vector<std::string> paths = expandInputs(cmd.inputs);
+    const int jobs = cmd.jobs > 0 ? cmd.jobs : QThread::idealThreadCount();
+    const std::vector<RecordingEvaluation> evaluations = evaluateAll(setup, paths, jobs);
+    printEvalWarnings(evaluations);
+    const bool single = cmd.inputs.size() == 1 && !isFolder(cmd.inputs.front());
+    if (single && !evaluations.front().ok())
+        throw BadInput{evaluations.front().error};  // as before: the message alone, nothing on stdout
+    if (single)
+        printSingleEvaluation(cmd, setup.params, evaluations.front());
+    else
+        printBatchEvaluation(cmd, setup.params, evaluations);
+    if (std::any_of(evaluations.begin(), evaluations.end(), [](const RecordingEvaluation& e) { return e.ok(); }))
+        saveImportPresetIfAsked(cmd, setup.import);
+    std::cout.flush();
+    return reportFailures(evaluations);
 }
 
 int runInfo(const CommandLine& cmd)

@@ -1,5 +1,7 @@
 #include "detect/StanceDetector.h"
 
+#include "detect/StatisticDetectors.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -61,6 +63,12 @@ bool accelerationNormAtRest(double accNorm, const Parameters& params)
     return accNorm > params.acc_min_mps2 && accNorm < params.acc_max_mps2;
 }
 
+/// The log10 of C2's input and threshold, as the detector view draws every detector's statistic.
+float logOf(double value)
+{
+    return static_cast<float>(std::log10(std::max(value, 1e-12)));
+}
+
 /// C3: |w| < w_max.
 bool angularRateAtRest(const Eigen::Vector3d& gyr_radps, const Parameters& params)
 {
@@ -103,7 +111,53 @@ std::vector<std::uint8_t> medianFilter(const std::vector<double>& times, const s
     return result;
 }
 
+void appendFlags(StanceFlags& flags, const SampleStanceFlags& sample)
+{
+    flags.c1.push_back(sample.c1);
+    flags.c2.push_back(sample.c2);
+    flags.c3.push_back(sample.c3);
+    flags.c.push_back(sample.c);
+    flags.stance.push_back(sample.stance);
+    flags.logStatistic.push_back(sample.logStatistic);
+    flags.logThreshold.push_back(sample.logThreshold);
+}
+
+std::unique_ptr<CausalStanceDecider> makeCausalStanceDetector(const Parameters& params)
+{
+    if (params.detectorKind() == DetectorKind::PaperC1C2C3)
+        return std::make_unique<CausalStanceDetector>(params);
+    return std::make_unique<StatisticStanceDetector>(params);
+}
+
+double stanceDetectorLatency_s(const Parameters& params)
+{
+    if (params.detectorKind() == DetectorKind::PaperC1C2C3)
+        return params.window_half_s + params.median_window_s / 2.0;
+    return StatisticStanceDetector::latency_s(params);
+}
+
 StanceFlags detectStance(const std::vector<ImuSample>& samples, const Parameters& params)
+{
+    if (params.detectorKind() == DetectorKind::PaperC1C2C3)
+        return detectPaperStance(samples, params);
+    StatisticStanceDetector detector(params);
+    std::deque<SampleStanceFlags> decided;
+    StanceFlags flags;
+    const auto take = [&] {
+        for (const SampleStanceFlags& sample : decided)
+            appendFlags(flags, sample);
+        decided.clear();
+    };
+    for (const ImuSample& sample : samples) {
+        detector.push(sample, decided);
+        take();
+    }
+    detector.finish(decided);
+    take();
+    return flags;
+}
+
+StanceFlags detectPaperStance(const std::vector<ImuSample>& samples, const Parameters& params)
 {
     const std::size_t n = samples.size();
     std::vector<double> times(n), accNorm(n);
@@ -119,7 +173,10 @@ StanceFlags detectStance(const std::vector<ImuSample>& samples, const Parameters
     const std::vector<double> accStd = centredStdDev(times, accNorm, params.window_half_s);
     flags.c2.resize(n);
     flags.c.resize(n);
+    flags.logStatistic.resize(n);
+    flags.logThreshold.assign(n, logOf(params.acc_std_max_mps2));
     for (std::size_t k = 0; k < n; ++k) {
+        flags.logStatistic[k] = logOf(accStd[k]);
         flags.c2[k] = accStd[k] < params.acc_std_max_mps2;
         flags.c[k] = flags.c1[k] && flags.c2[k] && flags.c3[k];
     }
@@ -197,6 +254,8 @@ bool CausalStanceDetector::decideNextC2(bool endOfData)
                                          sumSqBefore(c2Last_) - sumSqBefore(c2First_), c2Last_ - c2First_);
     Entry& entry = at(c2Next_);
     entry.flags.c2 = accStd < params_.acc_std_max_mps2;
+    entry.flags.logStatistic = logOf(accStd);
+    entry.flags.logThreshold = logOf(params_.acc_std_max_mps2);
     entry.flags.c = entry.flags.c1 && entry.flags.c2 && entry.flags.c3;
     entry.onesBefore = ones_;
     ones_ += entry.flags.c;

@@ -7,16 +7,22 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <vector>
 
 namespace footpath {
+
+/// The stance flags of the chosen detector (params.detector): the paper's C1/C2/C3 detector below, or
+/// one of the statistic detectors of detect/StatisticDetectors.h. Offline and non-causal.
+StanceFlags detectStance(const std::vector<ImuSample>& samples, const Parameters& params);
 
 /// Guo 2015 section 2.3: C1 (|a| within [acc_min, acc_max]), C2 (std of |a| over the centred
 /// window below acc_std_max; the paper's text says "above", eq. 20 and the physics say below),
 /// C3 (|w| below gyr_max), C = C1 & C2 & C3, then a median filter. Windows are durations, found
 /// from the timestamps, so 100 Hz and 200 Hz recordings behave the same and gaps are honoured.
 /// Offline and non-causal: the centred windows look ahead by window_half_s + median_window_s / 2.
-StanceFlags detectStance(const std::vector<ImuSample>& samples, const Parameters& params);
+/// logStatistic is log10 of the std of |a| (C2's input), logThreshold log10 of acc_std_max_mps2.
+StanceFlags detectPaperStance(const std::vector<ImuSample>& samples, const Parameters& params);
 
 /// Centred sliding standard deviation of values over samples with |t_j - t_k| <= halfWindow_s.
 /// Near the ends the window holds only the samples that exist.
@@ -35,25 +41,45 @@ struct SampleStanceFlags {
     std::uint8_t c3 = 0;
     std::uint8_t c = 0;
     std::uint8_t stance = 0;
+    float logStatistic = 0.0f;
+    float logThreshold = 0.0f;
 };
 
-/// detectStance run causally, on samples as they arrive (a live device). A sample's flags become
+/// Appends one sample's flags to the per-sample vectors.
+void appendFlags(StanceFlags& flags, const SampleStanceFlags& sample);
+
+/// A stance detector run causally, on samples as they arrive: each sample's flags are handed out
+/// once they are final, oldest first, and never change. Every detector is one of these, so a live
+/// device gets the same detectors as a file.
+class CausalStanceDecider {
+public:
+    virtual ~CausalStanceDecider() = default;
+    /// Takes the next sample; its time must be later than the previous one's (the caller checks).
+    /// Appends to decided the flags that became final, oldest first.
+    virtual void push(const ImuSample& sample, std::deque<SampleStanceFlags>& decided) = 0;
+    /// End of data: appends the flags of every sample not yet decided.
+    virtual void finish(std::deque<SampleStanceFlags>& decided) = 0;
+};
+
+/// The causal form of params.detector.
+std::unique_ptr<CausalStanceDecider> makeCausalStanceDetector(const Parameters& params);
+/// How far the chosen detector's decision trails the newest sample.
+double stanceDetectorLatency_s(const Parameters& params);
+
+/// detectPaperStance run causally, on samples as they arrive (a live device). A sample's flags become
 /// final once the samples that close its windows have arrived: its median window
 /// (median_window_s / 2 ahead) and the C2 window (window_half_s) of every sample in it, both found
 /// on the sample times, so the decision trails the newest sample by about window_half_s +
 /// median_window_s / 2. finish() decides the rest with the windows truncated at the end of data.
-/// Over a whole recording the flags equal detectStance's value for value: the same prefix sums
+/// Over a whole recording the flags equal detectPaperStance's value for value: the same prefix sums
 /// (kept as running totals) and the same window arithmetic. Only the samples some open window
 /// still needs are kept, so memory is bounded by the window lengths.
-class CausalStanceDetector {
+class CausalStanceDetector : public CausalStanceDecider {
 public:
     explicit CausalStanceDetector(const Parameters& params);
 
-    /// Takes the next sample; its time must be later than the previous one's (the caller checks).
-    /// Appends to decided the flags that became final, oldest first.
-    void push(const ImuSample& sample, std::deque<SampleStanceFlags>& decided);
-    /// End of data: appends the flags of every sample not yet decided.
-    void finish(std::deque<SampleStanceFlags>& decided);
+    void push(const ImuSample& sample, std::deque<SampleStanceFlags>& decided) override;
+    void finish(std::deque<SampleStanceFlags>& decided) override;
 
     /// Samples whose flags were handed out.
     std::size_t decidedSamples() const { return stanceNext_; }

@@ -14,6 +14,11 @@ constexpr int kVersion = 1;
 
 std::string applyValue(Parameters& params, const ParameterField& field, const QJsonValue& value)
 {
+    if (field.kind == ParameterField::Kind::Choice) {
+        if (!value.isString())
+            return std::string("'") + field.name + "' must be a name";
+        return setParameter(params, field.name, value.toString().toStdString());
+    }
     if (field.kind == ParameterField::Kind::Flag) {
         if (!value.isBool())
             return std::string("'") + field.name + "' must be true or false";
@@ -32,7 +37,9 @@ std::string parametersToJson(const Parameters& params)
 {
     QJsonObject values;
     for (const ParameterField& field : parameterFields()) {
-        if (field.kind == ParameterField::Kind::Flag)
+        if (field.kind == ParameterField::Kind::Choice)
+            values.insert(QString::fromUtf8(field.name), QString::fromStdString(choiceName(params, field)));
+        else if (field.kind == ParameterField::Kind::Flag)
             values.insert(QString::fromUtf8(field.name), params.*field.flag);
         else
             values.insert(QString::fromUtf8(field.name), params.*field.real);

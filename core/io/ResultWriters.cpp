@@ -40,6 +40,26 @@ std::string quoted(const std::string& text)
     return out + "\"";
 }
 
+/// text as a JSON string literal: quotes, backslashes and control characters escaped; UTF-8
+/// passes through as JSON allows.
+std::string jsonString(const std::string& text)
+{
+    std::string out = "\"";
+    for (char ch : text) {
+        if (ch == '"' || ch == '\\') {
+            out += '\\';
+            out += ch;
+        } else if (static_cast<unsigned char>(ch) < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(ch));
+            out += escaped;
+        } else {
+            out += ch;
+        }
+    }
+    return out + "\"";
+}
+
 }  // namespace
 
 void writeTrajectoryCsv(std::ostream& out, const Result& result)
@@ -73,7 +93,7 @@ void writeStepsCsv(std::ostream& out, const Result& result)
     }
 }
 
-std::string summaryToJson(const Summary& s)
+std::string summaryToJson(const Summary& s, const std::vector<PlausibilityWarning>& warnings)
 {
     std::ostringstream out;
     out.precision(10);
@@ -85,8 +105,15 @@ std::string summaryToJson(const Summary& s)
         << "  \"path_length_m\": " << s.pathLength_m << ",\n"
         << "  \"end_to_start_m\": " << s.endToStart_m << ",\n"
         << "  \"end_to_start_pct\": " << s.endToStartPct << ",\n"
-        << "  \"runtime_s\": " << s.runtime_s << "\n"
-        << "}\n";
+        << "  \"runtime_s\": " << s.runtime_s << ",\n"
+        << "  \"warnings\": [";
+    for (std::size_t i = 0; i < warnings.size(); ++i) {
+        const PlausibilityWarning& w = warnings[i];
+        out << (i == 0 ? "\n" : ",\n") << "    {\"kind\": " << jsonString(warningKindName(w.kind))
+            << ", \"start_s\": " << w.start_s << ", \"end_s\": " << w.end_s
+            << ", \"message\": " << jsonString(w.message) << "}";
+    }
+    out << (warnings.empty() ? "]\n" : "\n  ]\n") << "}\n";
     return out.str();
 }
 

@@ -6,6 +6,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace footpath {
 
@@ -19,8 +20,9 @@ void writeStepsCsv(std::ostream& out, const Result& result);
 void writeSummaryCsv(std::ostream& out, const Summary& summary);
 /// Every parameter: name,value,unit,default,differs_from_default,group,description.
 void writeParametersCsv(std::ostream& out, const Parameters& params);
-/// Summary as one JSON object (samples, duration_s, steps, path_length_m, end_to_start_m, ...).
-std::string summaryToJson(const Summary& summary);
+/// Summary as one JSON object (samples, duration_s, steps, path_length_m, end_to_start_m, ...),
+/// ending with "warnings": the plausibility warnings as {kind, start_s, end_s, message} objects.
+std::string summaryToJson(const Summary& summary, const std::vector<PlausibilityWarning>& warnings = {});
 
 /// Writes through a temporary file that is renamed at the end, so a failed write never leaves a
 /// truncated file behind. Returns an error naming the path, or empty.

@@ -50,11 +50,15 @@ ErrorStateEkf::ErrorStateEkf(const Parameters& params, const Eigen::Matrix3d& in
     : params_(params)
 {
     state_.bodyToNav = initialAttitude;
-    covariance_ = blockDiagonal(params.p0_att_rad, params.p0_gyro_bias_radps, params.p0_pos_m, params.p0_vel_mps,
-                                params.p0_acc_bias_mps2)
+    // The 9-state filter is the 15-state one with the bias states held at zero: no initial
+    // uncertainty and no process noise, so no gain ever reaches them and no error flows through them.
+    const bool biasStates = params.filterStates() == FilterStates::Fifteen;
+    const double biasGate = biasStates ? 1.0 : 0.0;
+    covariance_ = blockDiagonal(params.p0_att_rad, biasGate * params.p0_gyro_bias_radps, params.p0_pos_m,
+                                params.p0_vel_mps, biasGate * params.p0_acc_bias_mps2)
                       .asDiagonal();
-    processVariancePerStep_ = blockDiagonal(params.q_att_rad, params.q_gyro_bias_radps, params.q_pos_m,
-                                            params.q_vel_mps, params.q_acc_bias_mps2);
+    processVariancePerStep_ = blockDiagonal(params.q_att_rad, biasGate * params.q_gyro_bias_radps, params.q_pos_m,
+                                            params.q_vel_mps, biasGate * params.q_acc_bias_mps2);
 }
 
 void ErrorStateEkf::propagate(const Eigen::Vector3d& acc_mps2, const Eigen::Vector3d& gyr_radps, double dt_s)

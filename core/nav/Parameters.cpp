@@ -22,6 +22,17 @@ ParameterField flag(const char* name, bool Parameters::*member, const char* desc
     return {name, K::Flag, nullptr, member, 0.0, 1.0, "", description, group};
 }
 
+ParameterField choice(const char* name, int Parameters::*member, std::vector<const char*> names,
+                      std::vector<const char*> labels, const char* description, const char* group)
+{
+    ParameterField field{name, K::Choice, nullptr, nullptr, 0.0, static_cast<double>(names.size() - 1), "",
+                         description, group};
+    field.choice = member;
+    field.choiceNames = std::move(names);
+    field.choiceLabels = std::move(labels);
+    return field;
+}
+
 std::vector<ParameterField> makeFields()
 {
     using P = Parameters;
@@ -29,12 +40,32 @@ std::vector<ParameterField> makeFields()
         real("alignment_s", &P::alignment_s, 0.05, 600.0, "s", "Static period at the start used for alignment", "Alignment"),
         real("gravity_mps2", &P::gravity_mps2, 9.7, 9.9, "m/s^2", "Local gravity", "Alignment"),
         real("declination_rad", &P::declination_rad, -M_PI, M_PI, "rad", "Magnetic declination subtracted from the compass heading", "Alignment"),
+        choice("detector", &P::detector, {"c1c2c3", "shoe", "ared", "amvd", "mbgtd"},
+               {"C1/C2/C3 (Guo 2015)", "SHOE (GLRT)", "ARED (angular rate energy)", "AMVD (acceleration variance)",
+                "MBGTD (graph theoretic)"},
+               "Statistic that decides the foot is at rest", "Detector"),
+        real("zv_window_s", &P::zv_window_s, 0.0, 1.0, "s", "Window of the detector statistic", "Detector"),
+        real("zv_sigma_acc_mps2", &P::zv_sigma_acc_mps2, 1e-5, 10.0, "m/s^2", "Accelerometer noise the statistic is normalised by", "Detector"),
+        real("zv_sigma_gyr_radps", &P::zv_sigma_gyr_radps, 1e-6, 1.0, "rad/s", "Gyroscope noise the statistic is normalised by", "Detector"),
+        flag("zv_adaptive", &P::zv_adaptive, "Threshold follows the motion (off: a fixed threshold)", "Detector"),
+        real("zv_log_threshold", &P::zv_log_threshold, -5.0, 15.0, "log10", "Fixed threshold on the statistic (log10), when not adaptive", "Detector"),
+        real("zv_adapt_window_s", &P::zv_adapt_window_s, 0.1, 10.0, "s", "Adaptive: window of the running minimum (about one gait cycle)", "Detector"),
+        real("zv_adapt_offset_dec", &P::zv_adapt_offset_dec, 0.0, 5.0, "decades", "Adaptive: threshold above the running minimum", "Detector"),
+        real("zv_adapt_fraction", &P::zv_adapt_fraction, 0.0, 1.0, "x", "Adaptive: threshold this fraction of the way from the running minimum to the maximum", "Detector"),
+        real("zv_log_always", &P::zv_log_always, -5.0, 15.0, "log10", "Adaptive: below this the foot is always at rest", "Detector"),
+        real("zv_log_never", &P::zv_log_never, -5.0, 15.0, "log10", "Adaptive: above this the foot is never at rest", "Detector"),
+        real("zv_min_stance_s", &P::zv_min_stance_s, 0.0, 2.0, "s", "Shorter stance runs are dropped", "Detector"),
         real("acc_min_mps2", &P::acc_min_mps2, 0.0, 50.0, "m/s^2", "C1: lower bound on |a|", "Detector"),
         real("acc_max_mps2", &P::acc_max_mps2, 0.0, 200.0, "m/s^2", "C1: upper bound on |a|", "Detector"),
         real("acc_std_max_mps2", &P::acc_std_max_mps2, 0.0, 20.0, "m/s^2", "C2: std of |a| over the window must be below", "Detector"),
         real("window_half_s", &P::window_half_s, 0.0, 2.0, "s", "C2: half-window of the centred std", "Detector"),
         real("gyr_max_radps", &P::gyr_max_radps, 0.0, 20.0, "rad/s", "C3: upper bound on |w|", "Detector"),
         real("median_window_s", &P::median_window_s, 0.0, 2.0, "s", "Median filter length applied to C", "Detector"),
+        choice("filter_states", &P::filter_states, {"15", "9"},
+               {"15 states (with biases)", "9 states (no bias states)"},
+               "Error-state filter size: 15 estimates the sensor biases, 9 holds them at zero", "Filter"),
+        real("zupt_gate_mps", &P::zupt_gate_mps, 0.0, 20.0, "m/s", "A detected stance with a faster predicted foot speed is taken as swing (0: off)", "Filter"),
+        real("zupt_gate_window_s", &P::zupt_gate_window_s, 0.0, 10.0, "s", "The speed gate applies this long after the last rest", "Filter"),
         flag("use_zupt", &P::use_zupt, "Zero-velocity update during stance", "Measurements"),
         flag("use_zaru", &P::use_zaru, "Zero angular rate update during stance", "Measurements"),
         real("q_att_rad", &P::q_att_rad, 0.0, 1.0, "rad", "Q attitude, std per 10 ms", "Process noise"),
@@ -85,6 +116,17 @@ bool parseReal(const std::string& text, double& value)
 
 }  // namespace
 
+Parameters guo2015Parameters()
+{
+    Parameters params;
+    params.detector = static_cast<int>(DetectorKind::PaperC1C2C3);
+    params.filter_states = static_cast<int>(FilterStates::Fifteen);
+    params.use_zaru = true;
+    params.q_att_rad = 1e-4;
+    params.q_vel_mps = 1e-4;
+    return params;
+}
+
 const std::vector<ParameterField>& parameterFields()
 {
     static const std::vector<ParameterField> fields = makeFields();
@@ -101,8 +143,41 @@ const ParameterField* findParameterField(const std::string& name)
 
 double parameterValue(const Parameters& params, const ParameterField& field)
 {
-    return field.kind == K::Real ? params.*field.real : (params.*field.flag ? 1.0 : 0.0);
+    switch (field.kind) {
+    case K::Real:
+        return params.*field.real;
+    case K::Flag:
+        return params.*field.flag ? 1.0 : 0.0;
+    case K::Choice:
+        return static_cast<double>(params.*field.choice);
+    }
+    return 0.0;
 }
+
+std::string choiceName(const Parameters& params, const ParameterField& field)
+{
+    if (field.kind != K::Choice)
+        return {};
+    const int index = params.*field.choice;
+    return index >= 0 && index < static_cast<int>(field.choiceNames.size()) ? field.choiceNames[index] : "?";
+}
+
+namespace {
+
+std::string setChoice(Parameters& params, const ParameterField& field, const std::string& text)
+{
+    std::string known;
+    for (std::size_t i = 0; i < field.choiceNames.size(); ++i) {
+        if (text == field.choiceNames[i]) {
+            params.*field.choice = static_cast<int>(i);
+            return {};
+        }
+        known += (i > 0 ? ", " : "") + std::string(field.choiceNames[i]);
+    }
+    return "parameter '" + std::string(field.name) + "' expects one of " + known + ", got '" + text + "'";
+}
+
+}  // namespace
 
 bool operator==(const Parameters& a, const Parameters& b)
 {
@@ -117,6 +192,8 @@ std::string setParameter(Parameters& params, const std::string& name, const std:
     const ParameterField* field = findParameterField(name);
     if (!field)
         return "unknown parameter '" + name + "'";
+    if (field->kind == K::Choice)
+        return setChoice(params, *field, text);
     if (field->kind == K::Flag) {
         if (!parseFlag(text, params.*field->flag))
             return "parameter '" + name + "' expects true/false, got '" + text + "'";
@@ -133,6 +210,12 @@ std::vector<std::string> Parameters::validate() const
 {
     std::vector<std::string> problems;
     for (const ParameterField& field : parameterFields()) {
+        if (field.kind == K::Choice) {
+            const int index = this->*field.choice;
+            if (index < 0 || index >= static_cast<int>(field.choiceNames.size()))
+                problems.push_back(std::string(field.name) + " (" + std::to_string(index) + ") is not a known choice");
+            continue;
+        }
         if (field.kind != K::Real)
             continue;
         const double value = this->*field.real;
@@ -144,6 +227,9 @@ std::vector<std::string> Parameters::validate() const
     if (acc_min_mps2 >= acc_max_mps2)
         problems.push_back("acc_min_mps2 (" + formatNumber(acc_min_mps2) + ") must be below acc_max_mps2 ("
                            + formatNumber(acc_max_mps2) + ")");
+    if (zv_log_always >= zv_log_never)
+        problems.push_back("zv_log_always (" + formatNumber(zv_log_always) + ") must be below zv_log_never ("
+                           + formatNumber(zv_log_never) + ")");
     return problems;
 }
 

@@ -5,6 +5,20 @@
 
 namespace footpath {
 
+/// Which statistic decides that the foot is at rest (core/detect/). The values are stored in presets
+/// by name (detectorChoiceNames): keep the order.
+enum class DetectorKind : int {
+    PaperC1C2C3 = 0,  ///< Guo 2015: |a| band, std of |a|, |w| bound, median filter (fixed thresholds)
+    Shoe,             ///< Skog et al. 2010 GLRT, as in OpenShoe and pyshoe
+    Ared,             ///< angular rate energy
+    Amvd,             ///< acceleration moving variance
+    Mbgtd,            ///< memory-based graph theoretic detector (pyshoe)
+};
+
+/// The error-state filter's size: 15 states estimate gyro and accelerometer biases (Guo 2015);
+/// 9 states hold them at zero (seed 004's comparison; pyshoe's filter).
+enum class FilterStates : int { Fifteen = 0, Nine };
+
 /// Every tunable of the pipeline. Field names here are the names the GUI sliders, the CLI's
 /// `--set name=value`, the JSON presets and the reports use (see parameterFields()).
 ///
@@ -16,7 +30,21 @@ struct Parameters {
     double gravity_mps2 = 9.81;
     double declination_rad = 0.0;    ///< magnetic declination M_d, subtracted from the compass heading
 
-    // C1/C2/C3 stance detector (Guo 2015, section 2.3)
+    // Stance detector: which statistic, and how its threshold is found
+    int detector = static_cast<int>(DetectorKind::Shoe);
+    double zv_window_s = 0.025;          ///< statistic window (pyshoe: 5 samples at 200 Hz)
+    double zv_sigma_acc_mps2 = 0.01;     ///< accelerometer noise the statistics are normalised by (OpenShoe)
+    double zv_sigma_gyr_radps = 0.1 * 3.14159265358979323846 / 180.0;  ///< gyro noise (OpenShoe: 0.1 deg/s)
+    bool zv_adaptive = true;             ///< threshold follows the motion; off: zv_log_threshold
+    double zv_log_threshold = 4.5;       ///< fixed threshold, log10 of the normalised statistic
+    double zv_adapt_window_s = 1.5;      ///< running minimum/maximum of the log statistic over this centred window
+    double zv_adapt_offset_dec = 0.5;    ///< threshold = running minimum + this many decades
+    double zv_adapt_fraction = 0.3;      ///< ... + this fraction of the way to the running maximum
+    double zv_log_always = 2.0;          ///< below this (log10) the foot is always at rest
+    double zv_log_never = 5.5;           ///< above this (log10) it never is
+    double zv_min_stance_s = 0.0;        ///< shorter stance runs are dropped (seed 002's thr_time)
+
+    // C1/C2/C3 stance detector (Guo 2015, section 2.3), used when detector is PaperC1C2C3
     double acc_min_mps2 = 9.0;       ///< C1 lower bound on |a|
     double acc_max_mps2 = 11.0;      ///< C1 upper bound on |a|
     double acc_std_max_mps2 = 0.5;   ///< C2: std of |a| over the window must be below this
@@ -24,15 +52,21 @@ struct Parameters {
     double gyr_max_radps = 1.0;      ///< C3 bound on |w|
     double median_window_s = 0.11;   ///< median filter length (paper: 11 samples at 100 Hz)
 
+    // Filter
+    int filter_states = static_cast<int>(FilterStates::Nine);  ///< measured better (README, "Filter structure")
+
+    double zupt_gate_mps = 0.0;          ///< a stance with a faster predicted foot is swing (0: off)
+    double zupt_gate_window_s = 1.5;     ///< ... when the last rest is at most this long ago
+
     // Measurement sources
     bool use_zupt = true;
-    bool use_zaru = true;
+    bool use_zaru = false;  ///< needs the gyro bias states of the 15-state filter
 
     // Process noise Q: std per 10 ms step, per 3-block (Guo 2015, section 2.6)
-    double q_att_rad = 1e-4;
+    double q_att_rad = 3e-5;
     double q_gyro_bias_radps = 0.0;
     double q_pos_m = 0.0;
-    double q_vel_mps = 1e-4;
+    double q_vel_mps = 3e-4;
     double q_acc_bias_mps2 = 0.0;
 
     // Measurement noise R: std
@@ -46,13 +80,21 @@ struct Parameters {
     double p0_vel_mps = 0.0;
     double p0_acc_bias_mps2 = 1e-2;
 
+    DetectorKind detectorKind() const { return static_cast<DetectorKind>(detector); }
+    FilterStates filterStates() const { return static_cast<FilterStates>(filter_states); }
+
     /// Human-readable problems ("acc_min_mps2 (12) must be below acc_max_mps2 (11)"); empty if valid.
     std::vector<std::string> validate() const;
 };
 
+/// Guo 2015 as printed (section 2.3 detector, 2.6 tuning): the C1/C2/C3 detector with its fixed
+/// thresholds, the 15-state filter with ZUPT and ZARU, Q attitude and velocity 1e-4. The defaults
+/// differ where measurement on real walks said so (README, "Accuracy").
+Parameters guo2015Parameters();
+
 /// Description of one field, so every front end walks the same list.
 struct ParameterField {
-    enum class Kind { Real, Flag };
+    enum class Kind { Real, Flag, Choice };
     const char* name;
     Kind kind;
     double Parameters::*real;  ///< set when kind == Real
@@ -62,6 +104,9 @@ struct ParameterField {
     const char* unit;
     const char* description;
     const char* group;  ///< "Alignment", "Detector", "Measurements", "Process noise", ...
+    int Parameters::*choice = nullptr;  ///< set when kind == Choice: an index into choiceNames
+    std::vector<const char*> choiceNames = {};  ///< names of the choices, as presets and --set spell them
+    std::vector<const char*> choiceLabels = {};  ///< what a user reads ("SHOE (GLRT)")
 };
 
 const std::vector<ParameterField>& parameterFields();
@@ -71,9 +116,12 @@ const ParameterField* findParameterField(const std::string& name);
 bool operator==(const Parameters& a, const Parameters& b);
 inline bool operator!=(const Parameters& a, const Parameters& b) { return !(a == b); }
 
-/// Reads a field by name as a number (flags as 0/1).
+/// Reads a field by name as a number (flags as 0/1, choices as their index).
 double parameterValue(const Parameters& params, const ParameterField& field);
-/// Sets a field from text ("0.5", "1e-4", "true", "off"); returns an error message or empty.
+/// The name of a choice field's current value ("shoe"); empty for other kinds.
+std::string choiceName(const Parameters& params, const ParameterField& field);
+/// Sets a field from text ("0.5", "1e-4", "true", "off", a choice's name); returns an error
+/// message or empty.
 std::string setParameter(Parameters& params, const std::string& name, const std::string& text);
 
 }  // namespace footpath

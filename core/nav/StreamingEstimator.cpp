@@ -4,6 +4,7 @@
 #include "nav/Alignment.h"
 #include "nav/ErrorStateEkf.h"
 #include "nav/Pipeline.h"
+#include "nav/Plausibility.h"
 
 #include <cmath>
 #include <deque>
@@ -22,21 +23,12 @@ std::string joinProblems(const std::vector<std::string>& problems)
     return out.str();
 }
 
-void appendFlags(StanceFlags& flags, const SampleStanceFlags& sample)
-{
-    flags.c1.push_back(sample.c1);
-    flags.c2.push_back(sample.c2);
-    flags.c3.push_back(sample.c3);
-    flags.c.push_back(sample.c);
-    flags.stance.push_back(sample.stance);
-}
-
 }  // namespace
 
 struct StreamingEstimator::Impl {
     explicit Impl(const Parameters& p)
         : params(p)
-        , detector(p)
+        , detector(makeCausalStanceDetector(p))
     {
     }
 
@@ -51,7 +43,7 @@ struct StreamingEstimator::Impl {
 
     Parameters params;
     std::string error;
-    CausalStanceDetector detector;
+    std::unique_ptr<CausalStanceDecider> detector;
     std::deque<ImuSample> pending;               ///< pushed, not yet estimated; oldest first
     std::deque<SampleStanceFlags> decidedFlags;  ///< final flags of the oldest pending samples
     std::size_t received = 0;
@@ -91,7 +83,7 @@ void StreamingEstimator::Impl::accept(const ImuSample& sample)
     ++received;
     newestTime_s = sample.time_s;
     pending.push_back(sample);
-    detector.push(sample, decidedFlags);
+    detector->push(sample, decidedFlags);
     if (!ekf && alignmentInputsFinal())
         align();
     estimateDecided();
@@ -104,13 +96,14 @@ void StreamingEstimator::Impl::end()
         error = "only " + std::to_string(received) + " samples arrived; at least 2 are needed";
         return;
     }
-    detector.finish(decidedFlags);
+    detector->finish(decidedFlags);
     if (!ekf)
         align();
     estimateDecided();
     if (stancePhaseStart)
         closeStancePhase(result.time_s.size());  // offline, a stance phase up to the end is a step too
     summarize(result, pathLength_m);
+    result.warnings = checkPlausibility(result, params);
 }
 
 bool StreamingEstimator::Impl::alignmentInputsFinal() const
@@ -143,13 +136,14 @@ void StreamingEstimator::Impl::estimateDecided()
 
 void StreamingEstimator::Impl::estimate(const ImuSample& sample, const SampleStanceFlags& flags)
 {
-    filterSample(*ekf, sample, previousTime_s, flags.stance != 0, params, result);
-    appendFlags(result.flags, flags);
+    SampleStanceFlags final = flags;
+    final.stance = filterSample(*ekf, sample, previousTime_s, flags.stance != 0, params, result) ? 1 : 0;
+    appendFlags(result.flags, final);
     previousTime_s = sample.time_s;
     const std::size_t k = result.time_s.size() - 1;
-    if (flags.stance && !stancePhaseStart)
+    if (final.stance && !stancePhaseStart)
         stancePhaseStart = k;
-    else if (!flags.stance && stancePhaseStart)
+    else if (!final.stance && stancePhaseStart)
         closeStancePhase(k);
 }
 
@@ -221,7 +215,7 @@ const Parameters& StreamingEstimator::parameters() const
 
 double StreamingEstimator::latency_s(const Parameters& params)
 {
-    return params.window_half_s + params.median_window_s / 2.0;
+    return stanceDetectorLatency_s(params);
 }
 
 }  // namespace footpath

@@ -12,10 +12,11 @@ namespace footpath {
 /// The pipeline of runPipeline, run causally on samples as they arrive (a live device).
 ///
 /// The stance detector's centred windows look ahead: a sample's stance flag is final once samples
-/// window_half_s + median_window_s / 2 later have arrived. The estimator holds each sample back
+/// stanceDetectorLatency_s() later have arrived (window_half_s + median_window_s / 2 for the paper's
+/// detector; the statistic window, half the adaptive window and the minimum stance for the others). The estimator holds each sample back
 /// that long, then runs it through the EKF, so the estimate trails the newest sample by
 /// a fixed latency (latency_s()) and never changes afterwards. The windows are found on the sample
-/// times (CausalStanceDetector), so on a sample grid the hold-back may differ from latency_s() by
+/// times (the detector's causal form), so on a sample grid the hold-back may differ from latency_s() by
 /// up to one sample interval, and the first sample after a gap longer than the latency releases
 /// every sample before it. Alignment waits for the first alignment_s seconds (and their
 /// look-ahead) before the first state appears.
@@ -51,7 +52,7 @@ public:
     bool aligned() const;
     const Parameters& parameters() const;
 
-    /// How far the estimate trails the newest sample while walking: window_half_s + median_window_s / 2.
+    /// How far the estimate trails the newest sample while walking: stanceDetectorLatency_s().
     static double latency_s(const Parameters& params);
 
 private:

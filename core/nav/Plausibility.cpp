@@ -1,0 +1,218 @@
+#include "nav/Plausibility.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace footpath {
+
+const char* warningKindName(PlausibilityWarning::Kind kind)
+{
+    using K = PlausibilityWarning::Kind;
+    switch (kind) {
+    case K::NoInitialRest:
+        return "no_initial_rest";
+    case K::LongSwing:
+        return "long_swing";
+    case K::StrideLength:
+        return "stride_length";
+    case K::StrideDuration:
+        return "stride_duration";
+    case K::StanceRatio:
+        return "stance_ratio";
+    case K::ImplausibleSpeed:
+        return "implausible_speed";
+    case K::FewStances:
+        return "few_stances";
+    }
+    return "unknown";
+}
+
+namespace {
+
+using Kind = PlausibilityWarning::Kind;
+
+template <typename... Args>
+std::string format(const char* pattern, Args... args)
+{
+    char text[512];
+    std::snprintf(text, sizeof text, pattern, args...);
+    return text;
+}
+
+/// Half-open runs [first, last) of samples where predicate(k) holds.
+template <typename Predicate>
+std::vector<std::pair<std::size_t, std::size_t>> runsWhere(std::size_t n, Predicate predicate)
+{
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    for (std::size_t k = 0; k < n;) {
+        if (!predicate(k)) {
+            ++k;
+            continue;
+        }
+        std::size_t end = k;
+        while (end < n && predicate(end))
+            ++end;
+        runs.emplace_back(k, end);
+        k = end;
+    }
+    return runs;
+}
+
+double peakSpeed(const Result& result, std::size_t first, std::size_t last)
+{
+    double peak = 0.0;
+    for (std::size_t k = first; k < last; ++k)
+        peak = std::max(peak, result.velocity_mps[k].norm());
+    return peak;
+}
+
+/// Why the detector did not call the quietest moment of [first, last) a stance.
+std::string whatBlockedStance(const Result& result, std::size_t first, std::size_t last, const Parameters& params)
+{
+    const StanceFlags& flags = result.flags;
+    std::size_t quietest = first;
+    for (std::size_t k = first; k < last; ++k)
+        if (flags.logStatistic[k] - flags.logThreshold[k] < flags.logStatistic[quietest] - flags.logThreshold[quietest])
+            quietest = k;
+    const double at = result.time_s[quietest];
+    if (params.detectorKind() != DetectorKind::PaperC1C2C3)
+        return format("at its quietest (t = %.2f s) the detector statistic was 10^%.1f, above its threshold 10^%.1f",
+                      at, flags.logStatistic[quietest], flags.logThreshold[quietest]);
+    std::string failed;
+    const auto note = [&](bool ok, const char* what) {
+        if (!ok)
+            failed += (failed.empty() ? "" : ", ") + std::string(what);
+    };
+    note(flags.c1[quietest], "C1 (|a| outside its band)");
+    note(flags.c2[quietest], "C2 (std of |a| above its bound)");
+    note(flags.c3[quietest], "C3 (|w| above its bound)");
+    if (failed.empty())
+        failed = "the median filter";
+    return format("at its quietest (t = %.2f s) it was blocked by %s", at, failed.c_str());
+}
+
+void checkInitialRest(const Result& result, const Parameters& params, const PlausibilityLimits& limits,
+                      std::vector<PlausibilityWarning>& out)
+{
+    const double end = result.time_s.front() + params.alignment_s;
+    std::size_t count = 0, atRest = 0;
+    for (std::size_t k = 0; k < result.time_s.size() && result.time_s[k] <= end; ++k, ++count)
+        atRest += result.flags.stance[k];
+    const double share = count > 0 ? static_cast<double>(atRest) / static_cast<double>(count) : 0.0;
+    if (share >= limits.minInitialRestShare)
+        return;
+    out.push_back({Kind::NoInitialRest, result.time_s.front(), end,
+                   format("The recording does not start at rest: only %.0f %% of the first %.2f s are stance, so the "
+                          "initial roll and pitch come from a moving foot and the path may tilt and drift.",
+                          100.0 * share, params.alignment_s)});
+}
+
+void checkSwings(const Result& result, const Parameters& params, const PlausibilityLimits& limits,
+                 std::vector<PlausibilityWarning>& out)
+{
+    const std::vector<std::uint8_t>& stance = result.flags.stance;
+    for (const auto& [first, last] : runsWhere(stance.size(), [&](std::size_t k) { return !stance[k]; })) {
+        const double duration = result.time_s[last - 1] - result.time_s[first];
+        if (duration <= limits.maxSwing_s || peakSpeed(result, first, last) < limits.movingSpeed_mps)
+            continue;
+        out.push_back({Kind::LongSwing, result.time_s[first], result.time_s[last - 1],
+                       format("No stance for %.1f s while moving: a stance was probably missed, and the path drifts "
+                              "without the zero-velocity updates; %s.",
+                              duration, whatBlockedStance(result, first, last, params).c_str())});
+    }
+}
+
+bool coveredByLongSwing(const std::vector<PlausibilityWarning>& warnings, double start_s, double end_s)
+{
+    return std::any_of(warnings.begin(), warnings.end(), [&](const PlausibilityWarning& w) {
+        return w.kind == Kind::LongSwing && w.start_s < end_s && w.end_s > start_s;
+    });
+}
+
+void checkStrides(const Result& result, const PlausibilityLimits& limits, std::vector<PlausibilityWarning>& out)
+{
+    for (std::size_t i = 1; i < result.steps.size(); ++i) {
+        const Step& previous = result.steps[i - 1];
+        const Step& step = result.steps[i];
+        if (step.strideLength_m > limits.maxStrideLength_m)
+            out.push_back({Kind::StrideLength, previous.stanceEnd_s, step.stanceStart_s,
+                           format("Stride %zu is %.2f m long; human strides stay under %.1f m, so the stance between "
+                                  "was missed or the filter drifted.",
+                                  i, step.strideLength_m, limits.maxStrideLength_m)});
+        else if (step.strideDuration_s > limits.maxStrideDuration_s && step.strideLength_m > limits.minStrideLength_m
+                 && !coveredByLongSwing(out, previous.stanceEnd_s, step.stanceStart_s))
+            out.push_back({Kind::StrideDuration, previous.stanceStart_s, step.stanceStart_s,
+                           format("Stride %zu took %.1f s for %.2f m; a human stride takes under %.1f s, so a stance "
+                                  "was probably missed.",
+                                  i, step.strideDuration_s, step.strideLength_m, limits.maxStrideDuration_s)});
+    }
+}
+
+void checkSpeed(const Result& result, const PlausibilityLimits& limits, std::vector<PlausibilityWarning>& out)
+{
+    const auto tooFast = [&](std::size_t k) { return result.velocity_mps[k].norm() > limits.maxFootSpeed_mps; };
+    for (const auto& [first, last] : runsWhere(result.time_s.size(), tooFast))
+        out.push_back({Kind::ImplausibleSpeed, result.time_s[first], result.time_s[last - 1],
+                       format("The estimated foot speed reaches %.1f m/s, faster than a foot moves (under %.0f m/s): "
+                              "the filter ran away here and the path is not to be trusted.",
+                              peakSpeed(result, first, last), limits.maxFootSpeed_mps)});
+}
+
+void checkStanceShare(const Result& result, const PlausibilityLimits& limits, std::vector<PlausibilityWarning>& out)
+{
+    const std::vector<std::uint8_t>& stance = result.flags.stance;
+    const auto moving = runsWhere(stance.size(), [&](std::size_t k) {
+        return result.velocity_mps[k].norm() > limits.movingSpeed_mps;
+    });
+    if (moving.empty())
+        return;
+    const std::size_t first = moving.front().first;
+    const std::size_t last = moving.back().second;
+    double stanceTime = 0.0;
+    for (std::size_t k = first + 1; k < last; ++k)
+        if (stance[k])
+            stanceTime += result.time_s[k] - result.time_s[k - 1];
+    const double span = result.time_s[last - 1] - result.time_s[first];
+    if (span < 5.0)
+        return;  // too short a walk to judge a share
+    const double share = stanceTime / span;
+    if (share < limits.minStanceShare || share > limits.maxStanceShare)
+        out.push_back({Kind::StanceRatio, result.time_s[first], result.time_s[last - 1],
+                       format("The foot is at rest %.0f %% of the time while walking; gait keeps it still 15-60 %% "
+                              "of the time, so stances are %s.",
+                              100.0 * share, share < limits.minStanceShare ? "being missed" : "found where the foot moves")});
+}
+
+void checkStanceCount(const Result& result, std::vector<PlausibilityWarning>& out)
+{
+    const double duration = result.summary.duration_s;
+    if (duration < 10.0 || result.steps.size() >= 3)
+        return;
+    out.push_back({Kind::FewStances, result.time_s.front(), result.time_s.back(),
+                   format("Only %zu stance phases in %.0f s: the detector does not find the foot at rest, so the "
+                          "path is integrated without corrections.",
+                          result.steps.size(), duration)});
+}
+
+}  // namespace
+
+std::vector<PlausibilityWarning> checkPlausibility(const Result& result, const Parameters& params,
+                                                   const PlausibilityLimits& limits)
+{
+    std::vector<PlausibilityWarning> warnings;
+    if (result.time_s.empty() || result.flags.stance.size() != result.time_s.size())
+        return warnings;
+    checkInitialRest(result, params, limits, warnings);
+    checkSwings(result, params, limits, warnings);
+    checkStrides(result, limits, warnings);
+    checkSpeed(result, limits, warnings);
+    checkStanceShare(result, limits, warnings);
+    checkStanceCount(result, warnings);
+    std::stable_sort(warnings.begin(), warnings.end(),
+                     [](const PlausibilityWarning& a, const PlausibilityWarning& b) { return a.start_s < b.start_s; });
+    return warnings;
+}
+
+}  // namespace footpath

@@ -1,0 +1,31 @@
+#pragma once
+
+#include "Result.h"
+#include "nav/Parameters.h"
+
+#include <vector>
+
+namespace footpath {
+
+/// Limits of human gait that a result is checked against. Generous on purpose: a warning must mean
+/// that something is wrong, not that someone walked briskly.
+struct PlausibilityLimits {
+    double maxSwing_s = 2.0;          ///< no stance for longer than this while moving: a missed stance
+    double maxStrideLength_m = 3.0;   ///< a running stride is 2-3 m; more is a missed stance or drift
+    double maxStrideDuration_s = 3.0; ///< with the foot moving more than minStrideLength_m in it
+    double minStrideLength_m = 0.3;
+    double maxFootSpeed_mps = 12.0;   ///< a running foot peaks near 10 m/s
+    double minStanceShare = 0.10;     ///< walking keeps the foot still 25-60 % of the time, running 15-30 %
+    double maxStanceShare = 0.90;     ///< of the time between the first and the last stance while moving
+    double minInitialRestShare = 0.5; ///< of the samples of the alignment period
+    double movingSpeed_mps = 0.3;     ///< a span is "moving" when the estimated speed exceeds this
+};
+
+/// Checks a result for what cannot be human gait: the recording does not start at rest, swings
+/// without a stance, strides too long, the filter running away (foot speed), a stance share far
+/// from gait, too few stances. Each finding names its time span and what blocked the detector
+/// where a stance was missed. The result must hold its samples, flags and steps.
+std::vector<PlausibilityWarning> checkPlausibility(const Result& result, const Parameters& params,
+                                                   const PlausibilityLimits& limits = PlausibilityLimits());
+
+}  // namespace footpath
