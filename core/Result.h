@@ -29,7 +29,7 @@ struct PlausibilityWarning {
         NoInitialRest,      ///< the recording does not start with the foot at rest
         LongSwing,          ///< no stance for longer than a human swing (a missed stance)
         StrideLength,       ///< a stride longer than a human stride
-        StrideDuration,     ///< a stride longer in time than human gait
+        StrideDuration,     ///< a stride too quick for its length (a stance found mid-swing)
         StanceRatio,        ///< the share of stance time far from normal gait
         ImplausibleSpeed,   ///< the foot moved faster than a foot can (the filter ran away)
         FewStances,         ///< too few stance phases for the recording's length

@@ -5,6 +5,8 @@
 
 #include <QtTest>
 
+#include <algorithm>
+
 using namespace footpath;
 
 namespace {
@@ -125,6 +127,73 @@ private slots:
         const Result result = run(walk.recording);
         QCOMPARE(result.summary.stancePhases, countStancePhases(walk.trueStance));
         QCOMPARE(result.summary.steps, countStancePhases(walk.trueStance) - 1);
+    }
+
+    void everyGaitFindsEveryStance_data()
+    {
+        // One default detector for every gait: the stance statistic of a running foot is far
+        // higher than a walking one's, and the threshold must follow it. Each case has its own
+        // danger: running's 0.1 s stances (10 samples at 100 Hz), a long standstill before the
+        // first step (the threshold sinks to the sensor noise), turning on the spot (90-degree
+        // turns every stride), stairs.
+        QTest::addColumn<double>("rate_hz");
+        QTest::addColumn<double>("stance_s");
+        QTest::addColumn<double>("swing_s");
+        QTest::addColumn<double>("stride_m");
+        QTest::addColumn<double>("still_s");
+        QTest::addColumn<int>("path");  // 0 line, 1 turning on the spot (0.7 m square), 2 stairs
+        QTest::newRow("walking 100 Hz") << 100.0 << 0.45 << 0.65 << 1.4 << 2.0 << 0;
+        QTest::newRow("walking 200 Hz") << 200.0 << 0.45 << 0.65 << 1.4 << 2.0 << 0;
+        QTest::newRow("fast walking 100 Hz") << 100.0 << 0.25 << 0.5 << 1.8 << 2.0 << 0;
+        QTest::newRow("running 100 Hz") << 100.0 << 0.12 << 0.5 << 2.6 << 2.0 << 0;
+        QTest::newRow("running 200 Hz") << 200.0 << 0.12 << 0.5 << 2.6 << 2.0 << 0;
+        QTest::newRow("30 s standing, then walking") << 100.0 << 0.45 << 0.65 << 1.4 << 30.0 << 0;
+        QTest::newRow("turning on the spot") << 100.0 << 0.45 << 0.65 << 0.7 << 2.0 << 1;
+        QTest::newRow("stairs") << 100.0 << 0.45 << 0.65 << 0.6 << 2.0 << 2;
+    }
+
+    void everyGaitFindsEveryStance()
+    {
+        QFETCH(double, rate_hz);
+        QFETCH(double, stance_s);
+        QFETCH(double, swing_s);
+        QFETCH(double, stride_m);
+        QFETCH(double, still_s);
+        QFETCH(int, path);
+        WalkSimulatorConfig config = realisticSensor(rate_hz);
+        config.gyrBias_radps.setZero();  // the default 9-state filter holds the biases at zero
+        config.stanceDuration_s = stance_s;
+        config.swingDuration_s = swing_s;
+        config.strideLength_m = stride_m;
+        config.initialStill_s = still_s;
+        const std::vector<Eigen::Vector3d> waypoints = path == 0   ? straightLinePath(20.0)
+                                                       : path == 1 ? closedRectanglePath(0.7, 0.7)
+                                                                   : stairsPath(8, 0.17, 0.6);
+        const SimulatedWalk walk = simulateWalk(waypoints, config);
+        const Result result = run(walk.recording);
+        const Eigen::Vector3d end = result.position_m.back() - walk.truePosition_m.back();
+        qInfo("%zu stance phases (true %zu), end error %.3f m, %zu warnings", result.summary.stancePhases,
+              countStancePhases(walk.trueStance), end.norm(), result.warnings.size());
+        QCOMPARE(result.summary.stancePhases, countStancePhases(walk.trueStance));
+        QVERIFY2(end.norm() < 0.02 * std::max(walk.truePathLength_m, 5.0), qPrintable(QString::number(end.norm())));
+        for (const PlausibilityWarning& warning : result.warnings)
+            qWarning("%s", warning.message.c_str());
+        QVERIFY(result.warnings.empty());
+    }
+
+    void standingStillIsOneStance()
+    {
+        WalkSimulatorConfig config = realisticSensor(100.0);
+        config.initialStill_s = 60.0;
+        const SimulatedWalk walk = simulateWalk(straightLinePath(1.4), config);
+        const Result result = run(walk.recording);
+        std::size_t stillSamples = 0, stillAtRest = 0;
+        for (std::size_t k = 0; k < walk.recording.samples.size() && walk.recording.samples[k].time_s < 59.0; ++k) {
+            ++stillSamples;
+            stillAtRest += result.flags.stance[k];
+        }
+        QCOMPARE(stillAtRest, stillSamples);  // the noise floor never leaves the "always at rest" bound
+        QVERIFY(result.position_m[stillSamples - 1].norm() < 0.01);
     }
 
     void straightLineLengthWithinOnePercent()

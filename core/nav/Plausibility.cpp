@@ -124,13 +124,6 @@ void checkSwings(const Result& result, const Parameters& params, const Plausibil
     }
 }
 
-bool coveredByLongSwing(const std::vector<PlausibilityWarning>& warnings, double start_s, double end_s)
-{
-    return std::any_of(warnings.begin(), warnings.end(), [&](const PlausibilityWarning& w) {
-        return w.kind == Kind::LongSwing && w.start_s < end_s && w.end_s > start_s;
-    });
-}
-
 void checkStrides(const Result& result, const PlausibilityLimits& limits, std::vector<PlausibilityWarning>& out)
 {
     for (std::size_t i = 1; i < result.steps.size(); ++i) {
@@ -141,12 +134,11 @@ void checkStrides(const Result& result, const PlausibilityLimits& limits, std::v
                            format("Stride %zu is %.2f m long; human strides stay under %.1f m, so the stance between "
                                   "was missed or the filter drifted.",
                                   i, step.strideLength_m, limits.maxStrideLength_m)});
-        else if (step.strideDuration_s > limits.maxStrideDuration_s && step.strideLength_m > limits.minStrideLength_m
-                 && !coveredByLongSwing(out, previous.stanceEnd_s, step.stanceStart_s))
+        else if (step.strideDuration_s < limits.minStrideDuration_s && step.strideLength_m > limits.minStrideLength_m)
             out.push_back({Kind::StrideDuration, previous.stanceStart_s, step.stanceStart_s,
-                           format("Stride %zu took %.1f s for %.2f m; a human stride takes under %.1f s, so a stance "
-                                  "was probably missed.",
-                                  i, step.strideDuration_s, step.strideLength_m, limits.maxStrideDuration_s)});
+                           format("Stride %zu took only %.2f s for %.2f m; a human stride takes at least %.1f s, so a "
+                                  "stance was probably found in the middle of a swing.",
+                                  i, step.strideDuration_s, step.strideLength_m, limits.minStrideDuration_s)});
     }
 }
 

@@ -12,8 +12,8 @@ namespace footpath {
 struct PlausibilityLimits {
     double maxSwing_s = 2.0;          ///< no stance for longer than this while moving: a missed stance
     double maxStrideLength_m = 3.0;   ///< a running stride is 2-3 m; more is a missed stance or drift
-    double maxStrideDuration_s = 3.0; ///< with the foot moving more than minStrideLength_m in it
-    double minStrideLength_m = 0.3;
+    double minStrideDuration_s = 0.4; ///< a sprinter's stride takes 0.6 s; a quicker one that still
+    double minStrideLength_m = 0.5;   ///< covers this much had a stance found in its swing
     double maxFootSpeed_mps = 12.0;   ///< a running foot peaks near 10 m/s
     double minStanceShare = 0.10;     ///< walking keeps the foot still 25-60 % of the time, running 15-30 %
     double maxStanceShare = 0.90;     ///< of the time between the first and the last stance while moving
