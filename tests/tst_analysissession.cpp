@@ -35,6 +35,14 @@ bool waitForNewResult(AnalysisSession& session, const std::shared_ptr<const Resu
     return false;
 }
 
+/// The defaults with the 15-state filter, where ZARU has gyro bias states to correct.
+Parameters withBiasStates()
+{
+    Parameters params;
+    params.filter_states = static_cast<int>(FilterStates::Fifteen);
+    return params;
+}
+
 double finalDistance(const std::shared_ptr<const Result>& a, const std::shared_ptr<const Result>& b)
 {
     return (a->position_m.back() - b->position_m.back()).norm();
@@ -67,8 +75,10 @@ private slots:
     {
         QTest::addColumn<QString>("name");
         QTest::addColumn<double>("value");
-        QTest::newRow("ZARU off") << "use_zaru" << 0.0;
-        QTest::newRow("detector threshold") << "acc_std_max_mps2" << 2.0;
+        QTest::newRow("ZARU toggled") << "use_zaru" << (Parameters().use_zaru ? 0.0 : 1.0);
+        QTest::newRow("detector chosen") << "detector" << static_cast<double>(DetectorKind::PaperC1C2C3);
+        QTest::newRow("detector window") << "zv_window_s" << 0.1;
+        QTest::newRow("filter size chosen") << "filter_states" << static_cast<double>(FilterStates::Nine);
     }
 
     void changingAParameterReRunsTheEstimate()
@@ -76,6 +86,7 @@ private slots:
         QFETCH(QString, name);
         QFETCH(double, value);
         AnalysisSession session;
+        session.setParameters(withBiasStates(), QStringLiteral("15 states"));  // ZARU needs them
         session.setRecording(noisyWalk(), RecordingInfo(), QString());
         QVERIFY(waitForNewResult(session, nullptr));
         const auto before = session.result();
@@ -91,23 +102,41 @@ private slots:
     void undoRestoresTheParametersAndReRuns()
     {
         AnalysisSession session;
+        session.setParameters(withBiasStates(), QStringLiteral("15 states"));
         session.setRecording(noisyWalk(), RecordingInfo(), QString());
         QVERIFY(waitForNewResult(session, nullptr));
         const auto original = session.result();
-        session.setParameter(QStringLiteral("use_zaru"), 0.0);
+        const bool zaru = Parameters().use_zaru;
+        session.setParameter(QStringLiteral("use_zaru"), zaru ? 0.0 : 1.0);
         QVERIFY(waitForNewResult(session, original));
-        const auto withoutZaru = session.result();
+        const auto toggled = session.result();
 
         session.undoStack()->undo();
-        QVERIFY(session.parameters().use_zaru);
-        QVERIFY(waitForNewResult(session, withoutZaru));
+        QCOMPARE(session.parameters().use_zaru, zaru);
+        QVERIFY(waitForNewResult(session, toggled));
         QCOMPARE(finalDistance(session.result(), original), 0.0);  // the pipeline is deterministic
 
         const auto undone = session.result();
         session.undoStack()->redo();
-        QVERIFY(!session.parameters().use_zaru);
+        QCOMPARE(session.parameters().use_zaru, !zaru);
         QVERIFY(waitForNewResult(session, undone));
-        QCOMPARE(finalDistance(session.result(), withoutZaru), 0.0);
+        QCOMPARE(finalDistance(session.result(), toggled), 0.0);
+    }
+
+    void aChoiceIsSetByItsIndexAndUndone()
+    {
+        AnalysisSession session;  // no recording: the parameters alone
+        session.setParameter(QStringLiteral("detector"), static_cast<double>(DetectorKind::Mbgtd));
+        QCOMPARE(session.parameters().detectorKind(), DetectorKind::Mbgtd);
+        const FilterStates other =
+            Parameters().filterStates() == FilterStates::Nine ? FilterStates::Fifteen : FilterStates::Nine;
+        session.setParameter(QStringLiteral("filter_states"), static_cast<double>(other));
+        QCOMPARE(session.parameters().filterStates(), other);
+        QCOMPARE(session.undoStack()->count(), 2);
+        session.undoStack()->undo();
+        session.undoStack()->undo();
+        QCOMPARE(session.parameters().detector, Parameters().detector);
+        QCOMPARE(session.parameters().filter_states, Parameters().filter_states);
     }
 
     void rapidChangesOfOneFieldAreOneUndoStep()

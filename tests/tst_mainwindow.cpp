@@ -7,11 +7,17 @@
 #include "ParameterPanel.h"
 #include "SignalPlots.h"
 #include "StanceFlagsPlot.h"
+#include "SummaryPanel.h"
 #include "TrajectoryView2D.h"
 #include "TrajectoryView3D.h"
+#include "nav/StreamingEstimator.h"
 #include "sim/WalkSimulator.h"
 
 #include <QCheckBox>
+#include <QComboBox>
+#include <QGroupBox>
+#include <QLabel>
+#include <QTableView>
 #include <QMenuBar>
 #include <QSignalSpy>
 #include <QSlider>
@@ -41,6 +47,29 @@ QString writeSimulatedWalk(const QTemporaryDir& dir, std::size_t& samples)
                        .toUtf8());
     samples = walk.recording.samples.size();
     return path;
+}
+
+Parameters paperDetector()
+{
+    Parameters params;
+    params.detector = static_cast<int>(DetectorKind::PaperC1C2C3);
+    return params;
+}
+
+/// C1/C2/C3 with a median filter longer than any step's stance: only the rest at the start and the
+/// end remain, so the checks find a missed stance (blocked by the median filter), a stride far too
+/// long and too few stances.
+Parameters missingEveryStance()
+{
+    Parameters params = paperDetector();
+    params.median_window_s = 2.0;
+    return params;
+}
+
+QString statisticAxisLabel(const MainWindow& window)
+{
+    const auto* flags = window.findChild<StanceFlagsPlot*>(QStringLiteral("stanceFlags"));
+    return flags->statisticRect()->axis(QCPAxis::atLeft)->label();
 }
 
 }  // namespace
@@ -76,12 +105,14 @@ private slots:
     {
         AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));
         MainWindow window(settings);
+        window.session()->setParameters(paperDetector(), QStringLiteral("C1/C2/C3"));  // whose C2 the slider bounds
         QSignalSpy shown(&window, &MainWindow::resultShown);
         window.openRecording(path_);
         QVERIFY(shown.wait(30000));
         const std::shared_ptr<const Result> before = window.session()->result();
 
         auto* slider = window.findChild<QSlider*>(QStringLiteral("slider_acc_std_max_mps2"));
+        QVERIFY(slider->isEnabled());
         QVERIFY(slider);
         slider->setValue(slider->minimum() + (slider->maximum() - slider->minimum()) / 100);  // 0.2 m/s²: a strict C2
         QTRY_VERIFY_WITH_TIMEOUT(window.session()->result() != before && window.session()->result(), 30000);
@@ -110,29 +141,114 @@ private slots:
             QVERIFY(!live->isAncestorOf(view));
         }
         const double before = live->latency_s();
-        auto* slider = window.findChild<QSlider*>(QStringLiteral("slider_window_half_s"));
+        auto* slider = window.findChild<QSlider*>(QStringLiteral("slider_zv_window_s"));
         QVERIFY(slider);
         slider->setValue(slider->maximum());
         QVERIFY(live->latency_s() > before);  // the live estimator uses the workspace's parameters
-        QCOMPARE(live->latency_s(), window.session()->parameters().window_half_s
-                                        + window.session()->parameters().median_window_s / 2.0);
+        QCOMPARE(live->latency_s(), StreamingEstimator::latency_s(window.session()->parameters()));
     }
 
     void togglingZaruChangesTheEstimate()
     {
         AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));
         MainWindow window(settings);
+        Parameters params;
+        params.filter_states = static_cast<int>(FilterStates::Fifteen);  // ZARU corrects the gyro bias states
+        window.session()->setParameters(params, QStringLiteral("15 states"));
         QSignalSpy shown(&window, &MainWindow::resultShown);
         window.openRecording(path_);
         QVERIFY(shown.wait(30000));
-        const std::shared_ptr<const Result> withZaru = window.session()->result();
+        const std::shared_ptr<const Result> before = window.session()->result();
         auto* zaru = window.findChild<QCheckBox*>(QStringLiteral("check_use_zaru"));
-        QVERIFY(zaru && zaru->isChecked());
+        QVERIFY(zaru && zaru->isEnabled());
+        const bool wasOn = zaru->isChecked();
         zaru->click();
-        QVERIFY(!window.session()->parameters().use_zaru);
-        QTRY_VERIFY_WITH_TIMEOUT(window.session()->result() != withZaru && window.session()->result(), 30000);
-        const Eigen::Vector3d a = withZaru->position_m.back(), b = window.session()->result()->position_m.back();
+        QCOMPARE(window.session()->parameters().use_zaru, !wasOn);
+        QTRY_VERIFY_WITH_TIMEOUT(window.session()->result() != before && window.session()->result(), 30000);
+        const Eigen::Vector3d a = before->position_m.back(), b = window.session()->result()->position_m.back();
         QVERIFY((a - b).norm() > 1e-9);
+    }
+
+    void theDetectorComboReRunsAndTheDetectorViewFollows()
+    {
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));
+        MainWindow window(settings);
+        QSignalSpy shown(&window, &MainWindow::resultShown);
+        window.openRecording(path_);
+        QVERIFY(shown.wait(30000));
+        QVERIFY2(statisticAxisLabel(window).contains(QStringLiteral("SHOE")), qPrintable(statisticAxisLabel(window)));
+        const std::shared_ptr<const Result> shoe = window.session()->result();
+
+        auto* combo = window.findChild<QComboBox*>(QStringLiteral("choice_detector"));
+        QVERIFY(combo);
+        combo->setFocus();
+        QTest::keyClick(combo, Qt::Key_Home);  // C1/C2/C3, the first choice
+        QCOMPARE(window.session()->parameters().detectorKind(), DetectorKind::PaperC1C2C3);
+        QTRY_VERIFY_WITH_TIMEOUT(window.session()->result() != shoe && window.session()->result(), 30000);
+        QVERIFY(window.session()->result()->flags.logStatistic != shoe->flags.logStatistic);
+        QVERIFY(statisticAxisLabel(window).contains(QStringLiteral("std of |a|")));
+        const auto* flags = window.findChild<StanceFlagsPlot*>(QStringLiteral("stanceFlags"));
+        QVERIFY(flags->isLaneShown(StanceFlagsPlot::Lane::C1));
+        QVERIFY(window.findChild<QSlider*>(QStringLiteral("slider_acc_std_max_mps2"))->isEnabled());
+
+        window.session()->undoStack()->undo();
+        QCOMPARE(window.session()->parameters().detector, Parameters().detector);
+        QCOMPARE(combo->currentIndex(), Parameters().detector);
+        QVERIFY(statisticAxisLabel(window).contains(QStringLiteral("SHOE")));
+        QVERIFY(!flags->isLaneShown(StanceFlagsPlot::Lane::C1));
+        QTRY_VERIFY_WITH_TIMEOUT(window.session()->result() && !window.session()->isEstimating()
+                                     && window.session()->result()->flags.logStatistic == shoe->flags.logStatistic,
+                                 30000);
+    }
+
+    void warningsReachTheStatusBarTheSummaryAndTheTable()
+    {
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));
+        MainWindow window(settings);
+        window.session()->setParameters(missingEveryStance(), QStringLiteral("strict C2"));
+        QSignalSpy shown(&window, &MainWindow::resultShown);
+        window.openRecording(path_);
+        QVERIFY(shown.wait(30000));
+        const std::shared_ptr<const Result> result = window.session()->result();
+        QVERIFY(!result->warnings.empty());
+
+        const auto* status = window.findChild<QLabel*>(QStringLiteral("status"));
+        QVERIFY(status);
+        QVERIFY2(status->text().startsWith(QString::number(result->warnings.size()) + " plausibility warning"),
+                 qPrintable(status->text()));
+        QVERIFY(status->text().contains(QString::fromStdString(result->warnings.front().message)));
+        QVERIFY(status->styleSheet().contains(QStringLiteral("color")));  // stands out
+
+        const auto* summary = window.findChild<SummaryPanel*>();
+        QVERIFY(summary->findChild<QGroupBox*>(QStringLiteral("warnings"))->isVisibleTo(summary));
+        const auto* missed = std::find_if(result->warnings.data(), result->warnings.data() + result->warnings.size(),
+                                          [](const PlausibilityWarning& w) { return w.kind == PlausibilityWarning::Kind::LongSwing; });
+        QVERIFY(missed != result->warnings.data() + result->warnings.size());
+        const auto index = missed - result->warnings.data();
+        auto* label = summary->findChild<QLabel*>(QStringLiteral("warning_%1").arg(index));
+        QVERIFY2(label && label->text().contains(QStringLiteral("median filter")), qPrintable(label->text()));  // what blocked it
+        emit label->linkActivated(QString::number(index));  // the user clicks its time span
+        QCOMPARE(window.session()->timeCursor(), missed->start_s);
+        const auto* flags = window.findChild<StanceFlagsPlot*>(QStringLiteral("stanceFlags"));
+        QCOMPARE(flags->timeCursor(), missed->start_s);
+        QVERIFY(flags->timeRange().contains(missed->start_s));
+
+        const auto* table = summary->findChild<QTableView*>(QStringLiteral("stepTable"));
+        int marked = 0;
+        for (int row = 0; row < table->model()->rowCount(); ++row)
+            marked += table->model()->index(row, 0).data(Qt::BackgroundRole).isValid();
+        QVERIFY(marked >= 1);
+        QVERIFY(flags->warningLane()->layout() != nullptr);
+
+        // Back to the defaults: the status bar reports the walk again when nothing is found.
+        window.session()->setParameters(Parameters(), QStringLiteral("defaults"));
+        QTRY_VERIFY_WITH_TIMEOUT(window.session()->result() && window.session()->result() != result
+                                     && !window.session()->isEstimating(), 30000);
+        if (window.session()->result()->warnings.empty()) {
+            QVERIFY2(status->text().contains(QStringLiteral("steps")), qPrintable(status->text()));
+            QVERIFY(status->styleSheet().isEmpty());
+            QVERIFY(!summary->findChild<QGroupBox*>(QStringLiteral("warnings"))->isVisibleTo(summary));
+        }
     }
 
     void germanTranslationIsUsed()

@@ -1,8 +1,10 @@
+#include "AnalysisSession.h"
 #include "ParameterPanel.h"
 #include "io/ParameterIo.h"
 
 #include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -48,12 +50,33 @@ QString firstDifference(const Parameters& a, const Parameters& b)
 Parameters everyFieldChanged()
 {
     Parameters params;
+    double fraction = 0.37;  // not a default anywhere; rising, so lower bounds stay below upper ones
     for (const ParameterField& f : parameterFields()) {
-        if (f.kind == ParameterField::Kind::Flag)
-            params.*f.flag = !(params.*f.flag);
-        else
-            params.*f.real = f.minimum + 0.37 * (f.maximum - f.minimum);  // 0.37: not a default anywhere
+        switch (f.kind) {
+        case ParameterField::Kind::Flag: params.*f.flag = !(params.*f.flag); break;
+        case ParameterField::Kind::Choice:
+            params.*f.choice = (params.*f.choice + 1) % static_cast<int>(f.choiceNames.size());
+            break;
+        case ParameterField::Kind::Real: params.*f.real = f.minimum + fraction * (f.maximum - f.minimum); break;
+        }
+        fraction += 0.001;
     }
+    return params;
+}
+
+/// The defaults with the 15-state filter, whose bias fields and ZARU then apply.
+Parameters withBiasStates()
+{
+    Parameters params;
+    params.filter_states = static_cast<int>(FilterStates::Fifteen);
+    return params;
+}
+
+/// The defaults with the paper's C1/C2/C3 detector, whose fields are then the ones that apply.
+Parameters paperDetector()
+{
+    Parameters params;
+    params.detector = static_cast<int>(DetectorKind::PaperC1C2C3);
     return params;
 }
 
@@ -80,20 +103,30 @@ private slots:
         ParameterPanel panel;
         int reals = 0;
         int flags = 0;
+        int choices = 0;
         for (const ParameterField& f : parameterFields()) {
             const QString name = QString::fromUtf8(f.name);
-            if (f.kind == ParameterField::Kind::Real) {
+            switch (f.kind) {
+            case ParameterField::Kind::Real:
                 ++reals;
                 QCOMPARE(panel.findChildren<QSlider*>(QStringLiteral("slider_") + name).size(), 1);
                 QCOMPARE(panel.findChildren<QLineEdit*>(QStringLiteral("value_") + name).size(), 1);
-            } else {
+                break;
+            case ParameterField::Kind::Flag:
                 ++flags;
                 QCOMPARE(panel.findChildren<QCheckBox*>(QStringLiteral("check_") + name).size(), 1);
+                break;
+            case ParameterField::Kind::Choice:
+                ++choices;
+                QCOMPARE(panel.findChildren<QComboBox*>(QStringLiteral("choice_") + name).size(), 1);
+                break;
             }
         }
         QCOMPARE(panel.findChildren<QSlider*>().size(), reals);
         QCOMPARE(panel.findChildren<QCheckBox*>().size(), flags);
-        QVERIFY(flags >= 2);  // use_zupt, use_zaru
+        QCOMPARE(panel.findChildren<QComboBox*>().size(), choices);
+        QVERIFY(flags >= 2);    // use_zupt, use_zaru
+        QVERIFY(choices >= 2);  // detector, filter_states
     }
 
     void showsTheGivenValuesWithoutEmitting()
@@ -268,8 +301,10 @@ private slots:
         QFETCH(QString, typed);
         QFETCH(double, expected);
         ParameterPanel panel;
+        panel.setParameters(paperDetector());  // acc_std_max_mps2 is disabled for the others
         QSignalSpy edited(&panel, &ParameterPanel::parameterEdited);
         auto* edit = panel.findChild<QLineEdit*>(QStringLiteral("value_") + name);
+        QVERIFY(edit->isEnabled());
         edit->selectAll();
         QTest::keyClicks(edit, typed);
         QTest::keyClick(edit, Qt::Key_Return);
@@ -283,12 +318,14 @@ private slots:
     void togglingAMethodEmitsIt()
     {
         ParameterPanel panel;
+        panel.setParameters(withBiasStates());  // ZARU is disabled without them
         QSignalSpy edited(&panel, &ParameterPanel::parameterEdited);
+        const bool toggled = !Parameters().use_zaru;
         panel.findChild<QCheckBox*>("check_use_zaru")->click();
         QCOMPARE(edited.count(), 1);
         QCOMPARE(edited.first().at(0).toString(), QStringLiteral("use_zaru"));
-        QCOMPARE(edited.first().at(1).toDouble(), 0.0);
-        QVERIFY(!panel.parameters().use_zaru);
+        QCOMPARE(edited.first().at(1).toDouble(), toggled ? 1.0 : 0.0);
+        QCOMPARE(panel.parameters().use_zaru, toggled);
     }
 
     void resetEmitsTheDefaults()
@@ -359,15 +396,16 @@ private slots:
     void aValueOffItsDefaultIsMarked()
     {
         ParameterPanel panel;
+        panel.setParameters(withBiasStates());
         auto* label = panel.findChild<QLabel*>("label_q_att_rad");
         auto* reset = panel.findChild<QToolButton*>("reset_q_att_rad");
         auto* zaru = panel.findChild<QCheckBox*>("check_use_zaru");
         QVERIFY(!label->font().bold());
         QVERIFY(reset->isHidden());
         QVERIFY(!zaru->font().bold());
-        Parameters params;
+        Parameters params = withBiasStates();
         params.q_att_rad = 0.02;
-        params.use_zaru = false;
+        params.use_zaru = !params.use_zaru;
         panel.setParameters(params);
         QVERIFY(label->font().bold());
         QVERIFY(!reset->isHidden());
@@ -393,6 +431,127 @@ private slots:
         QVERIFY2(problems->text().contains(QStringLiteral("acc_max_mps2")), qPrintable(problems->text()));
         panel.setParameters(Parameters());
         QVERIFY(problems->isHidden());
+    }
+
+    void aChoiceIsAComboBoxOfItsLabels()
+    {
+        ParameterPanel panel;
+        const ParameterField& detector = field("detector");
+        auto* combo = panel.findChild<QComboBox*>("choice_detector");
+        QVERIFY(combo);
+        QCOMPARE(combo->count(), static_cast<int>(detector.choiceLabels.size()));
+        for (int i = 0; i < combo->count(); ++i) {
+            QCOMPARE(combo->itemText(i), QString::fromUtf8(detector.choiceLabels[static_cast<std::size_t>(i)]));
+            // What presets and --set call it.
+            QCOMPARE(combo->itemData(i, Qt::ToolTipRole).toString(),
+                     QString::fromUtf8(detector.choiceNames[static_cast<std::size_t>(i)]));
+        }
+        QCOMPARE(combo->currentIndex(), Parameters().detector);
+        QVERIFY(combo->toolTip().contains(QStringLiteral("detector")));
+        QVERIFY(combo->toolTip().contains(QString::fromUtf8(detector.description)));
+
+        Parameters params;
+        params.detector = static_cast<int>(DetectorKind::Ared);
+        panel.setParameters(params);  // shown without emitting
+        QCOMPARE(combo->currentIndex(), static_cast<int>(DetectorKind::Ared));
+        QVERIFY(panel.findChild<QLabel*>("label_detector")->font().bold());  // off its default
+    }
+
+    void choosingAChoiceEmitsItsIndex()
+    {
+        ParameterPanel panel;
+        QSignalSpy edited(&panel, &ParameterPanel::parameterEdited);
+        auto* combo = panel.findChild<QComboBox*>("choice_detector");
+        combo->setFocus();
+        QTest::keyClick(combo, Qt::Key_Home);  // what a user does: the first choice, C1/C2/C3
+        QCOMPARE(edited.count(), 1);
+        QCOMPARE(edited.first().at(0).toString(), QStringLiteral("detector"));
+        QCOMPARE(edited.first().at(1).toDouble(), static_cast<double>(DetectorKind::PaperC1C2C3));
+        QCOMPARE(panel.parameters().detectorKind(), DetectorKind::PaperC1C2C3);
+        QTest::keyClick(combo, Qt::Key_Home);  // the same choice again is no edit
+        QCOMPARE(edited.count(), 1);
+        panel.findChild<QToolButton*>("reset_detector")->click();
+        QCOMPARE(edited.count(), 2);
+        QCOMPARE(edited.last().at(1).toDouble(), static_cast<double>(Parameters().detector));
+        QCOMPARE(combo->currentIndex(), Parameters().detector);
+    }
+
+    void aChosenDetectorReRunsWithUndoAndPresets()
+    {
+        // Wired as MainWindow wires them: the session owns the parameters and the undo stack.
+        AnalysisSession session;
+        ParameterPanel panel;
+        connect(&panel, &ParameterPanel::parameterEdited, &session, &AnalysisSession::setParameter);
+        connect(&panel, &ParameterPanel::parametersReplaced, &session, &AnalysisSession::setParameters);
+        connect(&session, &AnalysisSession::parametersChanged, &panel,
+                [&] { panel.setParameters(session.parameters()); });
+        panel.setUndoStack(session.undoStack());
+        auto* combo = panel.findChild<QComboBox*>("choice_filter_states");
+        combo->setFocus();
+        // The other filter size than the default: 15 states is the first choice, 9 the last.
+        const bool nineByDefault = Parameters().filterStates() == FilterStates::Nine;
+        const FilterStates other = nineByDefault ? FilterStates::Fifteen : FilterStates::Nine;
+        QTest::keyClick(combo, nineByDefault ? Qt::Key_Home : Qt::Key_End);
+        QCOMPARE(session.parameters().filterStates(), other);
+        session.undoStack()->undo();
+        QCOMPARE(session.parameters().filterStates(), Parameters().filterStates());
+        QCOMPARE(combo->currentIndex(), Parameters().filter_states);
+        session.undoStack()->redo();
+        QCOMPARE(combo->currentIndex(), static_cast<int>(other));
+
+        // A preset names the choice; loading it sets the combo box.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("ared.json"));
+        Parameters ared;
+        ared.detector = static_cast<int>(DetectorKind::Ared);
+        QCOMPARE(saveParameters(path.toStdString(), ared), std::string());
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QVERIFY(file.readAll().contains("\"ared\""));
+        QVERIFY2(panel.loadPreset(path), qPrintable(panel.presetError()));
+        QCOMPARE(session.parameters().detectorKind(), DetectorKind::Ared);
+        QCOMPARE(panel.findChild<QComboBox*>("choice_detector")->currentIndex(), static_cast<int>(DetectorKind::Ared));
+    }
+
+    void fieldsThatDoNotApplyAreDisabledWithAReason()
+    {
+        ParameterPanel panel;
+        const auto slider = [&](const char* name) { return panel.findChild<QSlider*>(QStringLiteral("slider_") + name); };
+        // Defaults: a statistic detector with an adaptive threshold.
+        QVERIFY(Parameters().detectorKind() != DetectorKind::PaperC1C2C3 && Parameters().zv_adaptive);
+        QVERIFY(!slider("acc_std_max_mps2")->isEnabled());
+        QVERIFY(!slider("acc_std_max_mps2")->isHidden());  // greyed, not hidden
+        QVERIFY2(slider("acc_std_max_mps2")->toolTip().contains(QStringLiteral("C1/C2/C3")),
+                 qPrintable(slider("acc_std_max_mps2")->toolTip()));
+        QVERIFY(!panel.findChild<QLineEdit*>("value_acc_std_max_mps2")->isEnabled());
+        QVERIFY(slider("zv_window_s")->isEnabled());
+        QVERIFY(slider("zv_adapt_offset_dec")->isEnabled());
+        QVERIFY(!slider("zv_log_threshold")->isEnabled());
+        QVERIFY(slider("zv_log_threshold")->toolTip().contains(QStringLiteral("zv_adaptive")));
+
+        panel.setParameters(paperDetector());
+        QVERIFY(slider("acc_std_max_mps2")->isEnabled());
+        QVERIFY(!slider("acc_std_max_mps2")->toolTip().contains(QStringLiteral("Not used")));
+        QVERIFY(!slider("zv_window_s")->isEnabled());
+        QVERIFY(!panel.findChild<QCheckBox*>("check_zv_adaptive")->isEnabled());
+
+        // A fixed threshold: the adaptive settings go, the fixed one comes; as the user clicks.
+        panel.setParameters(Parameters());
+        panel.findChild<QCheckBox*>("check_zv_adaptive")->click();
+        QVERIFY(slider("zv_log_threshold")->isEnabled());
+        QVERIFY(!slider("zv_adapt_window_s")->isEnabled());
+        QVERIFY(!slider("zv_log_never")->isEnabled());
+
+        Parameters ared;
+        ared.detector = static_cast<int>(DetectorKind::Ared);
+        ared.filter_states = static_cast<int>(FilterStates::Nine);
+        panel.setParameters(ared);
+        QVERIFY(!slider("zv_sigma_acc_mps2")->isEnabled());  // ARED reads the gyroscope alone
+        QVERIFY(slider("zv_sigma_gyr_radps")->isEnabled());
+        QVERIFY(!slider("p0_acc_bias_mps2")->isEnabled());  // no bias states
+        QVERIFY(!panel.findChild<QCheckBox*>("check_use_zaru")->isEnabled());  // nothing for ZARU to correct
+        QVERIFY(slider("q_att_rad")->isEnabled());
+        QVERIFY(panel.findChild<QComboBox*>("choice_detector")->isEnabled());
     }
 
     void undoAndRedoFollowTheStack()

@@ -19,7 +19,7 @@ using namespace footpath;
 
 namespace {
 
-ReportContent contentFor(const QString& path, const ImportOptions& options = {})
+ReportContent contentFor(const QString& path, const ImportOptions& options = {}, const Parameters& params = {})
 {
     ImportResult read = importRecording(path.toStdString(), options);
     ReportContent content;
@@ -27,6 +27,7 @@ ReportContent contentFor(const QString& path, const ImportOptions& options = {})
         return content;
     content.recordingPath = path;
     content.info = read.info;
+    content.parameters = params;
     content.recording = std::make_shared<const Recording>(std::move(read.recording));
     content.result = std::make_shared<const Result>(runPipeline(*content.recording, content.parameters).result);
     return content;
@@ -38,6 +39,15 @@ QString run(const QString& program, const QStringList& arguments)
     process.start(program, arguments);
     process.waitForFinished(60000);
     return QString::fromUtf8(process.readAllStandardOutput());
+}
+
+/// The PDF's words on one line, with the typesetter's fi and fl ligatures spelled out.
+QString pdfWords(const QString& pdf)
+{
+    return run("pdftotext", {pdf, "-"})
+        .replace(QChar(0xFB01), QStringLiteral("fi"))
+        .replace(QChar(0xFB02), QStringLiteral("fl"))
+        .simplified();
 }
 
 QString outputDir(const QTemporaryDir& temporary)
@@ -75,7 +85,7 @@ private slots:
         for (const QString& figure : {QString::number(g.pathLength_m, 'f', 2) + " m",
                                       QString::number(g.armse->armse2d_m, 'f', 3) + " m",
                                       QString::number(content.result->summary.steps),
-                                      QStringLiteral("2017-11-22-11-22-03.csv"), QStringLiteral("ZUPT+ZARU"),
+                                      QStringLiteral("2017-11-22-11-22-03.csv"), methodSetName(content.parameters),
                                       QStringLiteral("acc_std_max_mps2"), QStringLiteral("Figure 5")})
             QVERIFY2(text.contains(figure), qPrintable(figure));
         // Every step is in the table, paged as needed: the last step's number appears.
@@ -99,6 +109,53 @@ private slots:
         QVERIFY(text.contains("0.7"));
         QVERIFY(text.contains("ZUPT"));
         QVERIFY(!text.contains("ZUPT+ZARU"));
+    }
+
+    void warningsHaveTheirOwnSectionWithTheirSpans()
+    {
+        // The shared running trial with the paper's detector: its fixed C2 bound misses the
+        // running stances (README, "Plausibility checks").
+        FOOTPATH_REQUIRE_DATASETS();
+        QTemporaryDir dir;
+        Parameters params;
+        params.detector = static_cast<int>(DetectorKind::PaperC1C2C3);
+        const ReportContent content = contentFor(datasetPath("pyshoe-vicon/2017-11-27-11-22-22.csv"), {}, params);
+        QVERIFY(content.result);
+        QVERIFY(!content.result->warnings.empty());
+        const QString pdf = outputDir(dir) + "/running-c1c2c3-report.pdf";
+        QCOMPARE(writePdfReport(content, pdf), QString());
+        const QString text = pdfWords(pdf);
+        QVERIFY(text.contains(QStringLiteral("Plausibility warnings")));
+        for (const PlausibilityWarning& w : content.result->warnings) {
+            const QString opening = QString::fromStdString(w.message).section(QLatin1Char(' '), 0, 5);
+            QVERIFY2(text.contains(opening), qPrintable(opening));
+            QVERIFY2(text.contains(QString::number(w.start_s, 'f', 2)), qPrintable(QString::number(w.start_s, 'f', 2)));
+        }
+        QVERIFY(text.contains(QStringLiteral("blocked by C2")));  // what kept the detector from the stance
+        // Before the figures, after the summary; the import's own notes are a section apart.
+        QVERIFY(text.indexOf(QStringLiteral("Plausibility warnings")) < text.indexOf(QStringLiteral("Figure 1")));
+        QVERIFY(text.indexOf(QStringLiteral("Summary")) < text.indexOf(QStringLiteral("Plausibility warnings")));
+        QVERIFY(text.contains(QStringLiteral("Import notes (reading the file)")));
+        QVERIFY(text.contains(QStringLiteral("Reading the file raised no warnings.")));
+        QVERIFY(text.contains(QStringLiteral("Stance detector C1/C2/C3")));
+    }
+
+    void aResultWithoutWarningsSaysSo()
+    {
+        QTemporaryDir dir;
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), WalkSimulatorConfig());
+        ReportContent content;
+        content.recordingPath = "simulated.csv";
+        content.recording = std::make_shared<const Recording>(walk.recording);
+        content.result = std::make_shared<const Result>(runPipeline(*content.recording, content.parameters).result);
+        QVERIFY(content.result->warnings.empty());
+        const QString pdf = outputDir(dir) + "/no-warnings-report.pdf";
+        QCOMPARE(writePdfReport(content, pdf), QString());
+        const QString text = pdfWords(pdf);
+        QVERIFY(text.contains(QStringLiteral("Plausibility warnings")));
+        QVERIFY(text.contains(QStringLiteral("The plausibility checks found nothing")));
+        QVERIFY(text.contains(QStringLiteral("detector SHOE")));  // Figure 5 names the chosen detector
+        QVERIFY(text.contains(QStringLiteral("detector shoe")));  // the parameter table spells the choice
     }
 
     void nothingToReportIsAnErrorNotACrash()

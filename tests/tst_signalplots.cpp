@@ -1,4 +1,5 @@
 #include "SignalPlots.h"
+#include "WarningOverlay.h"
 #include "detect/StanceDetector.h"
 #include "nav/Pipeline.h"
 #include "sim/WalkSimulator.h"
@@ -193,7 +194,8 @@ private slots:
             stanceSamples += stance[k];
         }
         QVERIFY(stanceSamples > times.size() / 4);  // the walk stands often enough to test anything
-        QCOMPARE(plots.plot()->itemCount(), SignalPlots::kRowCount);  // cursor lines only: no item per phase
+        // Cursor lines only (one per row and the warning lane's): no item per phase.
+        QCOMPARE(plots.plot()->itemCount(), SignalPlots::kRowCount + 1);
 
         plots.setResult(nullptr);
         QVERIFY(!plots.isStanceShaded(times[firstStance]));
@@ -220,6 +222,48 @@ private slots:
             QVERIFY2(bandPixelsAt(plots, row, standing_s) > rowHeight / 2, qPrintable(QString::number(static_cast<int>(row))));
             QVERIFY(bandPixelsAt(plots, row, swinging_s) <= 2);
         }
+    }
+
+    void warningsAreShadedInEveryRowWithALane()
+    {
+        const Walk walk = simulatedWalk(true, false);
+        auto result = std::make_shared<Result>(*walk.result);
+        result->warnings = {{PlausibilityWarning::Kind::ImplausibleSpeed, 6.0, 7.5,
+                             "The estimated foot speed reaches 15.0 m/s, faster than a foot moves."},
+                            {PlausibilityWarning::Kind::StanceRatio, 2.0, 20.0, "The foot is at rest 5 % of the time."}};
+        SignalPlots plots;
+        plots.setRecording(walk.recording);
+        QVERIFY(showLaidOut(plots));
+        QVERIFY(plots.warningLane()->layout() == nullptr);  // no lane without warnings
+        plots.setResult(result);
+        QVERIFY(plots.warningLane()->layout() != nullptr);
+        QVERIFY(plots.warningLane()->bottom() <= plots.axisRect(Row::Acceleration)->top());  // above the signals
+        QVERIFY(plots.warningOverlay().isShaded(7.0));
+        QVERIFY(!plots.warningOverlay().isShaded(12.0));  // the stance share is about the whole walk: no band
+        QVERIFY(plots.warningOverlay().toolTipAt(7.0).contains(QStringLiteral("15.0 m/s")));
+        QVERIFY(plots.warningOverlay().toolTipAt(12.0).contains(QStringLiteral("5 %")));
+        QVERIFY(plots.warningOverlay().toolTipAt(1.0).isEmpty());
+        QVERIFY(legendOf(plots, Row::Acceleration)->hasItemWithPlottable(plots.graph(Channel::AccX)));
+
+        // A red tint through every row at 7 s, in no row at 12 s.
+        plots.plot()->replot();
+        const QImage image = plots.plot()->toPixmap().toImage();
+        for (const Row row : {Row::Acceleration, Row::AngularRate, Row::MagneticField}) {
+            const QCPAxisRect* rect = plots.axisRect(row);
+            const auto tint = [&](double time_s) {
+                const int x = static_cast<int>(std::lround(rect->axis(QCPAxis::atBottom)->coordToPixel(time_s)));
+                int reddish = 0;
+                for (int y = rect->top() + 1; y < rect->bottom(); ++y) {
+                    const QColor pixel = image.pixelColor(x, y);
+                    reddish += pixel.red() >= 240 && pixel.green() < 235 && pixel.green() > 190 && pixel.blue() > 180;
+                }
+                return reddish;
+            };
+            QVERIFY2(tint(7.0) > rect->height() / 3, qPrintable(QString::number(tint(7.0))));
+            QVERIFY(tint(12.0) <= 2);
+        }
+        plots.setResult(nullptr);
+        QVERIFY(plots.warningLane()->layout() == nullptr);
     }
 
     void timeCursorRunsThroughEveryShownRow()

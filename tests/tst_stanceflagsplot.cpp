@@ -1,5 +1,6 @@
 #include "SignalPlots.h"
 #include "StanceFlagsPlot.h"
+#include "WarningOverlay.h"
 #include "detect/StanceDetector.h"
 #include "nav/Pipeline.h"
 #include "sim/WalkSimulator.h"
@@ -28,15 +29,45 @@ struct Walk {
     std::shared_ptr<const Result> result;
 };
 
-Walk simulatedWalk()
+/// The defaults with the paper's C1/C2/C3 detector: five lanes and the input rows.
+Parameters paperDetector()
+{
+    Parameters params;
+    params.detector = static_cast<int>(DetectorKind::PaperC1C2C3);
+    return params;
+}
+
+Walk simulatedWalk(const Parameters& params = paperDetector())
 {
     WalkSimulatorConfig config;
     config.accNoiseStd_mps2 = 0.05;  // noise makes C1 and C3 flicker, so the lanes differ
     config.gyrNoiseStd_radps = 0.02;
     Walk walk;
     walk.recording = std::make_shared<const Recording>(simulateWalk(closedRectanglePath(10.0, 5.0), config).recording);
-    walk.result = std::make_shared<const Result>(runPipeline(*walk.recording, Parameters()).result);
+    walk.result = std::make_shared<const Result>(runPipeline(*walk.recording, params).result);
     return walk;
+}
+
+/// 20 s at 100 Hz: stance for the first 2 s, then none; a missed stance from 5 to 8 s and a
+/// finding about the whole walk. Enough for the warnings, without a pipeline run.
+std::shared_ptr<const Result> resultWithWarnings()
+{
+    auto result = std::make_shared<Result>();
+    for (int k = 0; k < 2000; ++k) {
+        const double t = k * 0.01;
+        result->time_s.push_back(t);
+        const bool stance = t < 2.0;
+        for (auto* flags : {&result->flags.c1, &result->flags.c2, &result->flags.c3, &result->flags.c, &result->flags.stance})
+            flags->push_back(stance ? 1 : 0);
+        result->flags.logStatistic.push_back(stance ? 1.5f : 6.0f);
+        result->flags.logThreshold.push_back(4.0f);
+    }
+    result->warnings = {
+        {PlausibilityWarning::Kind::FewStances, 0.0, 19.99, "Only 1 stance phase in 20 s."},
+        {PlausibilityWarning::Kind::LongSwing, 5.0, 8.0, "No stance for 3.0 s while moving; at its quietest (t = 6.10 s) "
+                                                         "the detector statistic was 10^5.2, above its threshold 10^4.0."},
+    };
+    return result;
 }
 
 const std::vector<std::uint8_t>& flagsOf(const Result& result, Lane lane)
@@ -156,26 +187,28 @@ private slots:
     {
         const Walk walk = simulatedWalk();
         StanceFlagsPlot plot;
+        plot.setParameters(paperDetector());
         plot.setRecording(walk.recording);
         QVERIFY(!plot.inputsVisible());
-        QCOMPARE(plot.plot()->axisRectCount(), 1);
+        QCOMPARE(plot.plot()->axisRectCount(), 2);  // the lanes and the statistic
         for (const Input input : kAllInputs)
             QVERIFY(!plot.inputGraph(input)->realVisibility());
         QVERIFY(!plot.thresholdGraph(Threshold::GyrMax)->realVisibility());
-        QVERIFY(timeAxisOf(plot.lanesRect())->tickLabels());
+        QVERIFY(!timeAxisOf(plot.lanesRect())->tickLabels());
+        QVERIFY(timeAxisOf(plot.statisticRect())->tickLabels());  // one time scale, at the foot
 
         plot.findChild<QAction*>("showDetectorInputs")->trigger();  // the toolbar toggle
         QVERIFY(plot.inputsVisible());
-        QCOMPARE(plot.plot()->axisRectCount(), 1 + StanceFlagsPlot::kInputCount);
+        QCOMPARE(plot.plot()->axisRectCount(), 2 + StanceFlagsPlot::kInputCount);
         for (const Input input : kAllInputs)
             QVERIFY(plot.inputGraph(input)->realVisibility());
         for (const Threshold threshold : {Threshold::AccMin, Threshold::AccMax, Threshold::AccStdMax, Threshold::GyrMax})
             QVERIFY(plot.thresholdGraph(threshold)->realVisibility());
-        QVERIFY(!timeAxisOf(plot.lanesRect())->tickLabels());  // the time scale moved to the bottom row
+        QVERIFY(!timeAxisOf(plot.statisticRect())->tickLabels());  // the time scale moved to the bottom row
         QVERIFY(timeAxisOf(plot.inputRect(Input::GyrNorm))->tickLabels());
 
         plot.setInputsVisible(false);
-        QCOMPARE(plot.plot()->axisRectCount(), 1);
+        QCOMPARE(plot.plot()->axisRectCount(), 2);
         QVERIFY(!plot.findChild<QAction*>("showDetectorInputs")->isChecked());
     }
 
@@ -233,6 +266,7 @@ private slots:
     void timeCursorRunsThroughEveryRowAndClicksMoveIt()
     {
         StanceFlagsPlot plot;
+        plot.setParameters(paperDetector());
         plot.setRecording(simulatedWalk().recording);
         plot.setInputsVisible(true);
         QVERIFY(showLaidOut(plot, plot.plot()));
@@ -242,12 +276,11 @@ private slots:
         for (int i = 0; i < plot.plot()->itemCount(); ++i) {
             const auto* line = qobject_cast<QCPItemStraightLine*>(plot.plot()->item(i));
             QVERIFY(line != nullptr);
-            QVERIFY(line->visible());
             QCOMPARE(line->point1->key(), 9.25);
             QCOMPARE(line->point2->key(), 9.25);
-            ++cursorLines;
+            cursorLines += line->visible();  // the warning lane's is hidden with the lane
         }
-        QCOMPARE(cursorLines, 1 + StanceFlagsPlot::kInputCount);
+        QCOMPARE(cursorLines, 2 + StanceFlagsPlot::kInputCount);
 
         QSignalSpy moved(&plot, &StanceFlagsPlot::timeCursorMoved);
         const QCPAxisRect* rect = plot.inputRect(Input::AccStdDev);
@@ -310,6 +343,7 @@ private slots:
     {
         const Walk walk = simulatedWalk();
         StanceFlagsPlot plot;
+        plot.setParameters(paperDetector());
         plot.setRecording(walk.recording);
         plot.setResult(walk.result);
         plot.setInputsVisible(true);
@@ -324,6 +358,123 @@ private slots:
             for (int x = 0; x < image.width(); x += 2)
                 painted += image.pixel(x, y) != qRgb(255, 255, 255);
         QVERIFY2(painted > image.width() * image.height() / 4 / 20, qPrintable(QString::number(painted)));
+    }
+
+    void statisticRowShowsTheStatisticAndItsThreshold_data()
+    {
+        QTest::addColumn<int>("detector");
+        QTest::addColumn<QString>("axisLabel");
+        QTest::addColumn<bool>("movingThreshold");
+        QTest::newRow("shoe, adaptive") << static_cast<int>(DetectorKind::Shoe) << "SHOE" << true;
+        QTest::newRow("c1c2c3") << static_cast<int>(DetectorKind::PaperC1C2C3) << "std of |a|" << false;
+    }
+
+    void statisticRowShowsTheStatisticAndItsThreshold()
+    {
+        QFETCH(int, detector);
+        QFETCH(QString, axisLabel);
+        QFETCH(bool, movingThreshold);
+        Parameters params;
+        params.detector = detector;
+        const Walk walk = simulatedWalk(params);
+        const StanceFlags& flags = walk.result->flags;
+        QCOMPARE(flags.logStatistic.size(), walk.result->time_s.size());
+        StanceFlagsPlot plot;
+        plot.setParameters(params);
+        plot.setRecording(walk.recording);
+        plot.setResult(walk.result);
+
+        const QCPAxis* axis = plot.statisticRect()->axis(QCPAxis::atLeft);
+        QCOMPARE(axis->scaleType(), QCPAxis::stLogarithmic);
+        QVERIFY2(axis->label().contains(axisLabel), qPrintable(axis->label()));
+        const QCPGraph* statistic = plot.statisticGraph();
+        QCOMPARE(static_cast<std::size_t>(statistic->dataCount()), flags.logStatistic.size());
+        float lowest = std::numeric_limits<float>::infinity(), highest = -lowest;
+        for (std::size_t k = 0; k < flags.logStatistic.size(); ++k) {
+            if (!std::isfinite(flags.logStatistic[k]))
+                continue;
+            lowest = std::min(lowest, flags.logStatistic[k]);
+            highest = std::max(highest, flags.logStatistic[k]);
+            if (k % 37 == 0)
+                QVERIFY(std::abs(std::log10(statistic->data()->at(static_cast<int>(k))->value) - flags.logStatistic[k]) < 1e-4);
+        }
+        // The axis follows the data: it holds it, with less than two decades to spare on either side.
+        const QCPRange range = axis->range();
+        QVERIFY(range.lower <= std::pow(10.0, lowest) && std::pow(10.0, highest) <= range.upper);
+        QVERIFY2(std::log10(range.lower) > lowest - 2.0 && std::log10(range.upper) < highest + 2.0,
+                 qPrintable(QString("%1..%2 for %3..%4").arg(range.lower).arg(range.upper).arg(lowest).arg(highest)));
+
+        // The threshold line is the one the detector compared with, sample by sample.
+        const QCPGraph* threshold = plot.statisticThresholdGraph();
+        for (std::size_t k = 0; k < flags.logThreshold.size(); k += 41)
+            QVERIFY(std::abs(std::log10(stepValueAt(threshold, walk.result->time_s[k])) - flags.logThreshold[k]) < 1e-4);
+        QCOMPARE(threshold->dataCount() > 2, movingThreshold);
+        if (!movingThreshold)
+            QVERIFY(std::abs(threshold->data()->at(0)->value - params.acc_std_max_mps2) < 1e-6);
+
+        // Stance is shaded in the row.
+        const double stanceAt = walk.result->steps.at(2).stanceStart_s + 0.01;
+        QVERIFY(plot.isStatisticStanceShaded(stanceAt));
+        QVERIFY(!plot.isStatisticStanceShaded(walk.result->steps.at(2).stanceStart_s - 0.3));
+    }
+
+    void aStatisticDetectorShowsOnlyCAndStance()
+    {
+        StanceFlagsPlot plot;
+        plot.setRecording(simulatedWalk().recording);
+        Parameters shoe;
+        shoe.detector = static_cast<int>(DetectorKind::Shoe);
+        plot.setParameters(shoe);
+        for (const Lane lane : {Lane::C1, Lane::C2, Lane::C3})
+            QVERIFY(!plot.isLaneShown(lane));
+        QVERIFY(plot.isLaneShown(Lane::C) && plot.isLaneShown(Lane::Stance));
+        auto* inputs = plot.findChild<QAction*>("showDetectorInputs");
+        QVERIFY(!inputs->isEnabled());  // C1/C2/C3's inputs mean nothing here
+        plot.setInputsVisible(true);
+        QVERIFY(!plot.isInputRowShown(Input::AccStdDev));
+        QCOMPARE(plot.plot()->axisRectCount(), 2);
+
+        plot.setParameters(paperDetector());  // the inputs asked for come with the paper's detector
+        for (const Lane lane : kAllLanes)
+            QVERIFY(plot.isLaneShown(lane));
+        QVERIFY(inputs->isEnabled());
+        QVERIFY(plot.isInputRowShown(Input::AccStdDev));
+        QVERIFY(plot.statisticRect()->axis(QCPAxis::atLeft)->label().contains(QStringLiteral("std of |a|")));
+    }
+
+    void warningsAreShadedLabelledAndExplained()
+    {
+        const std::shared_ptr<const Result> result = resultWithWarnings();
+        StanceFlagsPlot plot;
+        plot.setResult(result);
+        QVERIFY(plot.warningLane()->layout() != nullptr);  // the lane of labelled bars is shown
+        const WarningOverlay& warnings = plot.warningOverlay();
+        QVERIFY(warnings.isShaded(6.0));    // the missed stance
+        QVERIFY(!warnings.isShaded(12.0));  // the whole-walk finding is a bar in the lane, not a band
+        const QString tip = warnings.toolTipAt(6.0);
+        QVERIFY2(tip.contains(QStringLiteral("above its threshold")) && tip.contains(QStringLiteral("5.00")),
+                 qPrintable(tip));
+        QVERIFY(tip.contains(warningLabel(PlausibilityWarning::Kind::LongSwing)));
+        QVERIFY(tip.contains(QStringLiteral("Only 1 stance phase")));  // both findings hold 6 s
+        QVERIFY(!warnings.toolTipAt(12.0).contains(QStringLiteral("No stance")));
+
+        // On screen: a red tint in the band, none beside it.
+        QVERIFY(showLaidOut(plot, plot.plot()));
+        plot.setTimeRange(0.0, 20.0);
+        plot.plot()->replot();
+        const QImage image = plot.plot()->toPixmap().toImage();
+        const QCPAxisRect* rect = plot.statisticRect();
+        const auto pixelAt = [&](double time_s, double value) {
+            return image.pixelColor(static_cast<int>(rect->axis(QCPAxis::atBottom)->coordToPixel(time_s)),
+                                    static_cast<int>(rect->axis(QCPAxis::atLeft)->coordToPixel(value)));
+        };
+        const QColor inBand = pixelAt(6.5, 100.0), beside = pixelAt(11.0, 100.0);
+        QVERIFY2(inBand.red() > inBand.green() + 15 && inBand.red() > 200, qPrintable(inBand.name()));
+        QCOMPARE(beside, QColor(Qt::white));
+
+        plot.setResult(nullptr);
+        QVERIFY(plot.warningLane()->layout() == nullptr);
+        QVERIFY(!plot.warningOverlay().isShaded(6.0));
     }
 
     void emptyInputsDoNotCrash()
@@ -348,10 +499,11 @@ private slots:
         auto recording = std::make_shared<const Recording>(walk.recording);
         auto result = std::make_shared<Result>();
         result->time_s = timesOf(*recording);
-        result->flags = detectStance(recording->samples, Parameters());
+        result->flags = detectStance(recording->samples, paperDetector());
 
         StanceFlagsPlot plot;
         QVERIFY(showLaidOut(plot, plot.plot()));
+        plot.setParameters(paperDetector());
         plot.setInputsVisible(true);
         QElapsedTimer timer;
         timer.start();
@@ -361,7 +513,7 @@ private slots:
         plot.setResult(result);
         plot.plot()->replot();
         const qint64 result_ms = timer.restart();
-        Parameters params;
+        Parameters params = paperDetector();
         params.window_half_s = 0.2;
         plot.setParameters(params);
         plot.plot()->replot();

@@ -1,4 +1,5 @@
 #include "SummaryPanel.h"
+#include "WarningOverlay.h"
 #include "nav/Pipeline.h"
 #include "sim/WalkSimulator.h"
 
@@ -6,8 +7,10 @@
 #include <QBarSet>
 #include <QChart>
 #include <QChartView>
+#include <QGroupBox>
 #include <QLabel>
 #include <QLineSeries>
+#include <QSignalSpy>
 #include <QTableView>
 #include <QtTest>
 
@@ -78,6 +81,20 @@ bool figureShown(SummaryPanel& panel, const QString& key)
 {
     auto* label = panel.findChild<QLabel*>(QStringLiteral("figure_") + key);
     return label && label->isVisibleTo(&panel);
+}
+
+/// The straight walk's result with a stride far too long in its middle and a whole-walk finding.
+std::shared_ptr<const Result> withWarnings(std::size_t& markedStep)
+{
+    auto result = std::make_shared<Result>(*straightWalk().result);
+    markedStep = result->steps.size() / 2;
+    const Step& previous = result->steps[markedStep - 1];
+    const Step& step = result->steps[markedStep];
+    result->warnings = {
+        {PlausibilityWarning::Kind::StanceRatio, 1.0, result->time_s.back(), "The foot is at rest 90 % of the time."},
+        {PlausibilityWarning::Kind::StrideLength, previous.stanceEnd_s, step.stanceStart_s, "Stride 7 is 4.20 m long."},
+    };
+    return result;
 }
 
 QString figureText(SummaryPanel& panel, const QString& key)
@@ -285,6 +302,68 @@ private slots:
         panel.setResult(straightWalk().result);
         QVERIFY(!panel.statistics().armse);
         QVERIFY(!figureShown(panel, "armse2d"));
+    }
+
+    void warningsHeadTheFiguresAndMoveTheCursor()
+    {
+        std::size_t markedStep = 0;
+        const std::shared_ptr<const Result> result = withWarnings(markedStep);
+        SummaryPanel panel;
+        auto* group = panel.findChild<QGroupBox*>("warnings");
+        auto* none = panel.findChild<QLabel*>("noWarnings");
+        QVERIFY(!group->isVisibleTo(&panel) && !none->isVisibleTo(&panel));  // no result: nothing to say
+
+        panel.setResult(result);
+        QVERIFY(group->isVisibleTo(&panel));
+        QVERIFY(!none->isVisibleTo(&panel));
+        QVERIFY(panel.findChild<QLabel*>("warningsTitle")->text().startsWith(QStringLiteral("2 ")));
+        for (std::size_t i = 0; i < result->warnings.size(); ++i) {
+            auto* label = panel.findChild<QLabel*>(QStringLiteral("warning_%1").arg(i));
+            QVERIFY(label);
+            QVERIFY(label->text().contains(QString::fromStdString(result->warnings[i].message).toHtmlEscaped()));
+            QVERIFY2(label->text().contains(warningSpanText(result->warnings[i])), qPrintable(label->text()));
+        }
+        QSignalSpy requested(&panel, &SummaryPanel::timeCursorRequested);
+        emit panel.findChild<QLabel*>("warning_1")->linkActivated(QStringLiteral("1"));  // its time span clicked
+        QCOMPARE(requested.count(), 1);
+        QCOMPARE(requested.first().first().toDouble(), result->warnings[1].start_s);
+
+        panel.setResult(straightWalk().result);  // the same walk without findings
+        QVERIFY(straightWalk().result->warnings.empty());
+        QVERIFY(!group->isVisibleTo(&panel));
+        QVERIFY(none->isVisibleTo(&panel));
+        QVERIFY(!panel.findChild<QLabel*>("warning_0"));  // the old labels are gone
+    }
+
+    void stepsWhoseStrideOverlapsAWarningAreMarked()
+    {
+        std::size_t markedStep = 0;
+        const std::shared_ptr<const Result> result = withWarnings(markedStep);
+        // The stride of step k runs from the end of stance k-1 to the end of stance k: the long
+        // stride's span marks its own row only, and the whole-walk finding marks none.
+        QCOMPARE(warningsOfStep(*result, markedStep), std::vector<std::size_t>{1});
+        QVERIFY(warningsOfStep(*result, markedStep - 1).empty());
+        QVERIFY(warningsOfStep(*result, markedStep + 1).empty());
+
+        SummaryPanel panel;
+        panel.setResult(result);
+        auto* table = panel.findChild<QTableView*>("stepTable");
+        QAbstractItemModel* model = table->model();
+        table->sortByColumn(0, Qt::AscendingOrder);
+        for (int row = 0; row < model->rowCount(); ++row) {
+            const bool marked = static_cast<std::size_t>(row) == markedStep;
+            for (int column : {0, 4})
+                QCOMPARE(model->index(row, column).data(Qt::BackgroundRole).isValid(), marked);
+            QCOMPARE(model->index(row, 0).data(Qt::DecorationRole).isValid(), marked);  // the warning icon
+        }
+        const auto index = model->index(static_cast<int>(markedStep), 2);
+        QVERIFY(model->data(index, Qt::ToolTipRole).toString().contains(QStringLiteral("4.20 m")));
+
+        // A click on a step asks for the time cursor at its stance.
+        QSignalSpy requested(&panel, &SummaryPanel::timeCursorRequested);
+        emit table->clicked(index);
+        QCOMPARE(requested.count(), 1);
+        QCOMPARE(requested.first().first().toDouble(), result->steps[markedStep].stanceStart_s);
     }
 
     void clearEmptiesEverything()

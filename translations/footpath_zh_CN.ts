@@ -256,10 +256,6 @@
         <translation>图 4. 信号，支撑相以阴影标出。</translation>
     </message>
     <message>
-        <source>Figure 5. Stance detector from %1 s to %2 s: conditions C1, C2, C3, their combination C, the median-filtered stance, and the inputs with their thresholds.</source>
-        <translation>图 5. %1 s 至 %2 s 的支撑相检测器：条件 C1、C2、C3，它们的组合 C，经中值滤波的支撑相，以及各输入量及其阈值。</translation>
-    </message>
-    <message>
         <source>none</source>
         <translation>无</translation>
     </message>
@@ -296,16 +292,40 @@
         <translation>各步</translation>
     </message>
     <message>
-        <source>Import notes and warnings</source>
-        <translation>导入说明与警告</translation>
+        <source>Figure 5. Stance detector C1/C2/C3 from %1 s to %2 s: conditions C1, C2, C3, their combination C, the median-filtered stance, the std of |a| on a logarithmic axis, and the inputs with their thresholds; plausibility warnings shaded red.</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Warning: %1</source>
-        <translation>警告：%1</translation>
+        <source>Figure 5. Stance detector %3 from %1 s to %2 s: the condition C (statistic below threshold), the stance, and the statistic on a logarithmic axis with its threshold; plausibility warnings shaded red.</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The import raised no warnings.</source>
-        <translation>导入时没有警告。</translation>
+        <source>Plausibility warnings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The plausibility checks found nothing: the result looks like human gait.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Findings: %1. Each marks a span where the result is not what human gait gives, so the path needs care there.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import notes (reading the file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import warning: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the file raised no warnings.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -846,6 +866,12 @@
         <source>Live si&amp;gnals</source>
         <translation>实时信号(&amp;G)</translation>
     </message>
+    <message numerus="yes">
+        <source>%n plausibility warning(s): %1</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>footpath::ParameterPanel</name>
@@ -932,6 +958,42 @@
     <message>
         <source>Redo</source>
         <translation>重做</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;In presets and --set: %3&lt;br&gt;Default: %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: only the C1/C2/C3 detector uses it, and %1 is chosen.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: the statistic detectors (SHOE, ARED, AMVD, MBGTD) use it, and C1/C2/C3 is chosen.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: ARED looks at the gyroscope alone.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: %1 looks at the accelerometer alone.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: the threshold is adaptive (zv_adaptive is on).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: the threshold is fixed (zv_adaptive is off).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: the 9-state filter has no bias states.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: ZARU corrects the gyro bias, which the 9-state filter does not estimate.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1205,6 +1267,47 @@
         <source>Time (s)</source>
         <translation>时间 (s)</translation>
     </message>
+    <message>
+        <source>C: statistic
+&lt; threshold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stance</source>
+        <translation type="unfinished">支撑相</translation>
+    </message>
+    <message>
+        <source>SHOE
+statistic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ARED
+statistic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AMVD
+statistic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MBGTD
+statistic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The inputs of the C1/C2/C3 detector; the chosen detector decides on its statistic, shown below the lanes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>threshold (adaptive)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>threshold = 10^%1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::SummaryPanel</name>
@@ -1416,6 +1519,20 @@
         <source>Count</source>
         <translation>数量</translation>
     </message>
+    <message>
+        <source>No plausibility warnings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n plausibility warning(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Click the time span to move the time cursor there</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::TrajectoryView2D</name>
@@ -1536,6 +1653,45 @@
     </message>
 </context>
 <context>
+    <name>footpath::WarningOverlay</name>
+    <message>
+        <source>no initial rest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missed stance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stride too long</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stride too slow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stance share</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>foot too fast</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>few stances</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1–%2 s</source>
+        <translation type="unfinished">%1 s {1–%2 ?}</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Foot-mounted inertial navigation</source>
@@ -1556,6 +1712,26 @@
     <message>
         <source>Connect the live input to this serial port or emulator link</source>
         <translation>将实时输入连接到此串口或模拟器链接</translation>
+    </message>
+    <message>
+        <source>--set expects name=value, got &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start with the parameters of this preset (JSON)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set one parameter, as footpath-cli does (repeatable)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show this view: signals, detector, trajectory2d or trajectory3d</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameters from the command line</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>

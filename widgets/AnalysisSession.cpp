@@ -1,5 +1,6 @@
 #include "AnalysisSession.h"
 
+#include "ParameterFieldValue.h"
 #include "PipelineRunner.h"
 
 #include <QDateTime>
@@ -81,10 +82,7 @@ void AnalysisSession::setParameter(const QString& name, double value)
     if (!field)
         return;
     Parameters after = params_;
-    if (field->kind == ParameterField::Kind::Flag)
-        after.*field->flag = value != 0.0;
-    else
-        after.*field->real = value;
+    setParameterValue(after, *field, value);
     if (parameterValue(after, *field) == parameterValue(params_, *field))
         return;
     undoStack_->push(new ParameterChange(this, params_, after, tr("Change %1").arg(name), name));

@@ -37,7 +37,7 @@ public:
 
     /// Replaces the recording (the parameters stay) and starts an estimate.
     void setRecording(std::shared_ptr<const Recording> recording, const RecordingInfo& info, const QString& path);
-    /// An undoable change of one parameter; rapid changes of the same field (a slider being
+    /// An undoable change of one parameter (flags as 0/1, choices as their index); rapid changes of the same field (a slider being
     /// dragged) merge into one undo step.
     void setParameter(const QString& name, double value);
     /// An undoable change of the whole set (preset loaded, reset to defaults).

@@ -1,9 +1,11 @@
 #include "ParameterPanel.h"
 
+#include "ParameterFieldValue.h"
 #include "io/ParameterIo.h"
 
 #include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleValidator>
 #include <QFileDialog>
@@ -251,10 +253,11 @@ QWidget* ParameterPanel::createFieldSections()
             grid->setVerticalSpacing(2);
             grids.insert(group, grid);
         }
-        if (rows_[index].field->kind == ParameterField::Kind::Real)
-            addRealRow(grids.value(group), index);
-        else
-            addFlagRow(grids.value(group), index);
+        switch (rows_[index].field->kind) {
+        case ParameterField::Kind::Real: addRealRow(grids.value(group), index); break;
+        case ParameterField::Kind::Flag: addFlagRow(grids.value(group), index); break;
+        case ParameterField::Kind::Choice: addChoiceRow(grids.value(group), index); break;
+        }
     }
     auto* container = new QWidget;
     auto* layout = new QVBoxLayout(container);
@@ -304,11 +307,23 @@ QWidget* ParameterPanel::createSection(const QString& title, QWidget* content)
 
 namespace {
 
+QString choiceNames(const ParameterField& field)
+{
+    QStringList names;
+    for (const char* name : field.choiceNames)
+        names << QString::fromUtf8(name);
+    return names.join(QStringLiteral(", "));
+}
+
 QString fieldToolTip(const ParameterField& field, double defaultValue)
 {
     const QString unit = displayUnit(field.unit);
     if (field.kind == ParameterField::Kind::Flag)
         return QStringLiteral("<b>%1</b><br>%2").arg(QString::fromUtf8(field.name), fieldText(field.description));
+    if (field.kind == ParameterField::Kind::Choice)
+        return ParameterPanel::tr("<b>%1</b><br>%2<br>In presets and --set: %3<br>Default: %4")
+            .arg(QString::fromUtf8(field.name), fieldText(field.description), choiceNames(field),
+                 QString::fromUtf8(field.choiceNames.at(static_cast<std::size_t>(defaultValue))));
     return ParameterPanel::tr("<b>%1</b><br>%2<br>Range: %3 to %4 %5<br>Default: %6 %5")
         .arg(QString::fromUtf8(field.name), fieldText(field.description), formatValue(field.minimum),
              formatValue(field.maximum), unit, formatValue(defaultValue));
@@ -345,6 +360,8 @@ void ParameterPanel::addRealRow(QGridLayout* grid, std::size_t rowIndex)
     row.slider->setFocusPolicy(Qt::StrongFocus);
     row.slider->installEventFilter(this);
     row.reset = createResetButton(rowIndex);
+    row.toolTip = toolTip;
+    row.parts = {row.label, row.edit, unit, row.slider, row.reset};
 
     const int gridRow = grid->rowCount();
     grid->addWidget(row.label, gridRow, 0);
@@ -366,19 +383,51 @@ void ParameterPanel::addFlagRow(QGridLayout* grid, std::size_t rowIndex)
     const QString name = QString::fromUtf8(field.name);
     row.check = new QCheckBox(name);
     row.check->setObjectName(QStringLiteral("check_") + name);
-    row.check->setToolTip(fieldToolTip(field, parameterValue(defaults_, field)));
+    row.toolTip = fieldToolTip(field, parameterValue(defaults_, field));
+    row.check->setToolTip(row.toolTip);
     // The description on its own wrapped line: beside the name it would widen the whole panel.
     auto* description = new QLabel(fieldText(field.description));
     description->setWordWrap(true);
     description->setForegroundRole(QPalette::PlaceholderText);
     description->setIndent(row.check->style()->pixelMetric(QStyle::PM_IndicatorWidth) + 6);
     row.reset = createResetButton(rowIndex);
+    row.parts = {row.check, description, row.reset};
     const int gridRow = grid->rowCount();
     grid->addWidget(row.check, gridRow, 0, 1, 3);
     grid->addWidget(row.reset, gridRow, 3);
     grid->addWidget(description, gridRow + 1, 0, 1, 3);
     grid->setRowMinimumHeight(gridRow + 2, 6);
     connect(row.check, &QCheckBox::toggled, this, [this, rowIndex](bool checked) { onFlagToggled(rowIndex, checked); });
+}
+
+void ParameterPanel::addChoiceRow(QGridLayout* grid, std::size_t rowIndex)
+{
+    FieldRow& row = rows_[rowIndex];
+    const ParameterField& field = *row.field;
+    const QString name = QString::fromUtf8(field.name);
+    row.toolTip = fieldToolTip(field, parameterValue(defaults_, field));
+    row.label = new QLabel(name);
+    row.label->setObjectName(QStringLiteral("label_") + name);
+    row.label->setToolTip(row.toolTip);
+    row.combo = new QComboBox;
+    row.combo->setObjectName(QStringLiteral("choice_") + name);
+    row.combo->setToolTip(row.toolTip);
+    row.combo->setFocusPolicy(Qt::StrongFocus);
+    row.combo->installEventFilter(this);
+    for (std::size_t i = 0; i < field.choiceNames.size(); ++i) {
+        const char* label = i < field.choiceLabels.size() ? field.choiceLabels[i] : field.choiceNames[i];
+        row.combo->addItem(fieldText(label));
+        // What a preset or --set calls this choice.
+        row.combo->setItemData(static_cast<int>(i), QString::fromUtf8(field.choiceNames[i]), Qt::ToolTipRole);
+    }
+    row.reset = createResetButton(rowIndex);
+    row.parts = {row.label, row.combo, row.reset};
+    const int gridRow = grid->rowCount();
+    grid->addWidget(row.label, gridRow, 0);
+    grid->addWidget(row.combo, gridRow + 1, 0, 1, 3);
+    grid->addWidget(row.reset, gridRow, 3);
+    grid->setRowMinimumHeight(gridRow + 2, 6);
+    connect(row.combo, &QComboBox::activated, this, [this, rowIndex](int index) { onChoiceChosen(rowIndex, index); });
 }
 
 QToolButton* ParameterPanel::createResetButton(std::size_t rowIndex)
@@ -409,6 +458,7 @@ void ParameterPanel::setParameters(const Parameters& params)
         showValue(row);
     }
     showProblems();
+    showApplicability();
 }
 
 void ParameterPanel::showProblems()
@@ -420,12 +470,78 @@ void ParameterPanel::showProblems()
     problems_->setVisible(!problems.empty());
 }
 
+namespace {
+
+bool isOneOf(const std::string& name, std::initializer_list<const char*> names)
+{
+    return std::any_of(names.begin(), names.end(), [&name](const char* n) { return name == n; });
+}
+
+QString chosenDetectorLabel(const Parameters& params)
+{
+    const ParameterField* detector = findParameterField("detector");
+    const auto index = static_cast<std::size_t>(params.detector);
+    return detector && index < detector->choiceLabels.size() ? fieldText(detector->choiceLabels[index]) : QString();
+}
+
+/// Why the field has no effect with the other values of params; empty when it has one. Only the
+/// "zv_" fields belong to the statistic detectors; the other detector fields to C1/C2/C3.
+QString notUsedBecause(const ParameterField& field, const Parameters& params)
+{
+    const std::string name = field.name;
+    const DetectorKind detector = params.detectorKind();
+    const bool paper = detector == DetectorKind::PaperC1C2C3;
+    const bool statisticField = name.rfind("zv_", 0) == 0;
+    const bool paperField = std::string(field.group) == "Detector" && name != "detector" && !statisticField;
+    if (paperField && !paper)
+        return ParameterPanel::tr("Not used: only the C1/C2/C3 detector uses it, and %1 is chosen.")
+            .arg(chosenDetectorLabel(params));
+    if (statisticField && paper)
+        return ParameterPanel::tr("Not used: the statistic detectors (SHOE, ARED, AMVD, MBGTD) use it, and C1/C2/C3 "
+                                  "is chosen.");
+    if (name == "zv_sigma_acc_mps2" && detector == DetectorKind::Ared)
+        return ParameterPanel::tr("Not used: ARED looks at the gyroscope alone.");
+    if (name == "zv_sigma_gyr_radps" && (detector == DetectorKind::Amvd || detector == DetectorKind::Mbgtd))
+        return ParameterPanel::tr("Not used: %1 looks at the accelerometer alone.").arg(chosenDetectorLabel(params));
+    if (name == "zv_log_threshold" && params.zv_adaptive)
+        return ParameterPanel::tr("Not used: the threshold is adaptive (zv_adaptive is on).");
+    if (!params.zv_adaptive
+        && isOneOf(name, {"zv_adapt_window_s", "zv_adapt_offset_dec", "zv_adapt_fraction", "zv_log_always", "zv_log_never"}))
+        return ParameterPanel::tr("Not used: the threshold is fixed (zv_adaptive is off).");
+    if (params.filterStates() == FilterStates::Nine
+        && isOneOf(name, {"q_gyro_bias_radps", "q_acc_bias_mps2", "p0_gyro_bias_radps", "p0_acc_bias_mps2"}))
+        return ParameterPanel::tr("Not used: the 9-state filter has no bias states.");
+    // ZARU measures the gyro bias; with the bias states held at zero it corrects nothing.
+    if (params.filterStates() == FilterStates::Nine && isOneOf(name, {"use_zaru", "r_zaru_radps"}))
+        return ParameterPanel::tr("Not used: ZARU corrects the gyro bias, which the 9-state filter does not estimate.");
+    return {};
+}
+
+}  // namespace
+
+void ParameterPanel::showApplicability()
+{
+    for (FieldRow& row : rows_) {
+        const QString reason = notUsedBecause(*row.field, current_);
+        const QString toolTip = reason.isEmpty() ? row.toolTip : row.toolTip + QStringLiteral("<br><i>%1</i>").arg(reason.toHtmlEscaped());
+        for (QWidget* part : row.parts) {
+            part->setEnabled(reason.isEmpty());
+            if (part != row.reset)  // the reset button keeps its own "back to the default"
+                part->setToolTip(toolTip);
+        }
+    }
+}
+
 void ParameterPanel::showValue(FieldRow& row)
 {
     const double value = parameterValue(current_, *row.field);
     if (row.check) {
         const QSignalBlocker blocker(row.check);
         row.check->setChecked(value != 0.0);
+    }
+    if (row.combo) {
+        const QSignalBlocker blocker(row.combo);
+        row.combo->setCurrentIndex(static_cast<int>(value));
     }
     if (row.slider && !row.slider->isSliderDown()) {
         const QSignalBlocker blocker(row.slider);
@@ -487,6 +603,18 @@ void ParameterPanel::onFlagToggled(std::size_t rowIndex, bool checked)
     emitNow(QString::fromUtf8(row.field->name), checked ? 1.0 : 0.0);
 }
 
+void ParameterPanel::onChoiceChosen(std::size_t rowIndex, int index)
+{
+    FieldRow& row = rows_[rowIndex];
+    const double previous = parameterValue(current_, *row.field);
+    if (index < 0 || index == static_cast<int>(previous))
+        return;  // the same choice again is no change
+    storeValue(row, index);
+    showModified(row);
+    flushPendingEdit();
+    emitNow(QString::fromUtf8(row.field->name), index);
+}
+
 void ParameterPanel::resetField(std::size_t rowIndex)
 {
     FieldRow& row = rows_[rowIndex];
@@ -499,11 +627,9 @@ void ParameterPanel::resetField(std::size_t rowIndex)
 
 void ParameterPanel::storeValue(const FieldRow& row, double value)
 {
-    if (row.field->kind == ParameterField::Kind::Flag)
-        current_.*row.field->flag = value != 0.0;
-    else
-        current_.*row.field->real = value;
+    setParameterValue(current_, *row.field, value);
     showProblems();
+    showApplicability();
 }
 
 // --- Emitting: a dragged slider reports at most every kEditInterval_ms, and always its last value.
@@ -648,10 +774,12 @@ void ParameterPanel::keyPressEvent(QKeyEvent* event)
 
 bool ParameterPanel::eventFilter(QObject* watched, QEvent* event)
 {
-    // A wheel over a slider the user has not clicked scrolls the panel instead: otherwise scrolling
-    // through the list silently changes whichever parameter passes under the pointer.
+    // A wheel over a slider or combo box the user has not clicked scrolls the panel instead:
+    // otherwise scrolling through the list silently changes whichever parameter passes under the
+    // pointer.
     if (event->type() == QEvent::Wheel) {
-        if (auto* slider = qobject_cast<QSlider*>(watched); slider && !slider->hasFocus()) {
+        const bool changesOnWheel = qobject_cast<QSlider*>(watched) || qobject_cast<QComboBox*>(watched);
+        if (auto* widget = qobject_cast<QWidget*>(watched); changesOnWheel && !widget->hasFocus()) {
             event->ignore();
             return true;
         }

@@ -10,6 +10,7 @@
 
 class QAction;
 class QCheckBox;
+class QComboBox;
 class QGridLayout;
 class QKeyEvent;
 class QLabel;
@@ -60,9 +61,12 @@ private:
     int steps_ = 1000;  ///< positions after the first (linear) or after the lowest positive (log)
 };
 
-/// Every parameter of parameterFields() as a slider with a numeric field (reals) or a check box
-/// (flags), grouped by ParameterField::group in collapsible sections. Built from the field list
-/// alone, so a new field appears without changes here.
+/// Every parameter of parameterFields() as a slider with a numeric field (reals), a check box
+/// (flags) or a combo box (choices), grouped by ParameterField::group in collapsible sections.
+/// Built from the field list alone, so a new field appears without changes here. A field that has
+/// no effect with the other values (the C1/C2/C3 bounds while a statistic detector is chosen, the
+/// adaptive threshold's settings while it is off, ...) is disabled, not hidden, and its tool tip
+/// says why.
 ///
 /// The panel does not own the parameters: it reports what the user does (parameterEdited,
 /// parametersReplaced) and shows what it is given (setParameters). A slider the user is dragging is
@@ -91,7 +95,7 @@ public:
 signals:
     /// The user changed one field (flags as 0/1). While a slider is dragged this arrives
     /// continuously, at most every kEditInterval_ms, and always with the final value.
-    void parameterEdited(const QString& name, double value);
+    void parameterEdited(const QString& name, double value);  // choices as their index
     /// The user replaced the whole set (reset to defaults, preset loaded).
     void parametersReplaced(const footpath::Parameters& params, const QString& description);
 
@@ -104,11 +108,14 @@ private:
     struct FieldRow {
         const ParameterField* field = nullptr;
         SliderScale scale;
-        QLabel* label = nullptr;        ///< reals: the name (bold when not the default)
+        QLabel* label = nullptr;        ///< reals and choices: the name (bold when not the default)
         QSlider* slider = nullptr;      ///< reals
         QLineEdit* edit = nullptr;      ///< reals
         QCheckBox* check = nullptr;     ///< flags
+        QComboBox* combo = nullptr;     ///< choices
         QToolButton* reset = nullptr;   ///< back to the default; shown when the value differs
+        std::vector<QWidget*> parts;    ///< every widget of the row, enabled and disabled together
+        QString toolTip;                ///< the field's own tool tip, before any "not used" note
     };
 
     QWidget* createButtonBar();
@@ -116,14 +123,17 @@ private:
     QWidget* createSection(const QString& title, QWidget* content);
     void addRealRow(QGridLayout* grid, std::size_t rowIndex);
     void addFlagRow(QGridLayout* grid, std::size_t rowIndex);
+    void addChoiceRow(QGridLayout* grid, std::size_t rowIndex);
     QToolButton* createResetButton(std::size_t rowIndex);
 
     void showValue(FieldRow& row);
     void showModified(FieldRow& row);
     void showProblems();
+    void showApplicability();
     void onSliderMoved(std::size_t rowIndex, int position);
     void onValueTyped(std::size_t rowIndex);
     void onFlagToggled(std::size_t rowIndex, bool checked);
+    void onChoiceChosen(std::size_t rowIndex, int index);
     void resetField(std::size_t rowIndex);
     void storeValue(const FieldRow& row, double value);
 

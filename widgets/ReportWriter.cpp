@@ -5,6 +5,7 @@
 #include "SummaryPanel.h"
 #include "TrajectoryView2D.h"
 #include "TrajectoryView3D.h"
+#include "WarningOverlay.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -253,7 +254,15 @@ QList<QStringList> parameterRows(const Parameters& params)
     for (const ParameterField& field : parameterFields()) {
         const double value = parameterValue(params, field), standard = parameterValue(defaults, field);
         const auto text = [&field](double v) {
-            return field.kind == ParameterField::Kind::Flag ? (v != 0.0 ? tr("on") : tr("off")) : QString::number(v, 'g', 6);
+            switch (field.kind) {
+            case ParameterField::Kind::Flag: return v != 0.0 ? tr("on") : tr("off");
+            case ParameterField::Kind::Choice: {
+                const auto index = static_cast<std::size_t>(v);  // as presets and --set spell it
+                return index < field.choiceNames.size() ? QString::fromUtf8(field.choiceNames[index]) : QString::number(v);
+            }
+            case ParameterField::Kind::Real: break;
+            }
+            return QString::number(v, 'g', 6);
         };
         const QString mark = value != standard ? QStringLiteral("*") : QString();
         rows << QStringList{mark + QString::fromUtf8(field.name), mark + text(value), text(standard),
@@ -289,12 +298,47 @@ QList<QStringList> headerRows(const ReportContent& c)
             {tr("Software"), tr("Footpath %1").arg(QCoreApplication::applicationVersion())}};
 }
 
-/// A window of about ten seconds in the middle of the walk: enough strides to read the lanes.
+/// A window of about ten seconds, enough strides to read the lanes: from just before the first
+/// missed stance when there is one (where the detector view explains the failure), else in the
+/// middle of the walk.
 std::pair<double, double> representativeWindow(const Result& result)
 {
     const double from = result.time_s.front(), to = result.time_s.back();
-    const double middle = 0.5 * (from + to), half = std::min(5.0, 0.5 * (to - from));
-    return {middle - half, middle + half};
+    const double half = std::min(5.0, 0.5 * (to - from));
+    const auto missed = std::find_if(result.warnings.begin(), result.warnings.end(), [](const PlausibilityWarning& w) {
+        return w.kind == PlausibilityWarning::Kind::LongSwing;
+    });
+    const double middle = missed != result.warnings.end() ? missed->start_s - 1.0 + half : 0.5 * (from + to);
+    const double centre = std::clamp(middle, from + half, to - half);
+    return {centre - half, centre + half};
+}
+
+QString detectorFigureCaption(const Parameters& params, double from, double to)
+{
+    if (params.detectorKind() == DetectorKind::PaperC1C2C3)
+        return tr("Figure 5. Stance detector C1/C2/C3 from %1 s to %2 s: conditions C1, C2, C3, their combination C, "
+                  "the median-filtered stance, the std of |a| on a logarithmic axis, and the inputs with their "
+                  "thresholds; plausibility warnings shaded red.")
+            .arg(number(from, 1), number(to, 1));
+    const ParameterField* detector = findParameterField("detector");
+    return tr("Figure 5. Stance detector %3 from %1 s to %2 s: the condition C (statistic below threshold), the "
+              "stance, and the statistic on a logarithmic axis with its threshold; plausibility warnings shaded red.")
+        .arg(number(from, 1), number(to, 1),
+             QString::fromUtf8(detector->choiceLabels.at(static_cast<std::size_t>(params.detector))));
+}
+
+/// Every finding of the plausibility checks with its time span, or a line saying there are none.
+void writeWarnings(PageComposer& page, const Result& result)
+{
+    page.heading(tr("Plausibility warnings"));
+    if (result.warnings.empty()) {
+        page.paragraph(tr("The plausibility checks found nothing: the result looks like human gait."));
+        return;
+    }
+    page.paragraph(tr("Findings: %1. Each marks a span where the result is not what human gait gives, so the path "
+                      "needs care there.").arg(result.warnings.size()));
+    for (const PlausibilityWarning& w : result.warnings)
+        page.paragraph(tr("%1, %2: %3").arg(warningSpanText(w), warningLabel(w.kind), QString::fromStdString(w.message)));
 }
 
 void drawHeightOverTime(QPainter& painter, const Result& result, const QRectF& target)
@@ -372,18 +416,18 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
     signalPlots.setResult(c.result);
     page.figure(tr("Figure 4. Signals, stance shaded."), page.mm(120),
                 [&](const QRectF& r) { drawPlot(painter, signalPlots.plot(), r); });
+    // C1/C2/C3 has five lanes and three input rows to show; a statistic detector two lanes.
+    const bool paper = c.parameters.detectorKind() == DetectorKind::PaperC1C2C3;
     StanceFlagsPlot flags;
-    flags.resize(900, 600);
+    flags.resize(900, paper ? 880 : 570);
     flags.setRecording(c.recording);
     flags.setParameters(c.parameters);
     flags.setResult(c.result);
     flags.setInputsVisible(true);
     const auto [from, to] = representativeWindow(result);
     flags.setTimeRange(from, to);
-    page.figure(tr("Figure 5. Stance detector from %1 s to %2 s: conditions C1, C2, C3, their combination C, the "
-                   "median-filtered stance, and the inputs with their thresholds.")
-                    .arg(number(from, 1), number(to, 1)),
-                page.mm(120), [&](const QRectF& r) { drawPlot(painter, flags.plot(), r); });
+    page.figure(detectorFigureCaption(c.parameters, from, to), page.mm(paper ? 170 : 110),
+                [&](const QRectF& r) { drawPlot(painter, flags.plot(), r); });
     drawGaitFigures(page, painter, computeGaitStatistics(result, c.recording.get()));
 }
 
@@ -421,19 +465,22 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
     page.heading(tr("Summary"));
     page.table(summaryRows(computeGaitStatistics(*content.result, content.recording.get()), content.result->summary),
                {0.5, 0.5}, 9.0);
+    writeWarnings(page, *content.result);
+    page.ensureRoom(page.mm(130));  // the heading with its first figure, not alone at the foot of a page
     page.heading(tr("Figures"));
     drawFigures(page, painter, content);
     page.heading(tr("Parameters (* differs from the default)"));
     page.table(parameterRows(content.parameters), {0.2, 0.12, 0.12, 0.1, 0.46}, 7.5);
     page.heading(tr("Steps"));
     page.table(stepRows(*content.result), {0.08, 0.14, 0.12, 0.13, 0.13, 0.13, 0.13, 0.14}, 7.5);
-    page.heading(tr("Import notes and warnings"));
+    // What reading the file raised, apart from the plausibility of the result (its own section).
+    page.heading(tr("Import notes (reading the file)"));
     for (const std::string& note : content.recording->reference.notes)
         page.paragraph(QString::fromStdString(note));
     for (const std::string& warning : content.recording->warnings)
-        page.paragraph(tr("Warning: %1").arg(QString::fromStdString(warning)));
+        page.paragraph(tr("Import warning: %1").arg(QString::fromStdString(warning)));
     if (content.recording->warnings.empty())
-        page.paragraph(tr("The import raised no warnings."));
+        page.paragraph(tr("Reading the file raised no warnings."));
     painter.end();
     return {};
 }

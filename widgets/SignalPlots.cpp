@@ -1,6 +1,8 @@
 #include "SignalPlots.h"
 
 #include "TimeAxisNavigation.h"
+#include "TimeBands.h"
+#include "WarningOverlay.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -102,25 +104,6 @@ double channelValue(Channel channel, const ImuSample& sample, double firstHeight
     return 0.0;
 }
 
-/// Spans of consecutive set flags, each from its first sample to the sample after its last (as a
-/// step plot draws them), so a one-sample stance still has a width.
-std::vector<QCPRange> flaggedSpans(const std::vector<double>& times, const std::vector<std::uint8_t>& flags)
-{
-    std::vector<QCPRange> spans;
-    const std::size_t n = std::min(times.size(), flags.size());
-    for (std::size_t k = 0; k < n; ++k) {
-        if (!flags[k] || (k > 0 && flags[k - 1]))
-            continue;
-        std::size_t end = k;
-        while (end < n && flags[end])
-            ++end;
-        // A run up to the last sample reaches one sample interval past it, like any other run.
-        const double lastInterval_s = n >= 2 ? times[n - 1] - times[n - 2] : 0.0;
-        spans.emplace_back(times[k], end < n ? times[end] : times[n - 1] + lastInterval_s);
-    }
-    return spans;
-}
-
 QCPAxis* timeAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atBottom); }
 /// The hidden right axis spans 0..1 whatever the signal's range: the cursor uses it to run through
 /// the row's full height.
@@ -160,62 +143,6 @@ QCPItemStraightLine* addCursorLine(QCustomPlot* plot, QCPAxisRect* rect)
 
 }  // namespace
 
-/// Filled bands over time spans, the full height of a row. Drawn as pixel rectangles, merged where
-/// they touch: as a filled step curve (a QCPGraph with a brush) the stance phases of half an hour
-/// cost Qt's rasteriser about a second per row, since the polygon has thousands of edges.
-class SignalPlots::FlagBands : public QCPLayerable {
-public:
-    FlagBands(QCPAxisRect* rect, const QBrush& brush)
-        : QCPLayerable(rect->parentPlot(), QString(), rect), rect_(rect), brush_(brush)
-    {
-    }
-
-    void setSpans(std::vector<QCPRange> spans) { spans_ = std::move(spans); }
-    bool isEmpty() const { return spans_.empty(); }
-    bool contains(double time_s) const
-    {
-        const auto after = std::upper_bound(spans_.cbegin(), spans_.cend(), time_s,
-                                            [](double t, const QCPRange& span) { return t < span.lower; });
-        return after != spans_.cbegin() && time_s < (after - 1)->upper;
-    }
-
-protected:
-    void applyDefaultAntialiasingHint(QCPPainter* painter) const override { painter->setAntialiasing(false); }
-    QRect clipRect() const override { return rect_->rect(); }
-
-    void draw(QCPPainter* painter) override
-    {
-        const QCPAxis* axis = rect_->axis(QCPAxis::atBottom);
-        const QRect area = rect_->rect();
-        auto span = std::lower_bound(spans_.cbegin(), spans_.cend(), axis->range().lower,
-                                     [](const QCPRange& s, double t) { return s.upper < t; });
-        double left = 0.0, right = -1.0;  // the band being merged, in pixels; empty while right < left
-        for (; span != spans_.cend() && span->lower <= axis->range().upper; ++span) {
-            const double from = std::max(std::floor(axis->coordToPixel(span->lower)), area.left() - 1.0);
-            const double to = std::min(std::max(from + 1.0, std::ceil(axis->coordToPixel(span->upper))), area.right() + 1.0);
-            if (from <= right) {
-                right = std::max(right, to);
-                continue;
-            }
-            fillBand(painter, left, right);
-            left = from;
-            right = to;
-        }
-        fillBand(painter, left, right);
-    }
-
-private:
-    void fillBand(QCPPainter* painter, double left, double right) const
-    {
-        if (right > left)
-            painter->fillRect(QRectF(left, rect_->top(), right - left, rect_->height()), brush_);
-    }
-
-    QCPAxisRect* rect_;
-    QBrush brush_;
-    std::vector<QCPRange> spans_;  ///< sorted, disjoint
-};
-
 SignalPlots::SignalPlots(QWidget* parent)
     : QWidget(parent), plot_(new QCustomPlot(this)), toolBar_(new QToolBar(tr("Channels"), this))
 {
@@ -246,10 +173,18 @@ SignalPlots::~SignalPlots()
 {
     // Rows taken out of the layout would outlive it as bare children of the plot, whose QObject
     // clean-up runs after QCustomPlot's own; hand them back so it tears them down in its order.
-    for (RowParts& row : rows_) {
-        if (row.rect->layout() == nullptr)
-            plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, row.rect);
+    for (RowParts* row : allRows()) {
+        if (row->rect->layout() == nullptr)
+            plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, row->rect);
     }
+}
+
+std::vector<SignalPlots::RowParts*> SignalPlots::allRows()
+{
+    std::vector<RowParts*> all{&warningLane_};
+    for (RowParts& row : rows_)
+        all.push_back(&row);
+    return all;
 }
 
 void SignalPlots::createRows()
@@ -266,13 +201,27 @@ void SignalPlots::createRows()
         rows_[r].rect = rect;
         rows_[r].legend = addRowLegend(rect);
         rows_[r].cursor = addCursorLine(plot_, rect);
-        rows_[r].stance = new FlagBands(rect, kStanceBrush);
+        rows_[r].stance = new TimeBands(rect, kStanceBrush);
         rows_[r].stance->setLayer(kStanceLayer);
     }
     stanceLegendEntry_ = plot_->addGraph(timeAxis(rows_.front().rect), unitAxis(rows_.front().rect));
     stanceLegendEntry_->setName(tr("Stance"));
     stanceLegendEntry_->setPen(Qt::NoPen);
     stanceLegendEntry_->setBrush(kStanceBrush);
+    createWarningLane(alignedMargins);
+}
+
+void SignalPlots::createWarningLane(QCPMarginGroup* alignedMargins)
+{
+    warningLane_.rect = new QCPAxisRect(plot_);
+    plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, warningLane_.rect);  // arrangeRows() sorts
+    warningLane_.rect->setMarginGroup(QCP::msLeft | QCP::msRight, alignedMargins);
+    unitAxis(warningLane_.rect)->setRange(0.0, 1.0);
+    warningLane_.cursor = addCursorLine(plot_, warningLane_.rect);
+    warnings_ = new WarningOverlay(plot_);
+    for (const RowParts& row : rows_)
+        warnings_->addRow(row.rect);
+    warnings_->setLane(warningLane_.rect);
 }
 
 void SignalPlots::createGraphs()
@@ -320,6 +269,7 @@ void SignalPlots::wireInteractions()
     timeRows_ = new LinkedTimeRows(plot_);
     for (const RowParts& row : rows_)
         timeRows_->addRow(row.rect);
+    timeRows_->addRow(warningLane_.rect);
     connect(timeRows_, &LinkedTimeRows::rangeChanged, this, &SignalPlots::timeRangeChanged);
     connect(timeRows_, &LinkedTimeRows::clicked, this, [this](double time_s) {
         setTimeCursor(time_s);
@@ -370,7 +320,7 @@ void SignalPlots::setResult(std::shared_ptr<const Result> result)
 {
     result_ = std::move(result);
     plotStanceShading();
-    arrangeRows();  // the legend gains or loses its stance entry
+    arrangeRows();  // the legend gains or loses its stance entry, the warning lane comes or goes
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -380,6 +330,7 @@ void SignalPlots::plotStanceShading()
         result_ ? flaggedSpans(result_->time_s, result_->flags.stance) : std::vector<QCPRange>();
     for (RowParts& row : rows_)
         row.stance->setSpans(spans);
+    warnings_->setWarnings(result_ ? result_->warnings : std::vector<PlausibilityWarning>());
 }
 
 void SignalPlots::rescaleValueAxes()
@@ -412,13 +363,19 @@ bool SignalPlots::rowHasData(Row row) const
 void SignalPlots::arrangeRows()
 {
     QCPLayoutGrid* layout = plot_->plotLayout();
-    for (RowParts& row : rows_) {
-        if (row.rect->layout() != nullptr)
-            layout->take(row.rect);
+    for (RowParts* row : allRows()) {
+        if (row->rect->layout() != nullptr)
+            layout->take(row->rect);
     }
     layout->simplify();
     QCPAxisRect* bottom = nullptr;
     int shownCount = 0;
+    const bool laneShown = warnings_->hasWarnings();
+    warningLane_.rect->setVisible(laneShown);
+    warningLane_.cursor->setVisible(laneShown && cursorPlaced_);
+    timeAxis(warningLane_.rect)->setTickLabels(false);
+    if (laneShown)
+        layout->addElement(shownCount++, 0, warningLane_.rect);
     for (std::size_t r = 0; r < kRowCount; ++r) {
         bool anyChannelOn = false;
         for (std::size_t c = 0; c < kChannelCount; ++c)
@@ -430,7 +387,7 @@ void SignalPlots::arrangeRows()
         row.cursor->setVisible(shown && cursorPlaced_);
         timeAxis(row.rect)->setTickLabels(false);
         timeAxis(row.rect)->setLabel(QString());
-        refreshLegend(r, shown && shownCount == 0);  // one stance entry, in the top row
+        refreshLegend(r, shown && bottom == nullptr);  // one stance entry, in the top signal row
         if (!shown)
             continue;
         layout->addElement(shownCount++, 0, row.rect);
@@ -479,10 +436,10 @@ void SignalPlots::setTimeCursor(double time_s)
 {
     timeCursor_s_ = time_s;
     cursorPlaced_ = true;
-    for (RowParts& row : rows_) {
-        row.cursor->point1->setCoords(time_s, 0.0);
-        row.cursor->point2->setCoords(time_s, 1.0);
-        row.cursor->setVisible(row.rect->layout() != nullptr);
+    for (RowParts* row : allRows()) {
+        row->cursor->point1->setCoords(time_s, 0.0);
+        row->cursor->point2->setCoords(time_s, 1.0);
+        row->cursor->setVisible(row->rect->layout() != nullptr);
     }
     plot_->layer(kCursorLayer)->replot();
 }

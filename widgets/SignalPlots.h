@@ -7,10 +7,12 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 class QAction;
 class QCheckBox;
 class QCPLegend;
+class QCPMarginGroup;
 class QCPAxisRect;
 class QCPGraph;
 class QCPItemStraightLine;
@@ -23,10 +25,13 @@ class QToolBar;
 namespace footpath {
 
 class LinkedTimeRows;
+class TimeBands;
+class WarningOverlay;
 
 /// The recording's raw signals in stacked rows that share one time axis: acceleration, angular
 /// rate, magnetic field and pressure/barometric height (the last two only when recorded). Stance
-/// phases of a result are shaded behind every row; a time cursor runs through all rows.
+/// phases of a result are shaded behind every row, and its plausibility warnings in red with a
+/// lane of labelled bars above the rows; a time cursor runs through all rows.
 ///
 /// Navigation: mouse wheel zooms and dragging pans the time axis only; +/- zoom, Left/Right pan,
 /// Home shows the whole recording; a click places the time cursor and emits timeCursorMoved.
@@ -49,7 +54,7 @@ public:
 
     /// Plots every sample; the previous result's shading is dropped (it belonged to the old recording).
     void setRecording(std::shared_ptr<const Recording> recording);
-    /// Shades result->flags.stance; nullptr removes the shading.
+    /// Shades result->flags.stance and the spans of result->warnings; nullptr removes the shading.
     void setResult(std::shared_ptr<const Result> result);
     void setTimeCursor(double time_s);
     /// Shows [from_s, to_s] on the shared time axis; emits timeRangeChanged if that is a change.
@@ -70,7 +75,11 @@ public:
     /// Whether time_s lies in a shaded stance span (the span from a stance's first sample to the
     /// sample after its last).
     bool isStanceShaded(double time_s) const;
+    /// The result's plausibility warnings as bands, labels and tool tips.
+    const WarningOverlay& warningOverlay() const { return *warnings_; }
     QCPItemStraightLine* cursorLine(Row row) const;
+    /// The lane of labelled warning bars above the rows; in the layout while there are warnings.
+    QCPAxisRect* warningLane() const { return warningLane_.rect; }
     /// Draws the plots (without the channel toolbar) into target as vector commands, so a PDF
     /// painter keeps them sharp.
     void renderTo(QPainter& painter, const QRect& target);
@@ -85,16 +94,16 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    class FlagBands;
     struct RowParts {
         QCPAxisRect* rect = nullptr;
-        FlagBands* stance = nullptr;
+        TimeBands* stance = nullptr;
         QCPItemStraightLine* cursor = nullptr;
         QCPLegend* legend = nullptr;
         QAction* group = nullptr;  ///< the toolbar's group (label, check boxes): hidden without data
     };
 
     void createRows();
+    void createWarningLane(QCPMarginGroup* alignedMargins);
     void createGraphs();
     void createToolBar();
     void wireInteractions();
@@ -104,12 +113,15 @@ private:
     void arrangeRows();
     void refreshLegend(std::size_t row, bool withStance);
     bool rowHasData(Row row) const;
+    std::vector<RowParts*> allRows();  ///< the warning lane and the signal rows
 
     QCustomPlot* plot_;
     QToolBar* toolBar_;
     std::array<RowParts, kRowCount> rows_;
     std::array<QCPGraph*, kChannelCount> graphs_{};
     QCPGraph* stanceLegendEntry_ = nullptr;  ///< draws nothing; gives the bands a legend entry
+    RowParts warningLane_;  ///< above the rows while the result has warnings
+    WarningOverlay* warnings_ = nullptr;
     std::array<QCheckBox*, kChannelCount> channelBoxes_{};
     std::array<bool, kChannelCount> channelVisible_{};
     std::shared_ptr<const Recording> recording_;

@@ -1,6 +1,8 @@
 #include "StanceFlagsPlot.h"
 
 #include "TimeAxisNavigation.h"
+#include "TimeBands.h"
+#include "WarningOverlay.h"
 
 #include "detect/StanceDetector.h"
 
@@ -13,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 namespace footpath {
 
@@ -27,8 +31,13 @@ constexpr double kLaneMargin = 0.3;    // air above the top lane and below the b
 constexpr double kBandHeadroom = 1.5;  // |a| row: this many band widths above and below the band
 constexpr double kMinimumAccBand_mps2 = 0.5;  // framing for (invalid) parameters with no band
 constexpr double kThresholdHeadroom = 3.0;    // std and |w| rows: from 0 to this many thresholds
+constexpr double kStatisticHeadroom_dec = 0.3;  // statistic row: air above and below the data, in decades
+constexpr double kMinimumStatisticSpan_dec = 2.0;
 const QString kCursorLayer = QStringLiteral("cursor");
+const QString kStanceLayer = QStringLiteral("stance");
 const QColor kCursorColour(170, 0, 0);
+const QColor kStanceBrush(250, 200, 110, 90);  // SignalPlots' light amber
+const QColor kThresholdColour(200, 40, 40);
 
 struct LaneInfo {
     const char* label;  // translated in the StanceFlagsPlot context
@@ -48,6 +57,19 @@ const std::array<LaneInfo, StanceFlagsPlot::kLaneCount>& laneInfos()
     }};
     return infos;
 }
+
+// For the statistic detectors C1 = C2 = C3 = C: one statistic, one condition.
+const char* const kStatisticConditionLabel = QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "C: statistic\n< threshold");
+const char* const kStatisticStanceLabel = QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "Stance");
+
+/// The statistic row's axis label for each detector (DetectorKind order).
+constexpr std::array<const char*, 5> kStatisticAxisLabels = {{
+    QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "std of |a|\n(m/s²)"),
+    QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "SHOE\nstatistic"),
+    QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "ARED\nstatistic"),
+    QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "AMVD\nstatistic"),
+    QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "MBGTD\nstatistic"),
+}};
 
 struct InputInfo {
     const char* name;
@@ -86,7 +108,10 @@ const std::array<ThresholdInfo, StanceFlagsPlot::kThresholdCount>& thresholdInfo
 std::size_t slot(Lane lane) { return static_cast<std::size_t>(lane); }
 std::size_t slot(Input input) { return static_cast<std::size_t>(input); }
 std::size_t slot(Threshold threshold) { return static_cast<std::size_t>(threshold); }
-std::size_t rowOf(Input input) { return 1 + slot(input); }  // row 0 holds the lanes
+constexpr std::size_t kWarningRow = 0;
+constexpr std::size_t kLanesRow = 1;
+constexpr std::size_t kStatisticRow = 2;
+std::size_t rowOf(Input input) { return 3 + slot(input); }  // below the lanes and the statistic
 
 const std::vector<std::uint8_t>& laneFlags(const StanceFlags& flags, Lane lane)
 {
@@ -137,80 +162,31 @@ QCPItemStraightLine* addCursorLine(QCustomPlot* plot, QCPAxisRect* rect)
 
 QVector<double> toQVector(const std::vector<double>& values) { return QVector<double>(values.begin(), values.end()); }
 
-/// Spans of consecutive set flags, each from its first sample to the sample after its last (as a
-/// step plot draws them), so a one-sample flag still has a width.
-std::vector<QCPRange> flaggedSpans(const std::vector<double>& times, const std::vector<std::uint8_t>& flags)
+/// The decades the finite values of both series span (log10 values), or nothing if none is finite.
+std::optional<QCPRange> finiteSpan(const std::vector<float>& a, const std::vector<float>& b)
 {
-    std::vector<QCPRange> spans;
-    const std::size_t n = std::min(times.size(), flags.size());
-    for (std::size_t k = 0; k < n; ++k) {
-        if (!flags[k] || (k > 0 && flags[k - 1]))
-            continue;
-        std::size_t end = k;
-        while (end < n && flags[end])
-            ++end;
-        // A run up to the last sample reaches one sample interval past it, like any other run.
-        const double lastInterval_s = n >= 2 ? times[n - 1] - times[n - 2] : 0.0;
-        spans.emplace_back(times[k], end < n ? times[end] : times[n - 1] + lastInterval_s);
-    }
-    return spans;
+    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+    for (const std::vector<float>* series : {&a, &b})
+        for (const float value : *series)
+            if (std::isfinite(value)) {
+                lowest = std::min(lowest, static_cast<double>(value));
+                highest = std::max(highest, static_cast<double>(value));
+            }
+    if (lowest > highest)
+        return std::nullopt;
+    return QCPRange(lowest, highest);
+}
+
+/// A log10 value as the log axis plots it; -inf (a statistic of exactly 0) sits on the axis' floor
+/// rather than leaving a gap, +inf on its ceiling.
+double plottedValue(float logValue, const QCPRange& decades)
+{
+    if (std::isnan(logValue))
+        return std::numeric_limits<double>::quiet_NaN();
+    return std::pow(10.0, std::clamp(static_cast<double>(logValue), decades.lower, decades.upper));
 }
 
 }  // namespace
-
-/// The filled part of a lane: rectangles between two levels over the spans where the flag is set,
-/// merged where they touch in pixels. As a filled step curve (a QCPGraph with a brush) half an
-/// hour of flags costs Qt's rasteriser about a second per lane: the polygon has thousands of edges.
-class StanceFlagsPlot::LaneFill : public QCPLayerable {
-public:
-    LaneFill(QCPAxisRect* rect, double bottom, double top, const QBrush& brush)
-        : QCPLayerable(rect->parentPlot(), QString(), rect), rect_(rect), bottom_(bottom), top_(top), brush_(brush)
-    {
-    }
-
-    void setSpans(std::vector<QCPRange> spans) { spans_ = std::move(spans); }
-
-protected:
-    void applyDefaultAntialiasingHint(QCPPainter* painter) const override { painter->setAntialiasing(false); }
-    QRect clipRect() const override { return rect_->rect(); }
-
-    void draw(QCPPainter* painter) override
-    {
-        const QCPAxis* axis = rect_->axis(QCPAxis::atBottom);
-        const QRect area = rect_->rect();
-        auto span = std::lower_bound(spans_.cbegin(), spans_.cend(), axis->range().lower,
-                                     [](const QCPRange& s, double t) { return s.upper < t; });
-        double left = 0.0, right = -1.0;  // the band being merged, in pixels; empty while right < left
-        for (; span != spans_.cend() && span->lower <= axis->range().upper; ++span) {
-            const double from = std::max(std::floor(axis->coordToPixel(span->lower)), area.left() - 1.0);
-            const double to = std::min(std::max(from + 1.0, std::ceil(axis->coordToPixel(span->upper))), area.right() + 1.0);
-            if (from <= right) {
-                right = std::max(right, to);
-                continue;
-            }
-            fillBand(painter, left, right);
-            left = from;
-            right = to;
-        }
-        fillBand(painter, left, right);
-    }
-
-private:
-    void fillBand(QCPPainter* painter, double left, double right) const
-    {
-        if (right <= left)
-            return;
-        const QCPAxis* levels = rect_->axis(QCPAxis::atLeft);
-        const double top = levels->coordToPixel(top_);
-        painter->fillRect(QRectF(left, top, right - left, levels->coordToPixel(bottom_) - top), brush_);
-    }
-
-    QCPAxisRect* rect_;
-    double bottom_;
-    double top_;
-    QBrush brush_;
-    std::vector<QCPRange> spans_;  ///< sorted, disjoint
-};
 
 StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
     : QWidget(parent), plot_(new QCustomPlot(this)), toolBar_(new QToolBar(tr("Detector"), this)),
@@ -219,7 +195,6 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
     setFocusPolicy(Qt::StrongFocus);  // keys arrive here; the plot passes clicks' focus up
     inputsAction_->setObjectName(QStringLiteral("showDetectorInputs"));
     inputsAction_->setCheckable(true);
-    inputsAction_->setToolTip(tr("Plot |a|, its local standard deviation and |ω| with the detector's thresholds"));
     toolBar_->setMovable(false);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -230,6 +205,7 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
     plot_->setAutoAddPlottableToLegend(false);
     plot_->setPlottingHint(QCP::phFastPolylines);  // solid pens wider than 1 px: segments, not a stroked path
     plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    plot_->addLayer(kStanceLayer, plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
     plot_->addLayer(kCursorLayer, plot_->layer(QStringLiteral("legend")), QCustomPlot::limBelow);
     // Its own paint buffer: moving the cursor redraws one line per row, not the curves.
     plot_->layer(kCursorLayer)->setMode(QCPLayer::lmBuffered);
@@ -244,10 +220,16 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
         row.cursor = addCursorLine(plot_, row.rect);
     }
     createLanesRow();
+    createStatisticRow();
     createInputRows();
+    warnings_ = new WarningOverlay(plot_);
+    for (std::size_t r = 0; r < kRowCount; ++r)
+        if (r != kWarningRow)
+            warnings_->addRow(rows_[r].rect);
+    warnings_->setLane(rows_[kWarningRow].rect);
     rescaleInputAxes();
     wireInteractions();
-    arrangeRows();
+    setParameters(params_);  // names, lanes and rows of the default detector
 }
 
 StanceFlagsPlot::~StanceFlagsPlot()
@@ -268,20 +250,16 @@ double StanceFlagsPlot::laneLevel(Lane lane, bool flag)
 
 void StanceFlagsPlot::createLanesRow()
 {
-    QCPAxisRect* rect = rows_.front().rect;
-    auto ticker = QSharedPointer<QCPAxisTickerText>::create();
-    for (std::size_t l = 0; l < kLaneCount; ++l)
-        ticker->addTick(laneLevel(static_cast<Lane>(l), false) + 0.5, tr(laneInfos()[l].label));
+    QCPAxisRect* rect = rows_[kLanesRow].rect;
     QCPAxis* axis = valueAxis(rect);
-    axis->setTicker(ticker);
     axis->setTickLength(0, 0);
     axis->setSubTicks(false);
     axis->grid()->setVisible(false);  // grid lines would run through the middle of every lane
-    axis->setRange(laneLevel(Lane::Stance, false) - kLaneMargin, laneLevel(Lane::C1, true) + kLaneMargin);
     for (std::size_t l = 0; l < kLaneCount; ++l) {
         const Lane lane = static_cast<Lane>(l);
         // Created before the outline, so drawn beneath it on the same layer.
-        laneFills_[l] = new LaneFill(rect, laneLevel(lane, false), laneLevel(lane, true), laneInfos()[l].fill);
+        laneFills_[l] = new TimeBands(rect, laneInfos()[l].fill);
+        laneFills_[l]->setLevels(laneLevel(lane, false), laneLevel(lane, true));
         laneFills_[l]->setLayer(QStringLiteral("main"));
         lanes_[l] = plot_->addGraph(timeAxis(rect), axis);
         lanes_[l]->setName(tr(laneInfos()[l].label));
@@ -289,6 +267,58 @@ void StanceFlagsPlot::createLanesRow()
         lanes_[l]->setPen(QPen(QColor(40, 40, 40), 1.0));
         lanes_[l]->setSelectable(QCP::stNone);
     }
+}
+
+void StanceFlagsPlot::labelLanes()
+{
+    // A statistic detector has one condition: C1, C2 and C3 would repeat C, so only C and the
+    // stance lane are shown, and named for what they are.
+    const bool paper = usesPaperDetector();
+    auto ticker = QSharedPointer<QCPAxisTickerText>::create();
+    for (std::size_t l = 0; l < kLaneCount; ++l) {
+        const Lane lane = static_cast<Lane>(l);
+        const bool shown = paper || lane == Lane::C || lane == Lane::Stance;
+        lanes_[l]->setVisible(shown);
+        laneFills_[l]->setVisible(shown);
+        if (!shown)
+            continue;
+        const char* label = paper ? laneInfos()[l].label
+                                  : (lane == Lane::C ? kStatisticConditionLabel : kStatisticStanceLabel);
+        ticker->addTick(laneLevel(lane, false) + 0.5, tr(label));
+    }
+    QCPAxis* axis = valueAxis(rows_[kLanesRow].rect);
+    axis->setTicker(ticker);
+    axis->setRange(laneLevel(Lane::Stance, false) - kLaneMargin,
+                   laneLevel(paper ? Lane::C1 : Lane::C, true) + kLaneMargin);
+}
+
+void StanceFlagsPlot::createStatisticRow()
+{
+    QCPAxisRect* rect = rows_[kStatisticRow].rect;
+    QCPAxis* axis = valueAxis(rect);
+    axis->setScaleType(QCPAxis::stLogarithmic);
+    auto ticker = QSharedPointer<QCPAxisTickerLog>::create();
+    ticker->setLogBase(10.0);
+    ticker->setSubTickCount(0);  // nine sub-ticks per decade would crowd a row spanning many decades
+    axis->setTicker(ticker);
+    axis->setNumberFormat(QStringLiteral("eb"));  // 10 with a superscript exponent
+    axis->setNumberPrecision(0);
+    statisticStance_ = new TimeBands(rect, kStanceBrush);
+    statisticStance_->setLayer(kStanceLayer);
+    statistic_ = plot_->addGraph(timeAxis(rect), axis);
+    statistic_->setPen(QPen(QColor(20, 20, 20), 1.0));
+    statistic_->setSelectable(QCP::stNone);
+    statisticThreshold_ = plot_->addGraph(timeAxis(rect), axis);
+    statisticThreshold_->setLineStyle(QCPGraph::lsStepLeft);
+    statisticThreshold_->setPen(QPen(kThresholdColour, 1.5));
+    statisticThreshold_->setSelectable(QCP::stNone);
+    stanceLegendEntry_ = plot_->addGraph(timeAxis(rect), unitAxis(rect));
+    stanceLegendEntry_->setName(tr("Stance"));
+    stanceLegendEntry_->setPen(Qt::NoPen);
+    stanceLegendEntry_->setBrush(kStanceBrush);
+    QCPLegend* legend = addRowLegend(rect);  // the axis names the curve; the legend the rest
+    for (QCPGraph* graph : {statisticThreshold_, stanceLegendEntry_})
+        graph->addToLegend(legend);
 }
 
 void StanceFlagsPlot::createInputRows()
@@ -327,6 +357,11 @@ void StanceFlagsPlot::wireInteractions()
     connect(inputsAction_, &QAction::toggled, this, &StanceFlagsPlot::setInputsVisible);
 }
 
+bool StanceFlagsPlot::usesPaperDetector() const
+{
+    return params_.detectorKind() == DetectorKind::PaperC1C2C3;
+}
+
 void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
 {
     result_.reset();
@@ -346,6 +381,8 @@ void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
     plotAccStdDev();
     plotThresholds();
     plotLanes();
+    plotStatistic();
+    arrangeRows();
     showAll();
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
@@ -354,6 +391,8 @@ void StanceFlagsPlot::setResult(std::shared_ptr<const Result> result)
 {
     result_ = std::move(result);
     plotLanes();
+    plotStatistic();
+    arrangeRows();  // the warning lane comes or goes
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -365,6 +404,14 @@ void StanceFlagsPlot::setParameters(const Parameters& params)
         plotAccStdDev();
     plotThresholds();
     rescaleInputAxes();
+    labelLanes();
+    nameStatistic();
+    const bool paper = usesPaperDetector();
+    inputsAction_->setEnabled(paper);
+    inputsAction_->setToolTip(paper ? tr("Plot |a|, its local standard deviation and |ω| with the detector's thresholds")
+                                    : tr("The inputs of the C1/C2/C3 detector; the chosen detector decides on its "
+                                         "statistic, shown below the lanes"));
+    arrangeRows();
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -389,6 +436,54 @@ void StanceFlagsPlot::plotLanes()
         lanes_[l]->setData(keys, values, true);
         laneFills_[l]->setSpans(flaggedSpans(times, flags));
     }
+    statisticStance_->setSpans(result_ ? flaggedSpans(times, result_->flags.stance) : std::vector<QCPRange>());
+    stanceLegendEntry_->setVisible(!statisticStance_->isEmpty());
+    warnings_->setWarnings(result_ ? result_->warnings : std::vector<PlausibilityWarning>());
+}
+
+void StanceFlagsPlot::plotStatistic()
+{
+    statistic_->data()->clear();
+    statisticThreshold_->data()->clear();
+    if (!result_)
+        return;
+    const StanceFlags& flags = result_->flags;
+    const std::optional<QCPRange> span = finiteSpan(flags.logStatistic, flags.logThreshold);
+    if (!span)
+        return;
+    // Whole decades around the data, so the axis follows this recording and detector.
+    const double lowest = std::floor(span->lower - kStatisticHeadroom_dec);
+    const double highest = std::max(std::ceil(span->upper + kStatisticHeadroom_dec), lowest + kMinimumStatisticSpan_dec);
+    const QCPRange decades(lowest, highest);
+    const std::vector<double>& times = result_->time_s;
+    QVector<double> keys, statistic, thresholdKeys, threshold;
+    const std::size_t n = std::min({times.size(), flags.logStatistic.size(), flags.logThreshold.size()});
+    for (std::size_t k = 0; k < n; ++k) {
+        keys << times[k];
+        statistic << plottedValue(flags.logStatistic[k], decades);
+        // A fixed threshold is two points; an adaptive one a point wherever it moves.
+        if (k == 0 || k + 1 == n || flags.logThreshold[k] != flags.logThreshold[k - 1]) {
+            thresholdKeys << times[k];
+            threshold << plottedValue(flags.logThreshold[k], decades);
+        }
+    }
+    statistic_->setData(keys, statistic, true);
+    statisticThreshold_->setData(thresholdKeys, threshold, true);
+    valueAxis(statisticRect())->setRange(std::pow(10.0, lowest), std::pow(10.0, highest));
+}
+
+void StanceFlagsPlot::nameStatistic()
+{
+    const auto kind = static_cast<std::size_t>(params_.detector);
+    const char* label = kind < kStatisticAxisLabels.size() ? kStatisticAxisLabels[kind] : kStatisticAxisLabels[1];
+    valueAxis(statisticRect())->setLabel(tr(label));
+    statistic_->setName(tr(label).replace(QLatin1Char('\n'), QLatin1Char(' ')));
+    if (usesPaperDetector())
+        statisticThreshold_->setName(tr("max std = %1 m/s²").arg(params_.acc_std_max_mps2));
+    else if (params_.zv_adaptive)
+        statisticThreshold_->setName(tr("threshold (adaptive)"));
+    else
+        statisticThreshold_->setName(tr("threshold = 10^%1").arg(params_.zv_log_threshold));
 }
 
 void StanceFlagsPlot::plotAccStdDev()
@@ -442,29 +537,42 @@ void StanceFlagsPlot::arrangeRows()
             layout->take(row.rect);
     }
     layout->simplify();
+    const bool inputsShown = inputsVisible_ && usesPaperDetector();
     int shownCount = 0;
+    QCPAxisRect* bottom = nullptr;
     for (std::size_t r = 0; r < kRowCount; ++r) {
         RowParts& row = rows_[r];
-        const bool shown = r == 0 || inputsVisible_;
+        const bool shown = r == kWarningRow ? warnings_->hasWarnings() : (r == kLanesRow || r == kStatisticRow || inputsShown);
         // Out of the layout a row keeps its old geometry: hide it, or it would paint over the others.
         row.rect->setVisible(shown);
         row.cursor->setVisible(shown && cursorPlaced_);
         timeAxis(row.rect)->setTickLabels(false);
         timeAxis(row.rect)->setLabel(QString());
-        if (shown)
-            layout->addElement(shownCount++, 0, row.rect);
+        if (!shown)
+            continue;
+        layout->addElement(shownCount, 0, row.rect);
+        // Five lanes need more height than one curve, two lanes less; the warning lane has its own.
+        if (r == kLanesRow)
+            layout->setRowStretchFactor(shownCount, usesPaperDetector() ? 1.3 : 0.6);
+        else if (r == kStatisticRow)
+            layout->setRowStretchFactor(shownCount, 1.8);
+        ++shownCount;
+        bottom = row.rect;
     }
-    layout->setRowStretchFactor(0, 1.5);  // five lanes need more height than one curve
-    QCPAxisRect* bottom = inputsVisible_ ? rows_.back().rect : rows_.front().rect;
     timeAxis(bottom)->setTickLabels(true);  // one time scale at the foot of the stack is enough
     timeAxis(bottom)->setLabel(tr("Time (s)"));
 }
 
-QCPAxisRect* StanceFlagsPlot::lanesRect() const { return rows_.front().rect; }
+bool StanceFlagsPlot::isLaneShown(Lane lane) const { return lanes_[slot(lane)]->visible(); }
+bool StanceFlagsPlot::isInputRowShown(Input input) const { return inputRect(input)->layout() != nullptr; }
+QCPAxisRect* StanceFlagsPlot::lanesRect() const { return rows_[kLanesRow].rect; }
+QCPAxisRect* StanceFlagsPlot::statisticRect() const { return rows_[kStatisticRow].rect; }
+QCPAxisRect* StanceFlagsPlot::warningLane() const { return rows_[kWarningRow].rect; }
 QCPAxisRect* StanceFlagsPlot::inputRect(Input input) const { return rows_[rowOf(input)].rect; }
 QCPGraph* StanceFlagsPlot::laneGraph(Lane lane) const { return lanes_[slot(lane)]; }
 QCPGraph* StanceFlagsPlot::inputGraph(Input input) const { return inputs_[slot(input)]; }
 QCPGraph* StanceFlagsPlot::thresholdGraph(Threshold threshold) const { return thresholds_[slot(threshold)]; }
+bool StanceFlagsPlot::isStatisticStanceShaded(double time_s) const { return statisticStance_->contains(time_s); }
 QCPRange StanceFlagsPlot::timeRange() const { return timeRows_->range(); }
 
 void StanceFlagsPlot::setTimeCursor(double time_s)

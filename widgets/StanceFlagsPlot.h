@@ -23,10 +23,20 @@ class QToolBar;
 namespace footpath {
 
 class LinkedTimeRows;
+class TimeBands;
+class WarningOverlay;
 
-/// The stance detector at work: its flags C1, C2, C3, C and the median-filtered stance as 0/1 lanes
-/// and, on demand, its inputs (|a|, the centred std of |a|, |w|) with the thresholds they are
-/// compared against, so a user sees which condition failed where.
+/// The stance detector at work, following the chosen detector (Parameters::detector):
+///  - its flags as 0/1 lanes: C1, C2, C3, C and the median-filtered stance for the paper's
+///    C1/C2/C3 detector; C (statistic below threshold) and stance for the statistic detectors
+///    (SHOE, ARED, AMVD, MBGTD), which have one condition, so C1-C3 would only repeat C;
+///  - its test statistic (StanceFlags::logStatistic) on a logarithmic axis with the threshold it
+///    was compared with at each sample (a moving line for the adaptive threshold) and the stance
+///    shaded, so a user sees how far from stance each moment was;
+///  - for C1/C2/C3, on demand, its inputs (|a|, the centred std of |a|, |w|) with their thresholds,
+///    so a user sees which condition failed where;
+///  - the result's plausibility warnings as bands with labels and tool tips (a missed stance names
+///    what blocked the detector).
 ///
 /// Navigation is the same as in SignalPlots (wheel/drag on time, +/-, Left/Right, Home, click for
 /// the cursor); setTimeRange/timeRangeChanged let MainWindow link the two time axes. Setters
@@ -50,9 +60,10 @@ public:
     /// Plots the detector inputs (copied: the recording is not kept); the lanes are cleared, since
     /// they belonged to the old recording.
     void setRecording(std::shared_ptr<const Recording> recording);
-    /// Draws result->flags as lanes; nullptr clears them.
+    /// Draws result->flags as lanes and statistic, and result->warnings; nullptr clears them.
     void setResult(std::shared_ptr<const Result> result);
-    /// Moves the threshold lines and recomputes the std of |a| for the new window.
+    /// Moves the threshold lines, recomputes the std of |a| for the new window, and shows the lanes
+    /// and rows of the chosen detector.
     void setParameters(const Parameters& params);
     void setTimeCursor(double time_s);
     /// Shows [from_s, to_s]; emits timeRangeChanged if that is a change.
@@ -61,7 +72,10 @@ public:
     /// Time range of the whole recording (what Home shows).
     void showAll();
 
+    /// Whether the user asked for the inputs; they are shown only for the C1/C2/C3 detector.
     bool inputsVisible() const { return inputsVisible_; }
+    bool isLaneShown(Lane lane) const;
+    bool isInputRowShown(Input input) const;
     double timeCursor() const { return timeCursor_s_; }
     QCPRange timeRange() const;
     /// The plotted height of a lane for a flag; lanes are step curves between these two levels.
@@ -74,6 +88,15 @@ public:
     QCPGraph* laneGraph(Lane lane) const;
     QCPGraph* inputGraph(Input input) const;
     QCPGraph* thresholdGraph(Threshold threshold) const;
+    QCPAxisRect* statisticRect() const;
+    /// The lane of labelled warning bars above the rows; in the layout while there are warnings.
+    QCPAxisRect* warningLane() const;
+    /// 10^logStatistic per sample (the log axis shows the logarithm).
+    QCPGraph* statisticGraph() const { return statistic_; }
+    /// 10^logThreshold where it changes, as a step curve.
+    QCPGraph* statisticThresholdGraph() const { return statisticThreshold_; }
+    bool isStatisticStanceShaded(double time_s) const;
+    const WarningOverlay& warningOverlay() const { return *warnings_; }
     /// Draws the plots (without the toolbar) into target as vector commands.
     void renderTo(QPainter& painter, const QRect& target);
 
@@ -87,17 +110,22 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    static constexpr std::size_t kRowCount = 1 + kInputCount;  ///< the lanes, then one per input
-    class LaneFill;
+    static constexpr std::size_t kRowCount = 3 + kInputCount;  ///< warnings, lanes, statistic, one per input
     struct RowParts {
         QCPAxisRect* rect = nullptr;
         QCPItemStraightLine* cursor = nullptr;
     };
 
     void createLanesRow();
+    void labelLanes();
+    void createStatisticRow();
     void createInputRows();
     void wireInteractions();
+    bool usesPaperDetector() const;
     void plotLanes();
+    void plotStatistic();
+    void rescaleStatisticAxis();
+    void nameStatistic();
     void plotAccStdDev();
     void plotThresholds();
     void rescaleInputAxes();
@@ -108,9 +136,14 @@ private:
     QAction* inputsAction_;
     std::array<RowParts, kRowCount> rows_;
     std::array<QCPGraph*, kLaneCount> lanes_{};
-    std::array<LaneFill*, kLaneCount> laneFills_{};  ///< under each lane's outline while its flag is set
+    std::array<TimeBands*, kLaneCount> laneFills_{};  ///< under each lane's outline while its flag is set
     std::array<QCPGraph*, kInputCount> inputs_{};
     std::array<QCPGraph*, kThresholdCount> thresholds_{};
+    QCPGraph* statistic_ = nullptr;
+    QCPGraph* statisticThreshold_ = nullptr;
+    QCPGraph* stanceLegendEntry_ = nullptr;  ///< draws nothing; gives the statistic row's stance shading an entry
+    TimeBands* statisticStance_ = nullptr;
+    WarningOverlay* warnings_ = nullptr;
     std::shared_ptr<const Result> result_;
     Parameters params_;
     std::vector<double> times_s_;  ///< the recording's, kept to recompute the std on a new window

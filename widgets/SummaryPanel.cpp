@@ -1,6 +1,9 @@
 #include "SummaryPanel.h"
 
+#include "WarningOverlay.h"
+
 #include <QAbstractTableModel>
+#include <QApplication>
 #include <QBarSeries>
 #include <QBarSet>
 #include <QCategoryAxis>
@@ -16,6 +19,7 @@
 #include <QScrollBar>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
+#include <QStyle>
 #include <QTabWidget>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -212,8 +216,15 @@ public:
     {
         beginResetModel();
         result_ = std::move(result);
+        stepWarnings_.clear();
+        for (std::size_t step = 0; result_ && step < result_->steps.size(); ++step)
+            stepWarnings_.push_back(warningsOfStep(*result_, step));
         endResetModel();
     }
+
+    /// Whether a warning's span overlaps the stride that ends with this step.
+    bool isMarked(int row) const { return !stepWarnings_.at(static_cast<std::size_t>(row)).empty(); }
+    double stanceStart(int row) const { return result_->steps.at(static_cast<std::size_t>(row)).stanceStart_s; }
 
     int rowCount(const QModelIndex& parent = {}) const override
     {
@@ -227,6 +238,8 @@ public:
             return {};
         if (role == Qt::TextAlignmentRole)
             return QVariant(Qt::AlignRight | Qt::AlignVCenter);
+        if (const QVariant marking = warningMarking(index, role); marking.isValid())
+            return marking;
         const double value = valueAt(index.row(), index.column());
         if (role == kSortRole)
             return value;
@@ -248,6 +261,22 @@ public:
     }
 
 private:
+    /// A marked row: light red, a warning icon before the step number, the messages as tool tip.
+    QVariant warningMarking(const QModelIndex& index, int role) const
+    {
+        if (!isMarked(index.row()))
+            return {};
+        switch (role) {
+        case Qt::BackgroundRole: return QColor(255, 222, 212);
+        case Qt::ForegroundRole: return QColor(Qt::black);  // readable on the light red in a dark theme too
+        case Qt::ToolTipRole:
+            return warningsToolTip(result_->warnings, stepWarnings_[static_cast<std::size_t>(index.row())]);
+        case Qt::DecorationRole:
+            return index.column() == Number ? QApplication::style()->standardIcon(QStyle::SP_MessageBoxWarning) : QVariant();
+        default: return {};
+        }
+    }
+
     double valueAt(int row, int column) const
     {
         const Step& step = result_->steps[static_cast<std::size_t>(row)];
@@ -303,6 +332,7 @@ private:
     }
 
     std::shared_ptr<const Result> result_;
+    std::vector<std::vector<std::size_t>> stepWarnings_;  ///< per step: indices into result_->warnings
 };
 
 // --- Construction -------------------------------------------------------------------------------
@@ -363,6 +393,7 @@ QWidget* SummaryPanel::createFigures()
     auto* content = new QWidget;
     auto* layout = new QVBoxLayout(content);
     layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(createWarnings());
     layout->addWidget(walk);
     layout->addWidget(referenceGroup_);
     layout->addStretch(1);
@@ -373,6 +404,42 @@ QWidget* SummaryPanel::createFigures()
     scroll->setWidget(content);
     scroll->setMinimumWidth(content->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
     return scroll;
+}
+
+QWidget* SummaryPanel::createWarnings()
+{
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    noWarnings_ = new QLabel(tr("No plausibility warnings"));
+    noWarnings_->setObjectName(QStringLiteral("noWarnings"));
+    noWarnings_->setForegroundRole(QPalette::PlaceholderText);
+    layout->addWidget(noWarnings_);
+
+    warningsGroup_ = new QGroupBox;
+    warningsGroup_->setObjectName(QStringLiteral("warnings"));
+    // Light red, so the findings are seen before the figures they put in doubt.
+    warningsGroup_->setStyleSheet(QStringLiteral("QGroupBox#warnings { background: #fff1ec; border: 1px solid #e3a08c; "
+                                                 "border-radius: 3px; } QGroupBox#warnings QLabel { color: #3a0d05; }"));
+    auto* groupLayout = new QVBoxLayout(warningsGroup_);
+    auto* header = new QHBoxLayout;
+    auto* icon = new QLabel;
+    const int iconSize = style()->pixelMetric(QStyle::PM_SmallIconSize);
+    icon->setPixmap(style()->standardIcon(QStyle::SP_MessageBoxWarning).pixmap(iconSize, iconSize));
+    warningsTitle_ = new QLabel;
+    warningsTitle_->setObjectName(QStringLiteral("warningsTitle"));
+    QFont bold = warningsTitle_->font();
+    bold.setBold(true);
+    warningsTitle_->setFont(bold);
+    header->addWidget(icon);
+    header->addWidget(warningsTitle_, 1);
+    groupLayout->addLayout(header);
+    warningList_ = new QWidget;
+    auto* listLayout = new QVBoxLayout(warningList_);
+    listLayout->setContentsMargins(0, 0, 0, 0);
+    groupLayout->addWidget(warningList_);
+    layout->addWidget(warningsGroup_);
+    return box;
 }
 
 QGroupBox* SummaryPanel::createFigureGroup(const QString& title, const std::vector<std::pair<QString, QString>>& rows)
@@ -421,6 +488,9 @@ QWidget* SummaryPanel::createTable()
         widestTitle = std::max(widestTitle, header->fontMetrics().horizontalAdvance(
                                                 stepModel_->headerData(column, Qt::Horizontal).toString()));
     header->setMinimumSectionSize(widestTitle + 28);  // room for the sort arrow
+    connect(table_, &QTableView::clicked, this, [this, proxy](const QModelIndex& index) {
+        emit timeCursorRequested(stepModel_->stanceStart(proxy->mapToSource(index).row()));
+    });
     return table_;
 }
 
@@ -477,7 +547,31 @@ void SummaryPanel::refresh()
     stepModel_->setResult(result_);
     showWalkFigures();
     showReferenceFigures();
+    showWarnings();
     showCharts();
+}
+
+void SummaryPanel::showWarnings()
+{
+    qDeleteAll(warningList_->findChildren<QLabel*>(QString(), Qt::FindDirectChildrenOnly));
+    const std::vector<PlausibilityWarning> none;
+    const std::vector<PlausibilityWarning>& warnings = result_ ? result_->warnings : none;
+    noWarnings_->setVisible(result_ && warnings.empty());
+    warningsGroup_->setVisible(!warnings.empty());
+    warningsTitle_->setText(tr("%n plausibility warning(s)", nullptr, static_cast<int>(warnings.size())));
+    for (std::size_t i = 0; i < warnings.size(); ++i) {
+        const PlausibilityWarning& w = warnings[i];
+        // The span is a link: following it asks for the time cursor at the start of the finding.
+        auto* label = new QLabel(QStringLiteral("<a href=\"%1\">%2</a> <b>%3</b>: %4")
+                                     .arg(QString::number(i), warningSpanText(w), warningLabel(w.kind).toHtmlEscaped(),
+                                          QString::fromStdString(w.message).toHtmlEscaped()));
+        label->setObjectName(QStringLiteral("warning_%1").arg(i));
+        label->setWordWrap(true);
+        label->setTextInteractionFlags(Qt::LinksAccessibleByMouse | Qt::LinksAccessibleByKeyboard);
+        label->setToolTip(tr("Click the time span to move the time cursor there"));
+        connect(label, &QLabel::linkActivated, this, [this, start = w.start_s] { emit timeCursorRequested(start); });
+        warningList_->layout()->addWidget(label);
+    }
 }
 
 void SummaryPanel::setFigure(const QString& key, const QString& text)

@@ -83,6 +83,10 @@ Histogram makeHistogram(const std::vector<double>& values, double minimumBinWidt
 
 /// The figures of the latest result, a sortable per-step table and gait charts: stride length and
 /// stance duration per step, and their histograms. Drawn with Qt Charts, without OpenGL.
+///
+/// The result's plausibility warnings head the figures (each with its time span, a link that asks
+/// for the time cursor there), and the steps whose stride overlaps a warning's span are marked in
+/// the table. The panel knows nothing of the session: MainWindow wires timeCursorRequested.
 class SummaryPanel : public QWidget {
     Q_OBJECT
 public:
@@ -97,6 +101,10 @@ public:
 
     const GaitStatistics& statistics() const { return statistics_; }
 
+signals:
+    /// The user clicked a warning's time span or a step: show this moment.
+    void timeCursorRequested(double time_s);
+
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
@@ -108,6 +116,7 @@ private:
     };
 
     QWidget* createFigures();
+    QWidget* createWarnings();
     QGroupBox* createFigureGroup(const QString& title, const std::vector<std::pair<QString, QString>>& rows);
     QWidget* createTable();
     QWidget* createChartPair(QChartView* left, QChartView* right);
@@ -116,6 +125,7 @@ private:
     void refresh();
     void showWalkFigures();
     void showReferenceFigures();
+    void showWarnings();
     void setFigure(const QString& key, const QString& text);
     void showCharts();
     void showPerStepChart(QChartView* view, const QString& title, const QString& yTitle, std::size_t firstStep,
@@ -129,6 +139,10 @@ private:
 
     std::map<QString, FigureRow> figures_;  ///< by key, e.g. "armse2d"
     QGroupBox* referenceGroup_ = nullptr;
+    QGroupBox* warningsGroup_ = nullptr;
+    QLabel* warningsTitle_ = nullptr;
+    QWidget* warningList_ = nullptr;  ///< one label per warning, remade with each result
+    QLabel* noWarnings_ = nullptr;
     QLabel* referenceNotes_ = nullptr;
     StepTableModel* stepModel_ = nullptr;
     QTableView* table_ = nullptr;

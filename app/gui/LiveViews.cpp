@@ -44,6 +44,11 @@ Result resultWindow(const Result& result, double from_s)
     window.flags.c3 = tailFrom(result.flags.c3, first);
     window.flags.c = tailFrom(result.flags.c, first);
     window.flags.stance = tailFrom(result.flags.stance, first);
+    window.flags.logStatistic = tailFrom(result.flags.logStatistic, first);
+    window.flags.logThreshold = tailFrom(result.flags.logThreshold, first);
+    for (const PlausibilityWarning& warning : result.warnings)
+        if (warning.end_s >= from_s)
+            window.warnings.push_back(warning);
     return window;
 }
 

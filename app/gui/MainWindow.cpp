@@ -27,11 +27,14 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScreen>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QTimer>
 #include <QUndoStack>
+#include <qcustomplot.h>
 
 namespace footpath {
 
@@ -73,6 +76,9 @@ MainWindow::MainWindow(AppSettings& settings, QWidget* parent)
     wireSession();
     wireViews();
     status_ = new QLabel(tr("Ready"), this);
+    status_->setObjectName(QStringLiteral("status"));
+    // A long message is cut at the window's edge rather than widening the window; the tool tip has all.
+    status_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(status_, 1);
     input_->setRecentFiles(settings_.recentFiles());
     parameters_->setParameters(session_->parameters());
@@ -210,6 +216,18 @@ void MainWindow::createViewMenu()
         viewMenu_->addAction(widget->toggleViewAction());
 }
 
+void MainWindow::showView(const QString& name)
+{
+    if (name == QLatin1String("signals"))
+        signalTabs_->setCurrentWidget(signalPlots_);
+    else if (name == QLatin1String("detector"))
+        signalTabs_->setCurrentWidget(flags_);
+    else if (name == QLatin1String("trajectory2d"))
+        trajectoryTabs_->setCurrentWidget(trajectory2D_);
+    else if (name == QLatin1String("trajectory3d"))
+        trajectoryTabs_->setCurrentWidget(trajectory3D_);
+}
+
 void MainWindow::createSettingsMenu()
 {
     QMenu* settings = menuBar()->addMenu(tr("&Settings"));
@@ -244,7 +262,7 @@ void MainWindow::wireSession()
     connect(session_, &AnalysisSession::resultChanged, this, &MainWindow::showResult);
     connect(session_, &AnalysisSession::estimatingChanged, this, &MainWindow::showEstimating);
     connect(session_, &AnalysisSession::estimateFailed, this,
-            [this](const QString& message) { status_->setText(tr("Estimate failed: %1").arg(message)); });
+            [this](const QString& message) { showStatus(tr("Estimate failed: %1").arg(message), true); });
     connect(session_, &AnalysisSession::parametersChanged, this, [this] {
         parameters_->setParameters(session_->parameters());
         flags_->setParameters(session_->parameters());
@@ -261,6 +279,7 @@ void MainWindow::wireViews()
     connect(signalPlots_, &SignalPlots::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
     connect(flags_, &StanceFlagsPlot::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
     connect(trajectory2D_, &TrajectoryView2D::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
+    connect(summary_, &SummaryPanel::timeCursorRequested, this, &MainWindow::showMoment);
     connect(session_, &AnalysisSession::timeCursorChanged, this, [this](double t) {
         signalPlots_->setTimeCursor(t);
         flags_->setTimeCursor(t);
@@ -301,7 +320,7 @@ void MainWindow::exportReport()
         !problem.isEmpty())
         QMessageBox::warning(this, tr("Export report"), problem);
     else
-        status_->setText(tr("Report written to %1").arg(path));
+        showStatus(tr("Report written to %1").arg(path));
 }
 
 void MainWindow::exportCsv()
@@ -326,7 +345,7 @@ void MainWindow::exportCsv()
             QMessageBox::warning(this, tr("Export CSV"), QString::fromStdString(problem));
             return;
         }
-    status_->setText(tr("Trajectory, steps, summary and parameters written to %1").arg(folder));
+    showStatus(tr("Trajectory, steps, summary and parameters written to %1").arg(folder));
 }
 
 void MainWindow::chooseRecording()
@@ -342,7 +361,7 @@ void MainWindow::openRecording(const QString& path, const ImportOptions& options
 {
     const QString file = fileForResource(path);
     input_->showLoading(file);
-    status_->setText(tr("Reading %1...").arg(QFileInfo(file).fileName()));
+    showStatus(tr("Reading %1...").arg(QFileInfo(file).fileName()));
     loader_->load(file, options);
 }
 
@@ -365,7 +384,7 @@ void MainWindow::onLoaded(const QString& path, const std::shared_ptr<const Impor
 void MainWindow::onLoadFailed(const QString& path, const QString& message, const ImportOptions& options)
 {
     input_->showProblem(message);
-    status_->setText(message);
+    showStatus(message, true);
     // A file that does not describe itself gets the import dialog instead of a dead end.
     const bool needsColumnMap = message.contains(QStringLiteral("no header row"))
                                 || message.contains(QStringLiteral("missing column"))
@@ -396,28 +415,68 @@ void MainWindow::showResult()
                               : std::vector<Eigen::Vector3d>();
     trajectory2D_->setReference(reference);
     trajectory3D_->setReference(reference);
-    const Summary& s = result->summary;
-    status_->setText(tr("%1 samples, %2 steps, path %3 m, end to start %4 m (%5 %), estimated in %6 ms")
-                         .arg(s.samples)
-                         .arg(s.steps)
-                         .arg(s.pathLength_m, 0, 'f', 2)
-                         .arg(s.endToStart_m, 0, 'f', 2)
-                         .arg(s.endToStartPct, 0, 'f', 2)
-                         .arg(s.runtime_s * 1000.0, 0, 'f', 0));
+    showResultStatus(*result);
     emit resultShown();
+}
+
+void MainWindow::showResultStatus(const Result& result)
+{
+    if (!result.warnings.empty()) {
+        const auto count = static_cast<int>(result.warnings.size());
+        showStatus(tr("%n plausibility warning(s): %1", nullptr, count)
+                       .arg(QString::fromStdString(result.warnings.front().message)),
+                   true);
+        return;
+    }
+    const Summary& s = result.summary;
+    showStatus(tr("%1 samples, %2 steps, path %3 m, end to start %4 m (%5 %), estimated in %6 ms")
+                   .arg(s.samples)
+                   .arg(s.steps)
+                   .arg(s.pathLength_m, 0, 'f', 2)
+                   .arg(s.endToStart_m, 0, 'f', 2)
+                   .arg(s.endToStartPct, 0, 'f', 2)
+                   .arg(s.runtime_s * 1000.0, 0, 'f', 0));
+}
+
+void MainWindow::showStatus(const QString& text, bool warning)
+{
+    status_->setText(text);
+    status_->setToolTip(text);
+    status_->setStyleSheet(warning ? QStringLiteral("color: #b00020; font-weight: bold;") : QString());
+}
+
+void MainWindow::showMoment(double time_s)
+{
+    session_->setTimeCursor(time_s);
+    const QCPRange shown = flags_->timeRange();
+    if (shown.contains(time_s) || shown.size() <= 0.0)
+        return;
+    // Keep the zoom; put the moment a tenth in from the left, where what follows it is in view.
+    const double from = time_s - 0.1 * shown.size();
+    flags_->setTimeRange(from, from + shown.size());  // the signal plots follow through the link
 }
 
 void MainWindow::showEstimating(bool running)
 {
     if (running)
-        status_->setText(tr("Estimating..."));
+        showStatus(tr("Estimating..."));
 }
 
 void MainWindow::restoreLayout()
 {
-    if (!restoreGeometry(settings_.windowGeometry()))
-        resize(1400, 900);
-    restoreState(settings_.windowState());
+    if (!restoreGeometry(settings_.windowGeometry())) {
+        // Never larger than the screen: on a 1280x800 laptop the window would hang off its edges.
+        const QSize available = screen() ? screen()->availableSize() : QSize(1400, 900);
+        resize(std::min(1400, available.width()), std::min(900, available.height()));
+    }
+    if (restoreState(settings_.windowState()))
+        return;
+    // First start: the plots and the path get most of the height, the summary a third of it. Once
+    // shown, as docks are sized when the window is laid out.
+    QTimer::singleShot(0, this, [this] {
+        if (auto* summaryDock = findChild<QDockWidget*>(QStringLiteral("summaryDock")))
+            resizeDocks({summaryDock}, {height() / 3}, Qt::Vertical);
+    });
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -38,6 +38,8 @@ public:
     void connectLive(const QString& port);
     void openRecording(const QString& path, const ImportOptions& options = {});
     AnalysisSession* session() const { return session_; }
+    /// Brings a view to the front: "signals", "detector", "trajectory2d" or "trajectory3d".
+    void showView(const QString& name);
 
 signals:
     /// A result is on screen (after each estimate); screenshots and tests wait for it.
@@ -65,6 +67,11 @@ private:
     void onLoaded(const QString& path, const std::shared_ptr<const ImportResult>& result);
     void onLoadFailed(const QString& path, const QString& message, const ImportOptions& options);
     void showResult();
+    void showResultStatus(const Result& result);
+    /// Sets the status bar text; a warning stands out in colour.
+    void showStatus(const QString& text, bool warning = false);
+    /// Moves the time cursor to time_s and brings it into view in the time plots.
+    void showMoment(double time_s);
     void showEstimating(bool running);
     void chooseLanguage(const QString& language);
     void restoreLayout();

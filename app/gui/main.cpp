@@ -1,7 +1,9 @@
 // footpath: the desktop application. With no argument it opens the bundled sample walk.
+#include "AnalysisSession.h"
 #include "AppSettings.h"
 #include "MainWindow.h"
 #include "Result.h"
+#include "io/ParameterIo.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -9,6 +11,8 @@
 #include <QLocale>
 #include <QTimer>
 #include <QTranslator>
+
+#include <cstdio>
 
 namespace {
 
@@ -25,6 +29,26 @@ void installTranslations(QApplication& app, const QString& language)
     if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
                  QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QApplication::installTranslator(qt);
+}
+
+/// The parameters --params and --set ask for, over the defaults (as footpath-cli reads them);
+/// an error message on failure.
+QString readParameters(const QString& preset, const QStringList& assignments, footpath::Parameters& params)
+{
+    if (!preset.isEmpty())
+        if (const std::string error = footpath::loadParameters(preset.toStdString(), params); !error.empty())
+            return QString::fromStdString(error);
+    for (const QString& assignment : assignments) {
+        const qsizetype equals = assignment.indexOf(QLatin1Char('='));
+        if (equals <= 0)
+            return QApplication::translate("main", "--set expects name=value, got '%1'").arg(assignment);
+        const std::string error = footpath::setParameter(params, assignment.left(equals).toStdString(),
+                                                         assignment.mid(equals + 1).toStdString());
+        if (!error.empty())
+            return QString::fromStdString(error);
+    }
+    const std::vector<std::string> problems = params.validate();
+    return problems.empty() ? QString() : QString::fromStdString(problems.front());
 }
 
 }  // namespace
@@ -48,13 +72,32 @@ int main(int argc, char** argv)
     const QCommandLineOption language("language", QApplication::translate("main", "Language (en, de, zh_CN)"), "code");
     const QCommandLineOption connectPort(
         "connect", QApplication::translate("main", "Connect the live input to this serial port or emulator link"), "port");
+    const QCommandLineOption preset(
+        "params", QApplication::translate("main", "Start with the parameters of this preset (JSON)"), "preset.json");
+    const QCommandLineOption assignment(
+        "set", QApplication::translate("main", "Set one parameter, as footpath-cli does (repeatable)"), "name=value");
+    const QCommandLineOption view(
+        "view", QApplication::translate("main", "Show this view: signals, detector, trajectory2d or trajectory3d"), "name");
     parser.addOption(screenshot);
+    parser.addOption(preset);
+    parser.addOption(assignment);
+    parser.addOption(view);
     parser.addOption(language);
     parser.addOption(connectPort);
     parser.process(app);
     installTranslations(app, parser.isSet(language) ? parser.value(language) : settings.language());
 
+    footpath::Parameters params;
+    if (const QString error = readParameters(parser.value(preset), parser.values(assignment), params); !error.isEmpty()) {
+        std::fprintf(stderr, "footpath: %s\n", qPrintable(error));
+        return 2;
+    }
+
     footpath::MainWindow window(settings);
+    if (params != footpath::Parameters())
+        window.session()->setParameters(params, QApplication::translate("main", "Parameters from the command line"));
+    if (parser.isSet(view))
+        window.showView(parser.value(view));
     window.show();
     const QStringList files = parser.positionalArguments();
     window.openRecording(files.isEmpty() ? QString::fromUtf8(kSampleWalk) : files.first());
