@@ -293,39 +293,39 @@
     </message>
     <message>
         <source>Figure 5. Stance detector C1/C2/C3 from %1 s to %2 s: conditions C1, C2, C3, their combination C, the median-filtered stance, the std of |a| on a logarithmic axis, and the inputs with their thresholds; plausibility warnings shaded red.</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbildung 5. Standphasendetektor C1/C2/C3 von %1 s bis %2 s: die Bedingungen C1, C2, C3, ihre Verknüpfung C, die mediangefilterte Standphase, die SD von |a| auf logarithmischer Achse und die Eingänge mit ihren Schwellwerten; Plausibilitätswarnungen rot schattiert.</translation>
     </message>
     <message>
         <source>Figure 5. Stance detector %3 from %1 s to %2 s: the condition C (statistic below threshold), the stance, and the statistic on a logarithmic axis with its threshold; plausibility warnings shaded red.</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbildung 5. Standphasendetektor %3 von %1 s bis %2 s: die Bedingung C (Teststatistik unter dem Schwellwert), die Standphase und die Teststatistik auf logarithmischer Achse mit ihrem Schwellwert; Plausibilitätswarnungen rot schattiert.</translation>
     </message>
     <message>
         <source>Plausibility warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>Plausibilitätswarnungen</translation>
     </message>
     <message>
         <source>The plausibility checks found nothing: the result looks like human gait.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Plausibilitätsprüfungen fanden nichts: das Ergebnis sieht nach menschlichem Gang aus.</translation>
     </message>
     <message>
         <source>Findings: %1. Each marks a span where the result is not what human gait gives, so the path needs care there.</source>
-        <translation type="unfinished"></translation>
+        <translation>Befunde: %1. Jeder markiert einen Zeitraum, in dem das Ergebnis nicht menschlichem Gang entspricht; dort ist der Weg mit Vorsicht zu lesen.</translation>
     </message>
     <message>
         <source>%1, %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, %2: %3</translation>
     </message>
     <message>
         <source>Import notes (reading the file)</source>
-        <translation type="unfinished"></translation>
+        <translation>Hinweise zum Import (Lesen der Datei)</translation>
     </message>
     <message>
         <source>Import warning: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Importwarnung: %1</translation>
     </message>
     <message>
         <source>Reading the file raised no warnings.</source>
-        <translation type="unfinished"></translation>
+        <translation>Beim Lesen der Datei gab es keine Warnungen.</translation>
     </message>
 </context>
 <context>
@@ -565,10 +565,6 @@
         <translation>Schätzung</translation>
     </message>
     <message>
-        <source>The stance detector looks this far ahead (half its std window plus half its median window), so the estimate trails the sensor by this fixed delay.</source>
-        <translation>Der Standphasendetektor blickt so weit voraus (halbes Fenster der Standardabweichung plus halbes Medianfenster), daher folgt die Schätzung dem Sensor mit dieser festen Verzögerung.</translation>
-    </message>
-    <message>
         <source>Latency:</source>
         <translation>Latenz:</translation>
     </message>
@@ -615,6 +611,10 @@
     <message>
         <source>Complete: every sample estimated, as the offline analysis does</source>
         <translation>Fertig: jeder Abtastwert geschätzt, wie in der Offline-Analyse</translation>
+    </message>
+    <message>
+        <source>The stance detector looks this far ahead (its windows are centred on each sample), so the estimate trails the sensor by this fixed delay.</source>
+        <translation>Der Standphasendetektor blickt so weit voraus (seine Fenster sind um jeden Abtastwert zentriert), daher folgt die Schätzung dem Sensor mit dieser festen Verzögerung.</translation>
     </message>
 </context>
 <context>
@@ -868,9 +868,9 @@
     </message>
     <message numerus="yes">
         <source>%n plausibility warning(s): %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Plausibilitätswarnung: %1</numerusform>
+            <numerusform>%n Plausibilitätswarnungen: %1</numerusform>
         </translation>
     </message>
 </context>
@@ -962,39 +962,39 @@
     </message>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;In presets and --set: %3&lt;br&gt;Default: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;In Voreinstellungen und --set: %3&lt;br&gt;Standard: %4</translation>
     </message>
     <message>
         <source>Not used: only the C1/C2/C3 detector uses it, and %1 is chosen.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: nur der C1/C2/C3-Detektor nutzt ihn, gewählt ist %1.</translation>
     </message>
     <message>
         <source>Not used: the statistic detectors (SHOE, ARED, AMVD, MBGTD) use it, and C1/C2/C3 is chosen.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: die Statistik-Detektoren (SHOE, ARED, AMVD, MBGTD) nutzen ihn, gewählt ist C1/C2/C3.</translation>
     </message>
     <message>
         <source>Not used: ARED looks at the gyroscope alone.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: ARED wertet nur das Gyroskop aus.</translation>
     </message>
     <message>
         <source>Not used: %1 looks at the accelerometer alone.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: %1 wertet nur den Beschleunigungssensor aus.</translation>
     </message>
     <message>
         <source>Not used: the threshold is adaptive (zv_adaptive is on).</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: der Schwellwert ist adaptiv (zv_adaptive ist ein).</translation>
     </message>
     <message>
         <source>Not used: the threshold is fixed (zv_adaptive is off).</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: der Schwellwert ist fest (zv_adaptive ist aus).</translation>
     </message>
     <message>
         <source>Not used: the 9-state filter has no bias states.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: das Filter mit 9 Zuständen hat keine Bias-Zustände.</translation>
     </message>
     <message>
         <source>Not used: ZARU corrects the gyro bias, which the 9-state filter does not estimate.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: ZARU korrigiert den Gyroskop-Bias, den das Filter mit 9 Zuständen nicht schätzt.</translation>
     </message>
 </context>
 <context>
@@ -1271,43 +1271,48 @@
     <message>
         <source>C: statistic
 &lt; threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>C: Statistik
+&lt; Schwellwert</translation>
     </message>
     <message>
         <source>Stance</source>
-        <translation type="unfinished">Standphase</translation>
+        <translation>Standphase</translation>
     </message>
     <message>
         <source>SHOE
 statistic</source>
-        <translation type="unfinished"></translation>
+        <translation>SHOE-
+Statistik</translation>
     </message>
     <message>
         <source>ARED
 statistic</source>
-        <translation type="unfinished"></translation>
+        <translation>ARED-
+Statistik</translation>
     </message>
     <message>
         <source>AMVD
 statistic</source>
-        <translation type="unfinished"></translation>
+        <translation>AMVD-
+Statistik</translation>
     </message>
     <message>
         <source>MBGTD
 statistic</source>
-        <translation type="unfinished"></translation>
+        <translation>MBGTD-
+Statistik</translation>
     </message>
     <message>
         <source>The inputs of the C1/C2/C3 detector; the chosen detector decides on its statistic, shown below the lanes</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Eingänge des C1/C2/C3-Detektors; der gewählte Detektor entscheidet anhand seiner Statistik, die unter den Spuren dargestellt ist</translation>
     </message>
     <message>
         <source>threshold (adaptive)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwellwert (adaptiv)</translation>
     </message>
     <message>
         <source>threshold = 10^%1</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwellwert = 10^%1</translation>
     </message>
 </context>
 <context>
@@ -1522,18 +1527,18 @@ statistic</source>
     </message>
     <message>
         <source>No plausibility warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Plausibilitätswarnungen</translation>
     </message>
     <message numerus="yes">
         <source>%n plausibility warning(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Plausibilitätswarnung</numerusform>
+            <numerusform>%n Plausibilitätswarnungen</numerusform>
         </translation>
     </message>
     <message>
         <source>Click the time span to move the time cursor there</source>
-        <translation type="unfinished"></translation>
+        <translation>Auf den Zeitraum klicken, um den Zeitcursor dorthin zu setzen</translation>
     </message>
 </context>
 <context>
@@ -1658,39 +1663,39 @@ statistic</source>
     <name>footpath::WarningOverlay</name>
     <message>
         <source>no initial rest</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Ruhe zu Beginn</translation>
     </message>
     <message>
         <source>missed stance</source>
-        <translation type="unfinished"></translation>
+        <translation>verpasste Standphase</translation>
     </message>
     <message>
         <source>stride too long</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschritt zu lang</translation>
     </message>
     <message>
         <source>stride too slow</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschritt zu langsam</translation>
     </message>
     <message>
         <source>stance share</source>
-        <translation type="unfinished"></translation>
+        <translation>Standanteil</translation>
     </message>
     <message>
         <source>foot too fast</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuß zu schnell</translation>
     </message>
     <message>
         <source>few stances</source>
-        <translation type="unfinished"></translation>
+        <translation>wenige Standphasen</translation>
     </message>
     <message>
         <source>%1–%2 s</source>
-        <translation type="unfinished">%1 s {1–%2 ?}</translation>
+        <translation>%1–%2 s</translation>
     </message>
     <message>
         <source>Warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>Warnungen</translation>
     </message>
 </context>
 <context>
@@ -1717,23 +1722,23 @@ statistic</source>
     </message>
     <message>
         <source>--set expects name=value, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--set erwartet Name=Wert, erhalten: &apos;%1&apos;</translation>
     </message>
     <message>
         <source>Start with the parameters of this preset (JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit den Parametern dieser Voreinstellung (JSON) starten</translation>
     </message>
     <message>
         <source>Set one parameter, as footpath-cli does (repeatable)</source>
-        <translation type="unfinished"></translation>
+        <translation>Einen Parameter setzen, wie bei footpath-cli (wiederholbar)</translation>
     </message>
     <message>
         <source>Show this view: signals, detector, trajectory2d or trajectory3d</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Ansicht zeigen: signals, detector, trajectory2d oder trajectory3d</translation>
     </message>
     <message>
         <source>Parameters from the command line</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter von der Kommandozeile</translation>
     </message>
 </context>
 </TS>

@@ -293,39 +293,39 @@
     </message>
     <message>
         <source>Figure 5. Stance detector C1/C2/C3 from %1 s to %2 s: conditions C1, C2, C3, their combination C, the median-filtered stance, the std of |a| on a logarithmic axis, and the inputs with their thresholds; plausibility warnings shaded red.</source>
-        <translation type="unfinished"></translation>
+        <translation>图 5. 支撑相检测器 C1/C2/C3，%1 s 至 %2 s：条件 C1、C2、C3 及其组合 C，中值滤波后的支撑相，对数坐标上的 |a| 标准差，以及各输入及其阈值；合理性警告以红色阴影标出。</translation>
     </message>
     <message>
         <source>Figure 5. Stance detector %3 from %1 s to %2 s: the condition C (statistic below threshold), the stance, and the statistic on a logarithmic axis with its threshold; plausibility warnings shaded red.</source>
-        <translation type="unfinished"></translation>
+        <translation>图 5. 支撑相检测器 %3，%1 s 至 %2 s：条件 C（统计量低于阈值）、支撑相，以及对数坐标上的统计量及其阈值；合理性警告以红色阴影标出。</translation>
     </message>
     <message>
         <source>Plausibility warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>合理性警告</translation>
     </message>
     <message>
         <source>The plausibility checks found nothing: the result looks like human gait.</source>
-        <translation type="unfinished"></translation>
+        <translation>合理性检查未发现问题：结果符合人类步态。</translation>
     </message>
     <message>
         <source>Findings: %1. Each marks a span where the result is not what human gait gives, so the path needs care there.</source>
-        <translation type="unfinished"></translation>
+        <translation>发现：%1 项。每项标出一个时间段，该段结果不符合人类步态，因此该处的路径需谨慎看待。</translation>
     </message>
     <message>
         <source>%1, %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1，%2：%3</translation>
     </message>
     <message>
         <source>Import notes (reading the file)</source>
-        <translation type="unfinished"></translation>
+        <translation>导入说明（读取文件）</translation>
     </message>
     <message>
         <source>Import warning: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>导入警告：%1</translation>
     </message>
     <message>
         <source>Reading the file raised no warnings.</source>
-        <translation type="unfinished"></translation>
+        <translation>读取文件时没有警告。</translation>
     </message>
 </context>
 <context>
@@ -565,10 +565,6 @@
         <translation>估计</translation>
     </message>
     <message>
-        <source>The stance detector looks this far ahead (half its std window plus half its median window), so the estimate trails the sensor by this fixed delay.</source>
-        <translation>站立检测器需要向前查看这么长时间（标准差窗口的一半加中值窗口的一半），因此估计结果以这一固定延迟落后于传感器。</translation>
-    </message>
-    <message>
         <source>Latency:</source>
         <translation>延迟：</translation>
     </message>
@@ -615,6 +611,10 @@
     <message>
         <source>Complete: every sample estimated, as the offline analysis does</source>
         <translation>完成：所有采样均已估计，与离线分析一致</translation>
+    </message>
+    <message>
+        <source>The stance detector looks this far ahead (its windows are centred on each sample), so the estimate trails the sensor by this fixed delay.</source>
+        <translation>支撑相检测器需要向前看这么长的时间（其窗口以每个采样点为中心），因此估计结果以这一固定延迟滞后于传感器。</translation>
     </message>
 </context>
 <context>
@@ -868,8 +868,8 @@
     </message>
     <message numerus="yes">
         <source>%n plausibility warning(s): %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n 条合理性警告：%1</numerusform>
         </translation>
     </message>
 </context>
@@ -961,39 +961,39 @@
     </message>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;In presets and --set: %3&lt;br&gt;Default: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;预设和 --set 中的取值：%3&lt;br&gt;默认值：%4</translation>
     </message>
     <message>
         <source>Not used: only the C1/C2/C3 detector uses it, and %1 is chosen.</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：仅 C1/C2/C3 检测器使用此参数，当前选择的是 %1。</translation>
     </message>
     <message>
         <source>Not used: the statistic detectors (SHOE, ARED, AMVD, MBGTD) use it, and C1/C2/C3 is chosen.</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：统计量检测器（SHOE、ARED、AMVD、MBGTD）使用此参数，当前选择的是 C1/C2/C3。</translation>
     </message>
     <message>
         <source>Not used: ARED looks at the gyroscope alone.</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：ARED 只使用陀螺仪。</translation>
     </message>
     <message>
         <source>Not used: %1 looks at the accelerometer alone.</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：%1 只使用加速度计。</translation>
     </message>
     <message>
         <source>Not used: the threshold is adaptive (zv_adaptive is on).</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：阈值为自适应（zv_adaptive 已开启）。</translation>
     </message>
     <message>
         <source>Not used: the threshold is fixed (zv_adaptive is off).</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：阈值为固定值（zv_adaptive 已关闭）。</translation>
     </message>
     <message>
         <source>Not used: the 9-state filter has no bias states.</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：9 状态滤波器没有零偏状态。</translation>
     </message>
     <message>
         <source>Not used: ZARU corrects the gyro bias, which the 9-state filter does not estimate.</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：ZARU 修正陀螺仪零偏，而 9 状态滤波器不估计零偏。</translation>
     </message>
 </context>
 <context>
@@ -1270,43 +1270,48 @@
     <message>
         <source>C: statistic
 &lt; threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>C：统计量
+&lt; 阈值</translation>
     </message>
     <message>
         <source>Stance</source>
-        <translation type="unfinished">支撑相</translation>
+        <translation>支撑相</translation>
     </message>
     <message>
         <source>SHOE
 statistic</source>
-        <translation type="unfinished"></translation>
+        <translation>SHOE
+统计量</translation>
     </message>
     <message>
         <source>ARED
 statistic</source>
-        <translation type="unfinished"></translation>
+        <translation>ARED
+统计量</translation>
     </message>
     <message>
         <source>AMVD
 statistic</source>
-        <translation type="unfinished"></translation>
+        <translation>AMVD
+统计量</translation>
     </message>
     <message>
         <source>MBGTD
 statistic</source>
-        <translation type="unfinished"></translation>
+        <translation>MBGTD
+统计量</translation>
     </message>
     <message>
         <source>The inputs of the C1/C2/C3 detector; the chosen detector decides on its statistic, shown below the lanes</source>
-        <translation type="unfinished"></translation>
+        <translation>C1/C2/C3 检测器的输入；当前检测器依据其统计量判断，统计量显示在各通道下方</translation>
     </message>
     <message>
         <source>threshold (adaptive)</source>
-        <translation type="unfinished"></translation>
+        <translation>阈值（自适应）</translation>
     </message>
     <message>
         <source>threshold = 10^%1</source>
-        <translation type="unfinished"></translation>
+        <translation>阈值 = 10^%1</translation>
     </message>
 </context>
 <context>
@@ -1521,17 +1526,17 @@ statistic</source>
     </message>
     <message>
         <source>No plausibility warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>无合理性警告</translation>
     </message>
     <message numerus="yes">
         <source>%n plausibility warning(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n 条合理性警告</numerusform>
         </translation>
     </message>
     <message>
         <source>Click the time span to move the time cursor there</source>
-        <translation type="unfinished"></translation>
+        <translation>点击时间段可将时间光标移至该处</translation>
     </message>
 </context>
 <context>
@@ -1656,39 +1661,39 @@ statistic</source>
     <name>footpath::WarningOverlay</name>
     <message>
         <source>no initial rest</source>
-        <translation type="unfinished"></translation>
+        <translation>起始无静止</translation>
     </message>
     <message>
         <source>missed stance</source>
-        <translation type="unfinished"></translation>
+        <translation>漏检支撑相</translation>
     </message>
     <message>
         <source>stride too long</source>
-        <translation type="unfinished"></translation>
+        <translation>步幅过长</translation>
     </message>
     <message>
         <source>stride too slow</source>
-        <translation type="unfinished"></translation>
+        <translation>步幅过慢</translation>
     </message>
     <message>
         <source>stance share</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相占比</translation>
     </message>
     <message>
         <source>foot too fast</source>
-        <translation type="unfinished"></translation>
+        <translation>足速过快</translation>
     </message>
     <message>
         <source>few stances</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相过少</translation>
     </message>
     <message>
         <source>%1–%2 s</source>
-        <translation type="unfinished">%1 s {1–%2 ?}</translation>
+        <translation>%1–%2 s</translation>
     </message>
     <message>
         <source>Warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>警告</translation>
     </message>
 </context>
 <context>
@@ -1715,23 +1720,23 @@ statistic</source>
     </message>
     <message>
         <source>--set expects name=value, got &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>--set 需要 name=value 形式，收到的是 &apos;%1&apos;</translation>
     </message>
     <message>
         <source>Start with the parameters of this preset (JSON)</source>
-        <translation type="unfinished"></translation>
+        <translation>以此预设（JSON）中的参数启动</translation>
     </message>
     <message>
         <source>Set one parameter, as footpath-cli does (repeatable)</source>
-        <translation type="unfinished"></translation>
+        <translation>设置一个参数，用法同 footpath-cli（可重复）</translation>
     </message>
     <message>
         <source>Show this view: signals, detector, trajectory2d or trajectory3d</source>
-        <translation type="unfinished"></translation>
+        <translation>显示此视图：signals、detector、trajectory2d 或 trajectory3d</translation>
     </message>
     <message>
         <source>Parameters from the command line</source>
-        <translation type="unfinished"></translation>
+        <translation>来自命令行的参数</translation>
     </message>
 </context>
 </TS>

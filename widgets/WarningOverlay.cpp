@@ -6,7 +6,6 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
-#include <array>
 #include <limits>
 #include <optional>
 
@@ -42,6 +41,20 @@ std::vector<QCPRange> localSpans(const std::vector<PlausibilityWarning>& warning
             merged.push_back(span);
     }
     return merged;
+}
+
+/// How many findings overlap in time at most. The lane gets one level more, as a label may run
+/// past the end of its bar onto the next finding's start.
+std::size_t overlapDepth(const std::vector<PlausibilityWarning>& warnings)
+{
+    std::size_t deepest = 0;
+    for (const PlausibilityWarning& w : warnings) {
+        const auto depth = std::count_if(warnings.begin(), warnings.end(), [&w](const PlausibilityWarning& other) {
+            return other.start_s <= w.start_s && w.start_s <= other.end_s;
+        });
+        deepest = std::max(deepest, static_cast<std::size_t>(depth));
+    }
+    return deepest;
 }
 
 }  // namespace
@@ -122,47 +135,55 @@ protected:
 
     void draw(QCPPainter* painter) override
     {
-        const QFont font = labelFont(parentPlot());
-        painter->setFont(font);
-        const QFontMetricsF metrics(font, painter->device());
+        painter->setFont(labelFont(parentPlot()));
         const double height = levelHeight(parentPlot());
         const auto levels = static_cast<std::size_t>(std::max(1.0, std::floor((lane_->height() - 2.0) / height)));
-        std::vector<double> levelEnds(levels, -std::numeric_limits<double>::infinity());
-        // Local findings take the levels first: a whole-walk finding is the one to go unlabelled.
+        std::vector<double> levelEnds(levels, -std::numeric_limits<double>::infinity());  // in pixels
+        for (const PlausibilityWarning* w : labellingOrder())
+            if (const std::optional<std::pair<double, double>> span = pixelSpan(*w))
+                drawBar(painter, *w, *span, levelEnds);
+    }
+
+private:
+    /// Local findings take the levels first: a whole-walk finding is the one to go unlabelled.
+    std::vector<const PlausibilityWarning*> labellingOrder() const
+    {
         std::vector<const PlausibilityWarning*> order;
         for (const bool wholeWalk : {false, true})
             for (const PlausibilityWarning& w : overlay_->warnings_)
                 if (concernsWholeWalk(w.kind) == wholeWalk)
                     order.push_back(&w);
-        for (const PlausibilityWarning* warning : order) {
-            const PlausibilityWarning& w = *warning;
-            const std::optional<std::pair<double, double>> span = pixelSpan(w);
-            if (!span)
-                continue;
-            const auto [left, right] = *span;
-            const QString text = warningLabel(w.kind);
-            const double labelEnd = left + metrics.horizontalAdvance(text) + 6.0;
-            auto level = std::find_if(levelEnds.begin(), levelEnds.end(), [&](double end) { return end + 3.0 < left; });
-            const bool labelled = level != levelEnds.end();
-            if (!labelled)  // no free level: the bar goes where it overlaps least, the tool tip names it
-                level = std::min_element(levelEnds.begin(), levelEnds.end());
-            const QRectF bar(left, lane_->top() + 2.0 + static_cast<double>(level - levelEnds.begin()) * height,
-                             right - left, height - 2.0);
-            painter->fillRect(bar, concernsWholeWalk(w.kind) ? kWholeWalkBarColour : kBarColour);
-            if (!labelled) {  // outlined, so it shows over the bar it shares a level with
-                painter->setPen(QPen(kLabelColour, 1.0));
-                painter->setBrush(Qt::NoBrush);
-                painter->drawRect(bar);
-            } else {
-                painter->setPen(kLabelColour);
-                painter->drawText(QRectF(left + 3.0, bar.top(), labelEnd - left, bar.height()),
-                                  Qt::AlignLeft | Qt::AlignVCenter, text);
-            }
-            *level = std::max(right, labelled ? labelEnd : right);
-        }
+        return order;
     }
 
-private:
+    /// The bar on the first level free at its left end, labelled; without a free level, outlined on
+    /// the level it overlaps least and unlabelled (the tool tip still names it).
+    void drawBar(QCPPainter* painter, const PlausibilityWarning& w, std::pair<double, double> span,
+                 std::vector<double>& levelEnds) const
+    {
+        const auto [left, right] = span;
+        const QString text = warningLabel(w.kind);
+        const double labelEnd = left + QFontMetricsF(painter->font(), painter->device()).horizontalAdvance(text) + 6.0;
+        auto level = std::find_if(levelEnds.begin(), levelEnds.end(), [left = left](double end) { return end + 3.0 < left; });
+        const bool labelled = level != levelEnds.end();
+        if (!labelled)
+            level = std::min_element(levelEnds.begin(), levelEnds.end());
+        const double height = levelHeight(parentPlot());
+        const QRectF bar(left, lane_->top() + 2.0 + static_cast<double>(level - levelEnds.begin()) * height,
+                         right - left, height - 2.0);
+        if (labelled) {
+            painter->fillRect(bar, concernsWholeWalk(w.kind) ? kWholeWalkBarColour : kBarColour);
+            painter->setPen(kLabelColour);
+            painter->drawText(QRectF(left + 3.0, bar.top(), labelEnd - left, bar.height()), Qt::AlignLeft | Qt::AlignVCenter,
+                              text);
+        } else {  // an outline only: it must not hide the bar and label it shares a level with
+            painter->setPen(QPen(kLabelColour, 1.0, Qt::DotLine));
+            painter->setBrush(Qt::NoBrush);
+            painter->drawRect(bar);
+        }
+        *level = labelled ? std::max(right, labelEnd) : std::max(*level, right);
+    }
+
     /// The finding's span in pixels, at least 3 wide; nothing when it is out of view.
     std::optional<std::pair<double, double>> pixelSpan(const PlausibilityWarning& w) const
     {
@@ -178,20 +199,6 @@ private:
     const WarningOverlay* overlay_;
     QCPAxisRect* lane_;
 };
-
-/// How many findings overlap in time at most: the levels the lane needs (a few more are found at
-/// draw time when labels are wider than their bars).
-std::size_t overlapDepth(const std::vector<PlausibilityWarning>& warnings)
-{
-    std::size_t deepest = 0;
-    for (const PlausibilityWarning& w : warnings) {
-        const auto depth = std::count_if(warnings.begin(), warnings.end(), [&w](const PlausibilityWarning& other) {
-            return other.start_s <= w.start_s && w.start_s <= other.end_s;
-        });
-        deepest = std::max(deepest, static_cast<std::size_t>(depth));
-    }
-    return deepest;
-}
 
 WarningOverlay::WarningOverlay(QCustomPlot* plot) : QObject(plot), plot_(plot)
 {

@@ -192,8 +192,8 @@ QWidget* LivePanel::buildEstimateBox()
     auto* form = new QFormLayout(box);
     latency_ = valueLabel(box);
     latency_->setObjectName(QStringLiteral("liveLatency"));
-    latency_->setToolTip(tr("The stance detector looks this far ahead (half its std window plus half its "
-                            "median window), so the estimate trails the sensor by this fixed delay."));
+    latency_->setToolTip(tr("The stance detector looks this far ahead (its windows are centred on each sample), "
+                            "so the estimate trails the sensor by this fixed delay."));
     estimateState_ = valueLabel(box);
     estimateState_->setWordWrap(true);
     steps_ = valueLabel(box);
