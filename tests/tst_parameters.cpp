@@ -86,6 +86,7 @@ private slots:
     void defaults_areThePaperValues_data();
     void defaults_areThePaperValues();
     void fieldNames_mapToTheirMembers();
+    void unmetScope_saysWhichFieldsThePipelineReads();
     void validate_reportsOutOfRangeWithTheFieldName_data();
     void validate_reportsOutOfRangeWithTheFieldName();
     void validate_acceptsRangeBoundaries_data();
@@ -144,6 +145,32 @@ void TestParameters::defaults_areThePaperValues()
     QCOMPARE(footpath::parameterValue(footpath::guo2015Parameters(), *field), expected);
 }
 
+void TestParameters::unmetScope_saysWhichFieldsThePipelineReads()
+{
+    using footpath::FieldScope;
+    const auto scopeOf = [](const Parameters& params, const char* name) {
+        return footpath::unmetScope(*footpath::findParameterField(name), params);
+    };
+    const Parameters defaults;  // SHOE, adaptive threshold, 9 states
+    QCOMPARE(scopeOf(defaults, "detector"), FieldScope::Always);
+    QCOMPARE(scopeOf(defaults, "zv_adapt_window_s"), FieldScope::Always);
+    QCOMPARE(scopeOf(defaults, "zv_log_threshold"), FieldScope::FixedThreshold);
+    QCOMPARE(scopeOf(defaults, "acc_std_max_mps2"), FieldScope::PaperDetector);
+    QCOMPARE(scopeOf(defaults, "p0_acc_bias_mps2"), FieldScope::BiasStates);
+    QCOMPARE(scopeOf(defaults, "use_zaru"), FieldScope::Zaru);
+    const Parameters paper = footpath::guo2015Parameters();  // C1/C2/C3, 15 states
+    QCOMPARE(scopeOf(paper, "acc_std_max_mps2"), FieldScope::Always);
+    QCOMPARE(scopeOf(paper, "zv_log_threshold"), FieldScope::StatisticDetectors);  // the detector first
+    QCOMPARE(scopeOf(paper, "use_zaru"), FieldScope::Always);
+    Parameters ared;
+    QVERIFY(footpath::setParameter(ared, "detector", "ared").empty());
+    QCOMPARE(scopeOf(ared, "zv_sigma_acc_mps2"), FieldScope::DetectorAccelerometer);
+    QCOMPARE(scopeOf(ared, "zv_sigma_gyr_radps"), FieldScope::Always);
+    Parameters amvd;
+    QVERIFY(footpath::setParameter(amvd, "detector", "amvd").empty());
+    QCOMPARE(scopeOf(amvd, "zv_sigma_gyr_radps"), FieldScope::DetectorGyroscope);
+}
+
 void TestParameters::fieldNames_mapToTheirMembers()
 {
     // Each name must address the member of the same name (a swapped pointer would pass every
@@ -168,8 +195,6 @@ void TestParameters::fieldNames_mapToTheirMembers()
         {"zv_log_always", &Parameters::zv_log_always},
         {"zv_log_never", &Parameters::zv_log_never},
         {"zv_min_stance_s", &Parameters::zv_min_stance_s},
-        {"zupt_gate_mps", &Parameters::zupt_gate_mps},
-        {"zupt_gate_window_s", &Parameters::zupt_gate_window_s},
         {"q_att_rad", &Parameters::q_att_rad},
         {"q_gyro_bias_radps", &Parameters::q_gyro_bias_radps},
         {"q_pos_m", &Parameters::q_pos_m},

@@ -472,11 +472,6 @@ void ParameterPanel::showProblems()
 
 namespace {
 
-bool isOneOf(const std::string& name, std::initializer_list<const char*> names)
-{
-    return std::any_of(names.begin(), names.end(), [&name](const char* n) { return name == n; });
-}
-
 QString chosenDetectorLabel(const Parameters& params)
 {
     const ParameterField* detector = findParameterField("detector");
@@ -484,36 +479,33 @@ QString chosenDetectorLabel(const Parameters& params)
     return detector && index < detector->choiceLabels.size() ? fieldText(detector->choiceLabels[index]) : QString();
 }
 
-/// Why the field has no effect with the other values of params; empty when it has one. Only the
-/// "zv_" fields belong to the statistic detectors; the other detector fields to C1/C2/C3.
+/// Why the field has no effect with the other values of params (core's field scopes say when the
+/// pipeline reads each field); empty when it has one.
 QString notUsedBecause(const ParameterField& field, const Parameters& params)
 {
-    const std::string name = field.name;
-    const DetectorKind detector = params.detectorKind();
-    const bool paper = detector == DetectorKind::PaperC1C2C3;
-    const bool statisticField = name.rfind("zv_", 0) == 0;
-    const bool paperField = std::string(field.group) == "Detector" && name != "detector" && !statisticField;
-    if (paperField && !paper)
+    switch (unmetScope(field, params)) {
+    case FieldScope::Always:
+        return {};
+    case FieldScope::PaperDetector:
         return ParameterPanel::tr("Not used: only the C1/C2/C3 detector uses it, and %1 is chosen.")
             .arg(chosenDetectorLabel(params));
-    if (statisticField && paper)
+    case FieldScope::StatisticDetectors:
         return ParameterPanel::tr("Not used: the statistic detectors (SHOE, ARED, AMVD, MBGTD) use it, and C1/C2/C3 "
                                   "is chosen.");
-    if (name == "zv_sigma_acc_mps2" && detector == DetectorKind::Ared)
+    case FieldScope::DetectorAccelerometer:
         return ParameterPanel::tr("Not used: ARED looks at the gyroscope alone.");
-    if (name == "zv_sigma_gyr_radps" && (detector == DetectorKind::Amvd || detector == DetectorKind::Mbgtd))
+    case FieldScope::DetectorGyroscope:
         return ParameterPanel::tr("Not used: %1 looks at the accelerometer alone.").arg(chosenDetectorLabel(params));
-    if (name == "zv_log_threshold" && params.zv_adaptive)
+    case FieldScope::FixedThreshold:
         return ParameterPanel::tr("Not used: the threshold is adaptive (zv_adaptive is on).");
-    if (!params.zv_adaptive
-        && isOneOf(name, {"zv_adapt_window_s", "zv_adapt_offset_dec", "zv_adapt_fraction", "zv_log_always", "zv_log_never"}))
+    case FieldScope::AdaptiveThreshold:
         return ParameterPanel::tr("Not used: the threshold is fixed (zv_adaptive is off).");
-    if (params.filterStates() == FilterStates::Nine
-        && isOneOf(name, {"q_gyro_bias_radps", "q_acc_bias_mps2", "p0_gyro_bias_radps", "p0_acc_bias_mps2"}))
+    case FieldScope::BiasStates:
         return ParameterPanel::tr("Not used: the 9-state filter has no bias states.");
-    // ZARU measures the gyro bias; with the bias states held at zero it corrects nothing.
-    if (params.filterStates() == FilterStates::Nine && isOneOf(name, {"use_zaru", "r_zaru_radps"}))
+    case FieldScope::Zaru:
+        // ZARU measures the gyro bias; with the bias states held at zero it corrects nothing.
         return ParameterPanel::tr("Not used: ZARU corrects the gyro bias, which the 9-state filter does not estimate.");
+    }
     return {};
 }
 

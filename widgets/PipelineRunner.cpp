@@ -25,17 +25,16 @@ bool PipelineRunner::isRunning() const
 
 void PipelineRunner::cancel()
 {
+    ++latestRequest_;  // nothing running or pending now is reported
     hasPending_ = false;
     pendingRecording_.reset();
-    if (!watcher_.isRunning())
-        return;
-    cancelCurrent_->store(true);
-    discardCurrent_ = true;
+    if (watcher_.isRunning())
+        cancelCurrent_->store(true);
 }
 
 void PipelineRunner::run(std::shared_ptr<const Recording> recording, const Parameters& params)
 {
-    discardCurrent_ = false;
+    ++latestRequest_;
     if (watcher_.isRunning()) {
         // Start the newest request once the old run has stopped; older pending ones are dropped.
         cancelCurrent_->store(true);
@@ -44,11 +43,21 @@ void PipelineRunner::run(std::shared_ptr<const Recording> recording, const Param
         hasPending_ = true;
         return;
     }
+    // The old run may have stopped before its finished signal is handled: a request parked while
+    // it ran is older than this one and must not start after it.
+    hasPending_ = false;
+    pendingRecording_.reset();
+    start(std::move(recording), params, latestRequest_);
+}
+
+void PipelineRunner::start(std::shared_ptr<const Recording> recording, const Parameters& params, std::uint64_t request)
+{
     auto cancel = std::make_shared<std::atomic_bool>(false);
     cancelCurrent_ = cancel;
-    watcher_.setFuture(QtConcurrent::run([recording, params, cancel]() {
+    watcher_.setFuture(QtConcurrent::run([recording, params, cancel, request]() {
         PipelineOutput output = runPipeline(*recording, params, [cancel](double) { return !cancel->load(); });
         Outcome outcome;
+        outcome.request = request;
         outcome.cancelled = output.result.cancelled;
         outcome.error = QString::fromStdString(output.error);
         if (output.error.empty() && !outcome.cancelled)
@@ -59,16 +68,14 @@ void PipelineRunner::run(std::shared_ptr<const Recording> recording, const Param
 
 void PipelineRunner::onRunFinished()
 {
-    const Outcome outcome = watcher_.result();
-    if (discardCurrent_) {
-        discardCurrent_ = false;
-        return;
-    }
     if (hasPending_) {
         hasPending_ = false;
-        run(std::move(pendingRecording_), pendingParams_);
+        start(std::move(pendingRecording_), pendingParams_, latestRequest_);
         return;
     }
+    const Outcome outcome = watcher_.result();
+    if (outcome.request != latestRequest_)
+        return;  // a newer request (or a cancel) came after it
     if (!outcome.error.isEmpty())
         emit failed(outcome.error);
     else if (outcome.result)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstdint>
+
 #include "Recording.h"
 #include "Result.h"
 #include "nav/Parameters.h"
@@ -34,7 +36,9 @@ private:
         std::shared_ptr<const Result> result;
         QString error;
         bool cancelled = false;
+        std::uint64_t request = 0;  ///< which run() asked for it
     };
+    void start(std::shared_ptr<const Recording> recording, const Parameters& params, std::uint64_t request);
     void onRunFinished();
 
     QFutureWatcher<Outcome> watcher_;
@@ -42,7 +46,9 @@ private:
     std::shared_ptr<const Recording> pendingRecording_;
     Parameters pendingParams_;
     bool hasPending_ = false;
-    bool discardCurrent_ = false;  ///< cancelled: its outcome, even if complete, is not reported
+    /// The newest run() (or cancel()): only an outcome of this request is reported, whatever order
+    /// the runs end in and however quickly an old one ends.
+    std::uint64_t latestRequest_ = 0;
 };
 
 }  // namespace footpath

@@ -146,7 +146,7 @@ void StatisticStanceDetector::thresholdReadySamples(bool endOfData, std::deque<S
             return;
         SampleStanceFlags flags;
         flags.logStatistic = centre.logStatistic;
-        flags.logThreshold = thresholdAt(thresholdCentre_);
+        flags.logThreshold = nextThreshold(thresholdCentre_);
         const std::uint8_t atRest = flags.logStatistic < flags.logThreshold ? 1 : 0;
         flags.c1 = flags.c2 = flags.c3 = flags.c = atRest;
         const double windowStart = centre.time_s - thresholdHalf_s_ - kTimeTolerance_s;
@@ -163,25 +163,26 @@ void StatisticStanceDetector::thresholdReadySamples(bool endOfData, std::deque<S
     }
 }
 
-/// Running minimum and maximum of the log statistic over the centred window (monotonic queues:
-/// O(1) per sample); the threshold lies zv_adapt_offset_dec above the minimum plus
+/// The threshold of the next centre (centres come in order: the queues only move forward). Running
+/// minimum and maximum of the log statistic over the centred window (monotonic queues: O(1) per
+/// sample); the threshold lies zv_adapt_offset_dec above the minimum plus
 /// zv_adapt_fraction of the way to the maximum, clamped to the absolute bounds.
-float StatisticStanceDetector::thresholdAt(std::size_t centre)
+float StatisticStanceDetector::nextThreshold(std::size_t centre)
 {
     if (!params_.zv_adaptive)
         return static_cast<float>(params_.zv_log_threshold);
     const double centreTime = scored_[centre - scoredBase_].time_s;
     const auto valueAt = [this](std::size_t index) { return scored_[index - scoredBase_].logStatistic; };
     const std::size_t end = scoredBase_ + scored_.size();
-    while (minimumRight_ < end && scored_[minimumRight_ - scoredBase_].time_s <= centreTime + thresholdHalf_s_ + kTimeTolerance_s) {
-        const float value = valueAt(minimumRight_);
+    while (nextToEnter_ < end && scored_[nextToEnter_ - scoredBase_].time_s <= centreTime + thresholdHalf_s_ + kTimeTolerance_s) {
+        const float value = valueAt(nextToEnter_);
         while (!minimumCandidates_.empty() && valueAt(minimumCandidates_.back()) >= value)
             minimumCandidates_.pop_back();
-        minimumCandidates_.push_back(minimumRight_);
+        minimumCandidates_.push_back(nextToEnter_);
         while (!maximumCandidates_.empty() && valueAt(maximumCandidates_.back()) <= value)
             maximumCandidates_.pop_back();
-        maximumCandidates_.push_back(minimumRight_);
-        ++minimumRight_;
+        maximumCandidates_.push_back(nextToEnter_);
+        ++nextToEnter_;
     }
     const double windowStart = centreTime - thresholdHalf_s_ - kTimeTolerance_s;
     for (std::deque<std::size_t>* candidates : {&minimumCandidates_, &maximumCandidates_})

@@ -28,11 +28,12 @@ double zeroVelocityStatistic(DetectorKind kind, const std::deque<ImuSample>& sam
 /// pushes the whole recording through it, so live and offline flags are the same by construction).
 /// Four stages, each releasing a sample once the samples its window needs have arrived:
 ///  1. the statistic over the centred window of zv_window_s;
-///  2. the threshold: with zv_adaptive, the running minimum of log10 T over the centred
-///     zv_adapt_window_s (about a gait cycle: the quietest moment of the current motion) plus
-///     zv_adapt_offset_dec decades, clamped to [zv_log_always, zv_log_never]: the threshold rises with
-///     the motion, so running gets a threshold of its own, while a standing foot is always at rest and
-///     a moving one never is; without it, zv_log_threshold;
+///  2. the threshold: with zv_adaptive, over the centred zv_adapt_window_s (about a gait cycle) the
+///     running minimum of log10 T (the quietest moment of the current motion) plus
+///     zv_adapt_offset_dec decades plus zv_adapt_fraction of the way to the running maximum (the
+///     busiest), clamped to [zv_log_always, zv_log_never]: the threshold rises with the motion, so
+///     running gets a threshold of its own, while a standing foot is always at rest and a clearly
+///     moving one never is; without it, zv_log_threshold;
 ///  3. the decision log10 T < threshold (c1 = c2 = c3 = c: one statistic, one condition);
 ///  4. stance runs shorter than zv_min_stance_s are dropped (seed 002's thr_time).
 /// The decision trails the newest sample by latency_s(params).
@@ -52,7 +53,7 @@ private:
     };
     void scoreReadySamples(bool endOfData);
     void thresholdReadySamples(bool endOfData, std::deque<SampleStanceFlags>& decided);
-    float thresholdAt(std::size_t centre);
+    float nextThreshold(std::size_t centre);
     void dropShortRuns(const SampleStanceFlags& flags, double time_s, std::deque<SampleStanceFlags>& decided);
     void releaseHeldRun(bool keepAsStance, std::deque<SampleStanceFlags>& decided);
 
@@ -65,12 +66,12 @@ private:
     std::deque<ImuSample> samples_;
     std::size_t statisticCentre_ = 0;
 
-    // Stage 2: scored samples waiting for their threshold window, and a monotonic queue of the
-    // candidates for the running minimum (indices into scored_, offset by scoredBase_).
+    // Stage 2: scored samples waiting for their threshold window, and monotonic queues of the
+    // candidates for the running minimum and maximum (absolute indices: scored_ starts at scoredBase_).
     std::deque<Scored> scored_;
     std::size_t scoredBase_ = 0;
     std::size_t thresholdCentre_ = 0;  ///< absolute index of the next sample to threshold
-    std::size_t minimumRight_ = 0;     ///< absolute index of the next value to enter the minimum
+    std::size_t nextToEnter_ = 0;      ///< absolute index of the next value to enter the queues
     std::deque<std::size_t> minimumCandidates_;
     std::deque<std::size_t> maximumCandidates_;
 

@@ -4,8 +4,6 @@
 
 #include <Eigen/Core>
 
-#include <optional>
-
 namespace footpath {
 
 /// Nominal navigation state carried by the strapdown mechanization.
@@ -49,10 +47,6 @@ public:
     /// ZUPT and ZARU as one 6-row update (eq. 34-35).
     void updateZeroVelocityAndRate(const Eigen::Vector3d& gyr_radps);
 
-    /// The time of the last sample taken as rest, for the stance gate of the pipeline.
-    void markRest(double time_s) { lastRest_s_ = time_s; }
-    std::optional<double> lastRestTime_s() const { return lastRest_s_; }
-
     const NavState& state() const { return state_; }
     const Matrix15& covariance() const { return covariance_; }
     /// Navigation-frame specific force of the last propagation (a_n = C f, eq. 27).
@@ -74,7 +68,6 @@ private:
     Matrix15 covariance_;
     Eigen::Matrix<double, kStates, 1> processVariancePerStep_;  ///< at the 10 ms reference step
     Eigen::Vector3d lastNavAcc_ = Eigen::Vector3d::Zero();
-    std::optional<double> lastRest_s_;
 };
 
 }  // namespace footpath

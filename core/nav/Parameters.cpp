@@ -12,14 +12,19 @@ namespace {
 using K = ParameterField::Kind;
 
 ParameterField real(const char* name, double Parameters::*member, double lo, double hi, const char* unit,
-                    const char* description, const char* group)
+                    const char* description, const char* group, FieldScope scope = FieldScope::Always)
 {
-    return {name, K::Real, member, nullptr, lo, hi, unit, description, group};
+    ParameterField field{name, K::Real, member, nullptr, lo, hi, unit, description, group};
+    field.scope = scope;
+    return field;
 }
 
-ParameterField flag(const char* name, bool Parameters::*member, const char* description, const char* group)
+ParameterField flag(const char* name, bool Parameters::*member, const char* description, const char* group,
+                    FieldScope scope = FieldScope::Always)
 {
-    return {name, K::Flag, nullptr, member, 0.0, 1.0, "", description, group};
+    ParameterField field{name, K::Flag, nullptr, member, 0.0, 1.0, "", description, group};
+    field.scope = scope;
+    return field;
 }
 
 ParameterField choice(const char* name, int Parameters::*member, std::vector<const char*> names,
@@ -44,42 +49,40 @@ std::vector<ParameterField> makeFields()
                {"C1/C2/C3 (Guo 2015)", "SHOE (GLRT)", "ARED (angular rate energy)", "AMVD (acceleration variance)",
                 "MBGTD (graph theoretic)"},
                "Statistic that decides the foot is at rest", "Detector"),
-        real("zv_window_s", &P::zv_window_s, 0.0, 1.0, "s", "Window of the detector statistic", "Detector"),
-        real("zv_sigma_acc_mps2", &P::zv_sigma_acc_mps2, 1e-5, 10.0, "m/s^2", "Accelerometer noise the statistic is normalised by", "Detector"),
-        real("zv_sigma_gyr_radps", &P::zv_sigma_gyr_radps, 1e-6, 1.0, "rad/s", "Gyroscope noise the statistic is normalised by", "Detector"),
-        flag("zv_adaptive", &P::zv_adaptive, "Threshold follows the motion (off: a fixed threshold)", "Detector"),
-        real("zv_log_threshold", &P::zv_log_threshold, -5.0, 15.0, "log10", "Fixed threshold on the statistic (log10), when not adaptive", "Detector"),
-        real("zv_adapt_window_s", &P::zv_adapt_window_s, 0.1, 10.0, "s", "Adaptive: window of the running minimum (about one gait cycle)", "Detector"),
-        real("zv_adapt_offset_dec", &P::zv_adapt_offset_dec, 0.0, 5.0, "decades", "Adaptive: threshold above the running minimum", "Detector"),
-        real("zv_adapt_fraction", &P::zv_adapt_fraction, 0.0, 1.0, "x", "Adaptive: threshold this fraction of the way from the running minimum to the maximum", "Detector"),
-        real("zv_log_always", &P::zv_log_always, -5.0, 15.0, "log10", "Adaptive: below this the foot is always at rest", "Detector"),
-        real("zv_log_never", &P::zv_log_never, -5.0, 15.0, "log10", "Adaptive: above this the foot is never at rest", "Detector"),
-        real("zv_min_stance_s", &P::zv_min_stance_s, 0.0, 2.0, "s", "Shorter stance runs are dropped", "Detector"),
-        real("acc_min_mps2", &P::acc_min_mps2, 0.0, 50.0, "m/s^2", "C1: lower bound on |a|", "Detector"),
-        real("acc_max_mps2", &P::acc_max_mps2, 0.0, 200.0, "m/s^2", "C1: upper bound on |a|", "Detector"),
-        real("acc_std_max_mps2", &P::acc_std_max_mps2, 0.0, 20.0, "m/s^2", "C2: std of |a| over the window must be below", "Detector"),
-        real("window_half_s", &P::window_half_s, 0.0, 2.0, "s", "C2: half-window of the centred std", "Detector"),
-        real("gyr_max_radps", &P::gyr_max_radps, 0.0, 20.0, "rad/s", "C3: upper bound on |w|", "Detector"),
-        real("median_window_s", &P::median_window_s, 0.0, 2.0, "s", "Median filter length applied to C", "Detector"),
+        real("zv_window_s", &P::zv_window_s, 0.0, 1.0, "s", "Window of the detector statistic", "Detector", FieldScope::StatisticDetectors),
+        real("zv_sigma_acc_mps2", &P::zv_sigma_acc_mps2, 1e-5, 10.0, "m/s^2", "Accelerometer noise the statistic is normalised by", "Detector", FieldScope::DetectorAccelerometer),
+        real("zv_sigma_gyr_radps", &P::zv_sigma_gyr_radps, 1e-6, 1.0, "rad/s", "Gyroscope noise the statistic is normalised by", "Detector", FieldScope::DetectorGyroscope),
+        flag("zv_adaptive", &P::zv_adaptive, "Threshold follows the motion (off: a fixed threshold)", "Detector", FieldScope::StatisticDetectors),
+        real("zv_log_threshold", &P::zv_log_threshold, -5.0, 15.0, "log10", "Fixed threshold on the statistic (log10), when not adaptive", "Detector", FieldScope::FixedThreshold),
+        real("zv_adapt_window_s", &P::zv_adapt_window_s, 0.1, 10.0, "s", "Adaptive: window of the running minimum (about one gait cycle)", "Detector", FieldScope::AdaptiveThreshold),
+        real("zv_adapt_offset_dec", &P::zv_adapt_offset_dec, 0.0, 5.0, "decades", "Adaptive: threshold above the running minimum", "Detector", FieldScope::AdaptiveThreshold),
+        real("zv_adapt_fraction", &P::zv_adapt_fraction, 0.0, 1.0, "x", "Adaptive: threshold this fraction of the way from the running minimum to the maximum", "Detector", FieldScope::AdaptiveThreshold),
+        real("zv_log_always", &P::zv_log_always, -5.0, 15.0, "log10", "Adaptive: below this the foot is always at rest", "Detector", FieldScope::AdaptiveThreshold),
+        real("zv_log_never", &P::zv_log_never, -5.0, 15.0, "log10", "Adaptive: above this the foot is never at rest", "Detector", FieldScope::AdaptiveThreshold),
+        real("zv_min_stance_s", &P::zv_min_stance_s, 0.0, 2.0, "s", "Shorter stance runs are dropped", "Detector", FieldScope::StatisticDetectors),
+        real("acc_min_mps2", &P::acc_min_mps2, 0.0, 50.0, "m/s^2", "C1: lower bound on |a|", "Detector", FieldScope::PaperDetector),
+        real("acc_max_mps2", &P::acc_max_mps2, 0.0, 200.0, "m/s^2", "C1: upper bound on |a|", "Detector", FieldScope::PaperDetector),
+        real("acc_std_max_mps2", &P::acc_std_max_mps2, 0.0, 20.0, "m/s^2", "C2: std of |a| over the window must be below", "Detector", FieldScope::PaperDetector),
+        real("window_half_s", &P::window_half_s, 0.0, 2.0, "s", "C2: half-window of the centred std", "Detector", FieldScope::PaperDetector),
+        real("gyr_max_radps", &P::gyr_max_radps, 0.0, 20.0, "rad/s", "C3: upper bound on |w|", "Detector", FieldScope::PaperDetector),
+        real("median_window_s", &P::median_window_s, 0.0, 2.0, "s", "Median filter length applied to C", "Detector", FieldScope::PaperDetector),
         choice("filter_states", &P::filter_states, {"15", "9"},
                {"15 states (with biases)", "9 states (no bias states)"},
                "Error-state filter size: 15 estimates the sensor biases, 9 holds them at zero", "Filter"),
-        real("zupt_gate_mps", &P::zupt_gate_mps, 0.0, 20.0, "m/s", "A detected stance with a faster predicted foot speed is taken as swing (0: off)", "Filter"),
-        real("zupt_gate_window_s", &P::zupt_gate_window_s, 0.0, 10.0, "s", "The speed gate applies this long after the last rest", "Filter"),
         flag("use_zupt", &P::use_zupt, "Zero-velocity update during stance", "Measurements"),
-        flag("use_zaru", &P::use_zaru, "Zero angular rate update during stance", "Measurements"),
+        flag("use_zaru", &P::use_zaru, "Zero angular rate update during stance", "Measurements", FieldScope::Zaru),
         real("q_att_rad", &P::q_att_rad, 0.0, 1.0, "rad", "Q attitude, std per 10 ms", "Process noise"),
-        real("q_gyro_bias_radps", &P::q_gyro_bias_radps, 0.0, 1.0, "rad/s", "Q gyro bias, std per 10 ms", "Process noise"),
+        real("q_gyro_bias_radps", &P::q_gyro_bias_radps, 0.0, 1.0, "rad/s", "Q gyro bias, std per 10 ms", "Process noise", FieldScope::BiasStates),
         real("q_pos_m", &P::q_pos_m, 0.0, 1.0, "m", "Q position, std per 10 ms", "Process noise"),
         real("q_vel_mps", &P::q_vel_mps, 0.0, 1.0, "m/s", "Q velocity, std per 10 ms", "Process noise"),
-        real("q_acc_bias_mps2", &P::q_acc_bias_mps2, 0.0, 1.0, "m/s^2", "Q accelerometer bias, std per 10 ms", "Process noise"),
+        real("q_acc_bias_mps2", &P::q_acc_bias_mps2, 0.0, 1.0, "m/s^2", "Q accelerometer bias, std per 10 ms", "Process noise", FieldScope::BiasStates),
         real("r_zupt_mps", &P::r_zupt_mps, 1e-6, 10.0, "m/s", "R ZUPT, std", "Measurement noise"),
-        real("r_zaru_radps", &P::r_zaru_radps, 1e-6, 10.0, "rad/s", "R ZARU, std", "Measurement noise"),
+        real("r_zaru_radps", &P::r_zaru_radps, 1e-6, 10.0, "rad/s", "R ZARU, std", "Measurement noise", FieldScope::Zaru),
         real("p0_att_rad", &P::p0_att_rad, 0.0, 10.0, "rad", "P0 attitude, std", "Initial covariance"),
-        real("p0_gyro_bias_radps", &P::p0_gyro_bias_radps, 0.0, 10.0, "rad/s", "P0 gyro bias, std", "Initial covariance"),
+        real("p0_gyro_bias_radps", &P::p0_gyro_bias_radps, 0.0, 10.0, "rad/s", "P0 gyro bias, std", "Initial covariance", FieldScope::BiasStates),
         real("p0_pos_m", &P::p0_pos_m, 0.0, 100.0, "m", "P0 position, std", "Initial covariance"),
         real("p0_vel_mps", &P::p0_vel_mps, 0.0, 100.0, "m/s", "P0 velocity, std", "Initial covariance"),
-        real("p0_acc_bias_mps2", &P::p0_acc_bias_mps2, 0.0, 100.0, "m/s^2", "P0 accelerometer bias, std", "Initial covariance"),
+        real("p0_acc_bias_mps2", &P::p0_acc_bias_mps2, 0.0, 100.0, "m/s^2", "P0 accelerometer bias, std", "Initial covariance", FieldScope::BiasStates),
     };
 }
 
@@ -178,6 +181,51 @@ std::string setChoice(Parameters& params, const ParameterField& field, const std
 }
 
 }  // namespace
+
+namespace {
+
+bool statisticReadsAccelerometer(DetectorKind kind)
+{
+    return kind != DetectorKind::Ared;
+}
+
+bool statisticReadsGyroscope(DetectorKind kind)
+{
+    return kind == DetectorKind::Shoe || kind == DetectorKind::Ared;
+}
+
+}  // namespace
+
+FieldScope unmetScope(const ParameterField& field, const Parameters& params)
+{
+    using S = FieldScope;
+    const DetectorKind detector = params.detectorKind();
+    const bool paper = detector == DetectorKind::PaperC1C2C3;
+    const bool fifteen = params.filterStates() == FilterStates::Fifteen;
+    switch (field.scope) {
+    case S::Always:
+        return S::Always;
+    case S::PaperDetector:
+        return paper ? S::Always : S::PaperDetector;
+    case S::StatisticDetectors:
+    case S::DetectorAccelerometer:
+    case S::DetectorGyroscope:
+    case S::FixedThreshold:
+    case S::AdaptiveThreshold:
+        break;
+    case S::BiasStates:
+    case S::Zaru:
+        return fifteen ? S::Always : field.scope;
+    }
+    if (paper)
+        return S::StatisticDetectors;
+    const bool met = field.scope == S::StatisticDetectors
+                     || (field.scope == S::DetectorAccelerometer && statisticReadsAccelerometer(detector))
+                     || (field.scope == S::DetectorGyroscope && statisticReadsGyroscope(detector))
+                     || (field.scope == S::FixedThreshold && !params.zv_adaptive)
+                     || (field.scope == S::AdaptiveThreshold && params.zv_adaptive);
+    return met ? S::Always : field.scope;
+}
 
 bool operator==(const Parameters& a, const Parameters& b)
 {

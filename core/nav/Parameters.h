@@ -55,8 +55,6 @@ struct Parameters {
     // Filter
     int filter_states = static_cast<int>(FilterStates::Nine);  ///< measured better (README, "Filter structure")
 
-    double zupt_gate_mps = 0.0;          ///< a stance with a faster predicted foot is swing (0: off)
-    double zupt_gate_window_s = 1.5;     ///< ... when the last rest is at most this long ago
 
     // Measurement sources
     bool use_zupt = true;
@@ -92,6 +90,21 @@ struct Parameters {
 /// differ where measurement on real walks said so (README, "Accuracy").
 Parameters guo2015Parameters();
 
+/// When the pipeline reads a field: always, or only with some values of the other fields. Kept in
+/// the field table, so a new field states it where it is declared and every front end (the panel
+/// greys what is not read) follows.
+enum class FieldScope {
+    Always,
+    PaperDetector,           ///< detector c1c2c3
+    StatisticDetectors,      ///< shoe, ared, amvd, mbgtd
+    DetectorAccelerometer,   ///< a statistic that reads the accelerometer (not ARED)
+    DetectorGyroscope,       ///< a statistic that reads the gyroscope (SHOE, ARED)
+    FixedThreshold,          ///< a statistic detector with zv_adaptive off
+    AdaptiveThreshold,       ///< a statistic detector with zv_adaptive on
+    BiasStates,              ///< the 15-state filter
+    Zaru,                    ///< the 15-state filter: ZARU corrects the gyro bias states
+};
+
 /// Description of one field, so every front end walks the same list.
 struct ParameterField {
     enum class Kind { Real, Flag, Choice };
@@ -107,10 +120,16 @@ struct ParameterField {
     int Parameters::*choice = nullptr;  ///< set when kind == Choice: an index into choiceNames
     std::vector<const char*> choiceNames = {};  ///< names of the choices, as presets and --set spell them
     std::vector<const char*> choiceLabels = {};  ///< what a user reads ("SHOE (GLRT)")
+    FieldScope scope = FieldScope::Always;
 };
 
 const std::vector<ParameterField>& parameterFields();
 const ParameterField* findParameterField(const std::string& name);
+
+/// The first condition of field's scope that params does not meet (a statistic-detector field under
+/// the C1/C2/C3 detector gives StatisticDetectors, even if it is also a fixed-threshold one);
+/// Always when the pipeline reads the field with these parameters.
+FieldScope unmetScope(const ParameterField& field, const Parameters& params);
 
 /// Equal in every field of parameterFields().
 bool operator==(const Parameters& a, const Parameters& b);

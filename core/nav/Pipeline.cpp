@@ -59,33 +59,18 @@ void applyStanceUpdates(ErrorStateEkf& ekf, const ImuSample& sample, const Param
         ekf.updateZeroAngularRate(sample.gyr_radps);
 }
 
-/// A detected stance the filter does not believe: shortly after the last rest the drift is small,
-/// so a predicted foot speed above zupt_gate_mps means the foot is in its swing (a quiet moment of
-/// it fooled the detector). Long after the last rest the prediction has drifted and proves nothing:
-/// the stance is taken, and the filter recovers there.
-bool movingTooFastForRest(const ErrorStateEkf& ekf, double time_s, const Parameters& params)
-{
-    if (params.zupt_gate_mps <= 0.0)
-        return false;
-    const std::optional<double> lastRest = ekf.lastRestTime_s();
-    if (!lastRest || time_s - *lastRest > params.zupt_gate_window_s)
-        return false;
-    return ekf.state().velocity_mps.norm() > params.zupt_gate_mps;
-}
-
 /// Runs the filter over every sample; returns false if the callback cancelled.
-bool runFilter(const Recording& recording, const Parameters& params, const ProgressCallback& progress,
-               Result& result)
+bool runFilter(const Recording& recording, const Parameters& params, const StanceFlags& flags,
+               const ProgressCallback& progress, Result& result)
 {
     const std::vector<ImuSample>& samples = recording.samples;
-    const StanceFlags& flags = result.flags;
     const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
     ErrorStateEkf ekf(params, alignment.bodyToNav);
     reserveResult(result, samples.size());
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const std::optional<double> previousTime_s =
             k > 0 ? std::optional<double>(samples[k - 1].time_s) : std::nullopt;
-        result.flags.stance[k] = filterSample(ekf, samples[k], previousTime_s, flags.stance[k] != 0, params, result);
+        filterSample(ekf, samples[k], previousTime_s, flags.stance[k] != 0, params, result);
         if (progress && k % kProgressInterval == 0 && !progress(static_cast<double>(k) / static_cast<double>(samples.size())))
             return false;
     }
@@ -110,18 +95,14 @@ Step makeStep(const Result& result, std::size_t first, std::size_t last)
 
 }  // namespace
 
-bool filterSample(ErrorStateEkf& ekf, const ImuSample& sample, std::optional<double> previousTime_s, bool stance,
+void filterSample(ErrorStateEkf& ekf, const ImuSample& sample, std::optional<double> previousTime_s, bool stance,
                   const Parameters& params, Result& result)
 {
     if (previousTime_s)
         ekf.propagate(sample.acc_mps2, sample.gyr_radps, sample.time_s - *previousTime_s);
-    const bool atRest = stance && !movingTooFastForRest(ekf, sample.time_s, params);
-    if (atRest) {
+    if (stance)
         applyStanceUpdates(ekf, sample, params);
-        ekf.markRest(sample.time_s);
-    }
     recordState(result, sample.time_s, ekf.state());
-    return atRest;
 }
 
 void appendStep(Result& result, std::size_t first, std::size_t last)
@@ -175,7 +156,7 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
     const auto start = std::chrono::steady_clock::now();
     Result& result = output.result;
     result.flags = detectStance(recording.samples, params);
-    if (!runFilter(recording, params, progress, result)) {
+    if (!runFilter(recording, params, result.flags, progress, result)) {
         result.cancelled = true;
         return output;
     }

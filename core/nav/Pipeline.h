@@ -35,10 +35,9 @@ void fillStepsAndSummary(Result& result);
 // gives the same numbers as runPipeline.
 
 /// The filter's work on one sample: propagation over the time since the previous sample (none for
-/// the first), ZUPT/ZARU as enabled when the detector says stance and the filter agrees (see
-/// zupt_gate_mps), then the state appended to result (the stance flags are the caller's to append).
-/// Returns whether the sample was taken as rest: the final stance flag.
-bool filterSample(ErrorStateEkf& ekf, const ImuSample& sample, std::optional<double> previousTime_s, bool stance,
+/// the first), ZUPT/ZARU as enabled when the foot is at rest, then the state appended to result
+/// (the stance flags are the caller's to append).
+void filterSample(ErrorStateEkf& ekf, const ImuSample& sample, std::optional<double> previousTime_s, bool stance,
                   const Parameters& params, Result& result);
 
 /// Appends the stance phase of samples [first, last) of result as a step, with its stride from the

@@ -154,21 +154,21 @@ void checkSpeed(const Result& result, const PlausibilityLimits& limits, std::vec
 
 void checkStanceShare(const Result& result, const PlausibilityLimits& limits, std::vector<PlausibilityWarning>& out)
 {
-    const std::vector<std::uint8_t>& stance = result.flags.stance;
-    const auto moving = runsWhere(stance.size(), [&](std::size_t k) {
-        return result.velocity_mps[k].norm() > limits.movingSpeed_mps;
-    });
-    if (moving.empty())
+    // From the first to the last moment the foot moves: standing before and after is no gait.
+    const auto moving = [&](const Eigen::Vector3d& v) { return v.norm() > limits.movingSpeed_mps; };
+    const auto firstMoving = std::find_if(result.velocity_mps.begin(), result.velocity_mps.end(), moving);
+    if (firstMoving == result.velocity_mps.end())
         return;
-    const std::size_t first = moving.front().first;
-    const std::size_t last = moving.back().second;
-    double stanceTime = 0.0;
-    for (std::size_t k = first + 1; k < last; ++k)
-        if (stance[k])
-            stanceTime += result.time_s[k] - result.time_s[k - 1];
+    const auto lastMoving = std::find_if(result.velocity_mps.rbegin(), result.velocity_mps.rend(), moving);
+    const auto first = static_cast<std::size_t>(firstMoving - result.velocity_mps.begin());
+    const auto last = static_cast<std::size_t>(result.velocity_mps.rend() - lastMoving);  // one past
     const double span = result.time_s[last - 1] - result.time_s[first];
     if (span < 5.0)
         return;  // too short a walk to judge a share
+    double stanceTime = 0.0;
+    for (std::size_t k = first + 1; k < last; ++k)
+        if (result.flags.stance[k])
+            stanceTime += result.time_s[k] - result.time_s[k - 1];
     const double share = stanceTime / span;
     if (share < limits.minStanceShare || share > limits.maxStanceShare)
         out.push_back({Kind::StanceRatio, result.time_s[first], result.time_s[last - 1],

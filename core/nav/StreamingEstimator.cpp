@@ -136,14 +136,13 @@ void StreamingEstimator::Impl::estimateDecided()
 
 void StreamingEstimator::Impl::estimate(const ImuSample& sample, const SampleStanceFlags& flags)
 {
-    SampleStanceFlags final = flags;
-    final.stance = filterSample(*ekf, sample, previousTime_s, flags.stance != 0, params, result) ? 1 : 0;
-    appendFlags(result.flags, final);
+    filterSample(*ekf, sample, previousTime_s, flags.stance != 0, params, result);
+    appendFlags(result.flags, flags);
     previousTime_s = sample.time_s;
     const std::size_t k = result.time_s.size() - 1;
-    if (final.stance && !stancePhaseStart)
+    if (flags.stance && !stancePhaseStart)
         stancePhaseStart = k;
-    else if (!final.stance && stancePhaseStart)
+    else if (!flags.stance && stancePhaseStart)
         closeStancePhase(k);
 }
 
