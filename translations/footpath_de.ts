@@ -613,8 +613,8 @@
         <translation>Fertig: jeder Abtastwert geschätzt, wie in der Offline-Analyse</translation>
     </message>
     <message>
-        <source>The stance detector looks this far ahead (its windows are centred on each sample), so the estimate trails the sensor by this fixed delay.</source>
-        <translation>Der Standphasendetektor blickt so weit voraus (seine Fenster sind um jeden Abtastwert zentriert), daher folgt die Schätzung dem Sensor mit dieser festen Verzögerung.</translation>
+        <source>The stance detector looks this far ahead (its windows are centred on each sample, and a stance is confirmed once it has lasted the minimum duration), so the estimate trails the sensor by up to this delay.</source>
+        <translation>Der Standphasendetektor blickt so weit voraus (seine Fenster sind um jeden Abtastwert zentriert, und eine Standphase gilt erst nach ihrer Mindestdauer als bestätigt), daher folgt die Schätzung dem Sensor mit bis zu dieser Verzögerung.</translation>
     </message>
 </context>
 <context>

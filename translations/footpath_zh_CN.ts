@@ -613,8 +613,8 @@
         <translation>完成：所有采样均已估计，与离线分析一致</translation>
     </message>
     <message>
-        <source>The stance detector looks this far ahead (its windows are centred on each sample), so the estimate trails the sensor by this fixed delay.</source>
-        <translation>支撑相检测器需要向前看这么长的时间（其窗口以每个采样点为中心），因此估计结果以这一固定延迟滞后于传感器。</translation>
+        <source>The stance detector looks this far ahead (its windows are centred on each sample, and a stance is confirmed once it has lasted the minimum duration), so the estimate trails the sensor by up to this delay.</source>
+        <translation>支撑相检测器需要向前看这么长的时间（其窗口以每个采样点为中心，且支撑相持续到最短时长后才被确认），因此估计结果最多以这一延迟滞后于传感器。</translation>
     </message>
 </context>
 <context>

@@ -192,8 +192,9 @@ QWidget* LivePanel::buildEstimateBox()
     auto* form = new QFormLayout(box);
     latency_ = valueLabel(box);
     latency_->setObjectName(QStringLiteral("liveLatency"));
-    latency_->setToolTip(tr("The stance detector looks this far ahead (its windows are centred on each sample), "
-                            "so the estimate trails the sensor by this fixed delay."));
+    latency_->setToolTip(tr("The stance detector looks this far ahead (its windows are centred on each sample, and a "
+                            "stance is confirmed once it has lasted the minimum duration), so the estimate trails the "
+                            "sensor by up to this delay."));
     estimateState_ = valueLabel(box);
     estimateState_->setWordWrap(true);
     steps_ = valueLabel(box);

@@ -38,11 +38,11 @@ struct Parameters {
     bool zv_adaptive = true;             ///< threshold follows the motion; off: zv_log_threshold
     double zv_log_threshold = 4.5;       ///< fixed threshold, log10 of the normalised statistic
     double zv_adapt_window_s = 1.5;      ///< running minimum/maximum of the log statistic over this centred window
-    double zv_adapt_offset_dec = 0.5;    ///< threshold = running minimum + this many decades
+    double zv_adapt_offset_dec = 0.1;    ///< threshold = running minimum + this many decades
     double zv_adapt_fraction = 0.3;      ///< ... + this fraction of the way to the running maximum
-    double zv_log_always = 2.0;          ///< below this (log10) the foot is always at rest
-    double zv_log_never = 5.5;           ///< above this (log10) it never is
-    double zv_min_stance_s = 0.0;        ///< shorter stance runs are dropped (seed 002's thr_time)
+    double zv_log_always = 3.5;          ///< below this (log10) the foot is always at rest
+    double zv_log_never = 6.5;           ///< above this (log10) it never is
+    double zv_min_stance_s = 0.05;       ///< shorter stance runs are dropped (seed 002's thr_time)
 
     // C1/C2/C3 stance detector (Guo 2015, section 2.3), used when detector is PaperC1C2C3
     double acc_min_mps2 = 9.0;       ///< C1 lower bound on |a|
