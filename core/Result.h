@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -43,6 +44,23 @@ struct PlausibilityWarning {
 /// Stable identifier of a warning kind for JSON and CSV ("long_swing").
 const char* warningKindName(PlausibilityWarning::Kind kind);
 
+/// What a measurement method did or did not do over a span: "skipped: the field is 40 % stronger
+/// than at alignment (steel nearby)", "not applied: the walk has no straight stretch along an axis".
+/// Shown with the method's lane and listed in the summary, so a method that sat out says so.
+struct MethodNote {
+    std::string method;    ///< the source's short name ("mag", "iper")
+    double start_s = 0.0;
+    double end_s = 0.0;
+    std::string message;
+};
+
+/// Seed 004's per-step motion class, from the barometric height change and the pressure variance
+/// between steps (Unknown without a barometer).
+enum class MotionClass { Unknown, Level, StairsUp, StairsDown, ElevatorUp, ElevatorDown };
+
+/// Stable identifier for JSON and CSV ("stairs_up").
+const char* motionClassName(MotionClass motion);
+
 /// One stance phase and the stride that led to it.
 struct Step {
     double stanceStart_s = 0.0;
@@ -50,6 +68,8 @@ struct Step {
     Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< mean position during the stance
     double strideLength_m = 0.0;    ///< horizontal distance from the previous stance (0 for the first)
     double strideDuration_s = 0.0;  ///< time since the previous stance started (0 for the first)
+    MotionClass motion = MotionClass::Unknown;
+    double baroHeight_m = std::nan("");  ///< barometric height at the stance against the first one; NaN without pressure
 };
 
 struct Summary {
@@ -61,6 +81,12 @@ struct Summary {
     double endToStart_m = 0.0;       ///< horizontal distance between first and last position
     double endToStartPct = 0.0;      ///< endToStart_m as % of pathLength_m (0 if no path)
     double runtime_s = 0.0;          ///< estimation alone, without file I/O
+    // Seed 004's motion classes, counted over the steps (all zero without a barometer)
+    std::size_t stairStepsUp = 0;
+    std::size_t stairStepsDown = 0;
+    std::size_t elevatorRides = 0;      ///< consecutive elevator steps count as one ride
+    double stairsClimb_m = 0.0;         ///< height gained on stairs (positive) ...
+    double stairsDescent_m = 0.0;       ///< ... and lost (positive)
 };
 
 /// Everything the views, exporters and the CLI need, so none of them recomputes estimation.
@@ -77,6 +103,8 @@ struct Result {
     /// Findings of the plausibility checks (core/nav/Plausibility.h), in time order. Empty when the
     /// result looks like human walking or running.
     std::vector<PlausibilityWarning> warnings;
+    /// What the optional measurement methods did or skipped, in time order per method.
+    std::vector<MethodNote> methodNotes;
     bool cancelled = false;  ///< the progress callback asked to stop; the vectors are partial
 };
 

@@ -207,15 +207,42 @@ void TestParameters::fieldNames_mapToTheirMembers()
         {"p0_pos_m", &Parameters::p0_pos_m},
         {"p0_vel_mps", &Parameters::p0_vel_mps},
         {"p0_acc_bias_mps2", &Parameters::p0_acc_bias_mps2},
+        {"hdr_lag_s", &Parameters::hdr_lag_s},
+        {"hdr_threshold_rad", &Parameters::hdr_threshold_rad},
+        {"r_hdr_rad", &Parameters::r_hdr_rad},
+        {"iper_axis_rad", &Parameters::iper_axis_rad},
+        {"iper_threshold_rad", &Parameters::iper_threshold_rad},
+        {"iper_window_s", &Parameters::iper_window_s},
+        {"r_iper_m", &Parameters::r_iper_m},
+        {"r_iper_height_m", &Parameters::r_iper_height_m},
+        {"zuna_reference_s", &Parameters::zuna_reference_s},
+        {"zuna_min_stance_s", &Parameters::zuna_min_stance_s},
+        {"zuna_margin_dec", &Parameters::zuna_margin_dec},
+        {"r_zuna_mps2", &Parameters::r_zuna_mps2},
+        {"baro_linear_m_per_pa", &Parameters::baro_linear_m_per_pa},
+        {"r_baro_m", &Parameters::r_baro_m},
+        {"motion_level_max_m", &Parameters::motion_level_max_m},
+        {"motion_elevator_var_pa2", &Parameters::motion_elevator_var_pa2},
+        {"r_mag_rad", &Parameters::r_mag_rad},
+        {"mag_norm_tolerance", &Parameters::mag_norm_tolerance},
+        {"mag_dip_tolerance_rad", &Parameters::mag_dip_tolerance_rad},
     };
     const std::pair<const char*, bool Parameters::*> flags[] = {
         {"use_zupt", &Parameters::use_zupt},
         {"use_zaru", &Parameters::use_zaru},
         {"zv_adaptive", &Parameters::zv_adaptive},
+        {"use_hdr", &Parameters::use_hdr},
+        {"use_iper", &Parameters::use_iper},
+        {"use_zuna", &Parameters::use_zuna},
+        {"use_baro", &Parameters::use_baro},
+        {"use_mag_heading", &Parameters::use_mag_heading},
+        {"iper_axis_auto", &Parameters::iper_axis_auto},
     };
     const std::pair<const char*, int Parameters::*> choices[] = {
         {"detector", &Parameters::detector},
         {"filter_states", &Parameters::filter_states},
+        {"estimator", &Parameters::estimator},
+        {"baro_model", &Parameters::baro_model},
     };
     QCOMPARE(footpath::parameterFields().size(), std::size(reals) + std::size(flags) + std::size(choices));
     for (const auto& [name, member] : choices) {

@@ -505,6 +505,20 @@ QString notUsedBecause(const ParameterField& field, const Parameters& params)
     case FieldScope::Zaru:
         // ZARU measures the gyro bias; with the bias states held at zero it corrects nothing.
         return ParameterPanel::tr("Not used: ZARU corrects the gyro bias, which the 9-state filter does not estimate.");
+    case FieldScope::Hdr:
+        return ParameterPanel::tr("Not used: HDR is off (use_hdr).");
+    case FieldScope::Iper:
+        return ParameterPanel::tr("Not used: IPER is off (use_iper).");
+    case FieldScope::IperFixedAxis:
+        return ParameterPanel::tr("Not used: the axis is estimated from the walk (iper_axis_auto is on).");
+    case FieldScope::Zuna:
+        return ParameterPanel::tr("Not used: ZUNA is off (use_zuna).");
+    case FieldScope::Barometer:
+        return ParameterPanel::tr("Not used: the barometer is off (use_baro).");
+    case FieldScope::LinearBarometer:
+        return ParameterPanel::tr("Not used: the barometric formula is chosen, not the linear constant.");
+    case FieldScope::MagHeading:
+        return ParameterPanel::tr("Not used: the magnetometer heading update is off (use_mag_heading).");
     }
     return {};
 }

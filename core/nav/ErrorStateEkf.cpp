@@ -187,6 +187,21 @@ void ErrorStateEkf::updateZeroVelocityAndRate(const Eigen::Vector3d& gyr_radps)
     update<6>(blocks, innovation, variance);
 }
 
+void ErrorStateEkf::updateRows(const Eigen::MatrixXd& h, const Eigen::VectorXd& innovation,
+                               const Eigen::VectorXd& noiseVariance)
+{
+    const Eigen::MatrixXd pht = covariance_ * h.transpose();
+    Eigen::MatrixXd s = h * pht;
+    s.diagonal() += noiseVariance;
+    const Eigen::MatrixXd gain = s.ldlt().solve(pht.transpose()).transpose();
+    const Vector15 dx = gain * innovation;
+    // Joseph form, as in the block update.
+    const Matrix15 iMinusKh = Matrix15::Identity() - gain * h;
+    Matrix15 p = iMinusKh * covariance_ * iMinusKh.transpose() + gain * noiseVariance.asDiagonal() * gain.transpose();
+    covariance_ = 0.5 * (p + p.transpose());
+    applyCorrection(dx);
+}
+
 void ErrorStateEkf::applyCorrection(const Vector15& dx)
 {
     // Eq. 12-15 with the sign that matches dphi = estimate - truth: C_true = (I - S(dphi)) C_est,

@@ -3,6 +3,7 @@
 #include "nav/Parameters.h"
 
 #include <Eigen/Core>
+#include <Eigen/Dense>
 
 namespace footpath {
 
@@ -46,6 +47,11 @@ public:
     void updateZeroAngularRate(const Eigen::Vector3d& gyr_radps);
     /// ZUPT and ZARU as one 6-row update (eq. 34-35).
     void updateZeroVelocityAndRate(const Eigen::Vector3d& gyr_radps);
+    /// Any other measurement, z = H dx + noise: innovation is the predicted minus the measured value
+    /// in the error convention above (so dx = estimate - truth gives z = H dx), H dense (rows x 15),
+    /// noiseVariance one R entry per row. For the sources that see parts of blocks (a yaw row alone,
+    /// one horizontal axis); dense, so meant for a few updates per stride, not every sample.
+    void updateRows(const Eigen::MatrixXd& h, const Eigen::VectorXd& innovation, const Eigen::VectorXd& noiseVariance);
 
     const NavState& state() const { return state_; }
     const Matrix15& covariance() const { return covariance_; }

@@ -28,13 +28,15 @@ ParameterField flag(const char* name, bool Parameters::*member, const char* desc
 }
 
 ParameterField choice(const char* name, int Parameters::*member, std::vector<const char*> names,
-                      std::vector<const char*> labels, const char* description, const char* group)
+                      std::vector<const char*> labels, const char* description, const char* group,
+                      FieldScope scope = FieldScope::Always)
 {
     ParameterField field{name, K::Choice, nullptr, nullptr, 0.0, static_cast<double>(names.size() - 1), "",
                          description, group};
     field.choice = member;
     field.choiceNames = std::move(names);
     field.choiceLabels = std::move(labels);
+    field.scope = scope;
     return field;
 }
 
@@ -69,8 +71,37 @@ std::vector<ParameterField> makeFields()
         choice("filter_states", &P::filter_states, {"15", "9"},
                {"15 states (with biases)", "9 states (no bias states)"},
                "Error-state filter size: 15 estimates the sensor biases, 9 holds them at zero", "Filter"),
+        choice("estimator", &P::estimator, {"ekf", "feliz"}, {"Kalman filter", "Feliz de-drift (no filter)"},
+               "Kalman filter with the measurements below, or Feliz 2009's per-stride velocity de-drift", "Measurements"),
         flag("use_zupt", &P::use_zupt, "Zero-velocity update during stance", "Measurements"),
         flag("use_zaru", &P::use_zaru, "Zero angular rate update during stance", "Measurements", FieldScope::Zaru),
+        flag("use_hdr", &P::use_hdr, "Heuristic drift reduction: heading held on straight walks (seed 002)", "Measurements"),
+        flag("use_iper", &P::use_iper, "Position error reduction: walks along the building's axes, level floor (seed 002; assumes a rectilinear building)", "Measurements"),
+        flag("use_zuna", &P::use_zuna, "Zero navigation acceleration at mid-stance (seed 002)", "Measurements"),
+        flag("use_baro", &P::use_baro, "Barometric height at each stance (seed 004)", "Measurements"),
+        flag("use_mag_heading", &P::use_mag_heading, "Magnetometer heading during stance, skipped near steel", "Measurements"),
+        real("hdr_lag_s", &P::hdr_lag_s, 0.05, 10.0, "s", "HDR: heading compared with the heading this long ago", "HDR", FieldScope::Hdr),
+        real("hdr_threshold_rad", &P::hdr_threshold_rad, 0.0, 1.0, "rad", "HDR: a smaller heading change is drift, a larger one a turn", "HDR", FieldScope::Hdr),
+        real("r_hdr_rad", &P::r_hdr_rad, 1e-6, 1.0, "rad", "HDR: R of the heading measurement, std", "HDR", FieldScope::Hdr),
+        flag("iper_axis_auto", &P::iper_axis_auto, "IPER: building axis from the walk's dominant directions", "IPER", FieldScope::Iper),
+        real("iper_axis_rad", &P::iper_axis_rad, -M_PI, M_PI, "rad", "IPER: angle of the building's main axis from x", "IPER", FieldScope::IperFixedAxis),
+        real("iper_threshold_rad", &P::iper_threshold_rad, 0.0, 0.8, "rad", "IPER: walking within this of an axis counts as along it", "IPER", FieldScope::Iper),
+        real("iper_window_s", &P::iper_window_s, 0.2, 30.0, "s", "IPER: displacement window", "IPER", FieldScope::Iper),
+        real("r_iper_m", &P::r_iper_m, 1e-6, 10.0, "m", "IPER: R of the cross-axis displacement, std", "IPER", FieldScope::Iper),
+        real("r_iper_height_m", &P::r_iper_height_m, 1e-6, 10.0, "m", "IPER: R of the level-floor height, std", "IPER", FieldScope::Iper),
+        real("zuna_reference_s", &P::zuna_reference_s, 0.1, 60.0, "s", "ZUNA: static start averaged for the reference", "ZUNA", FieldScope::Zuna),
+        real("zuna_min_stance_s", &P::zuna_min_stance_s, 0.0, 2.0, "s", "ZUNA: mid-stance needs a stance run this long", "ZUNA", FieldScope::Zuna),
+        real("zuna_margin_dec", &P::zuna_margin_dec, 0.0, 5.0, "decades", "ZUNA: mid-stance statistic this far below the threshold", "ZUNA", FieldScope::Zuna),
+        real("r_zuna_mps2", &P::r_zuna_mps2, 1e-6, 10.0, "m/s^2", "ZUNA: R of the acceleration, std", "ZUNA", FieldScope::Zuna),
+        choice("baro_model", &P::baro_model, {"formula", "linear"}, {"Barometric formula", "Linear constant (seed 004)"},
+               "Barometer: pressure difference to height", "Barometer", FieldScope::Barometer),
+        real("baro_linear_m_per_pa", &P::baro_linear_m_per_pa, 0.0, 1.0, "m/Pa", "Barometer: linear constant N", "Barometer", FieldScope::LinearBarometer),
+        real("r_baro_m", &P::r_baro_m, 1e-6, 100.0, "m", "Barometer: R of the height, std", "Barometer", FieldScope::Barometer),
+        real("motion_level_max_m", &P::motion_level_max_m, 0.0, 5.0, "m", "Motion class: smaller height change per step is level walking", "Barometer"),
+        real("motion_elevator_var_pa2", &P::motion_elevator_var_pa2, 0.0, 1e6, "Pa^2", "Motion class: pressure variance between steps above this is an elevator", "Barometer"),
+        real("r_mag_rad", &P::r_mag_rad, 1e-6, 3.0, "rad", "Magnetometer: R of the heading, std", "Magnetometer", FieldScope::MagHeading),
+        real("mag_norm_tolerance", &P::mag_norm_tolerance, 0.0, 1.0, "x", "Magnetometer: |m| within this fraction of its value at alignment", "Magnetometer", FieldScope::MagHeading),
+        real("mag_dip_tolerance_rad", &P::mag_dip_tolerance_rad, 0.0, 1.6, "rad", "Magnetometer: dip within this of its value at alignment", "Magnetometer", FieldScope::MagHeading),
         real("q_att_rad", &P::q_att_rad, 0.0, 1.0, "rad", "Q attitude, std per 10 ms", "Process noise"),
         real("q_gyro_bias_radps", &P::q_gyro_bias_radps, 0.0, 1.0, "rad/s", "Q gyro bias, std per 10 ms", "Process noise", FieldScope::BiasStates),
         real("q_pos_m", &P::q_pos_m, 0.0, 1.0, "m", "Q position, std per 10 ms", "Process noise"),
@@ -216,6 +247,21 @@ FieldScope unmetScope(const ParameterField& field, const Parameters& params)
     case S::BiasStates:
     case S::Zaru:
         return fifteen ? S::Always : field.scope;
+    case S::Hdr:
+        return params.use_hdr ? S::Always : S::Hdr;
+    case S::Iper:
+        return params.use_iper ? S::Always : S::Iper;
+    case S::IperFixedAxis:
+        return !params.use_iper ? S::Iper : params.iper_axis_auto ? S::IperFixedAxis : S::Always;
+    case S::Zuna:
+        return params.use_zuna ? S::Always : S::Zuna;
+    case S::Barometer:
+        return params.use_baro ? S::Always : S::Barometer;
+    case S::LinearBarometer:
+        return !params.use_baro ? S::Barometer
+               : params.barometerModel() == BarometerModel::Linear ? S::Always : S::LinearBarometer;
+    case S::MagHeading:
+        return params.use_mag_heading ? S::Always : S::MagHeading;
     }
     if (paper)
         return S::StatisticDetectors;

@@ -19,6 +19,14 @@ enum class DetectorKind : int {
 /// 9 states hold them at zero (seed 004's comparison; pyshoe's filter).
 enum class FilterStates : int { Fifteen = 0, Nine };
 
+/// What turns the inertial samples into a path: the error-state Kalman filter with its measurement
+/// sources (Guo 2015, seed 002, 004), or Feliz et al. 2009's per-stride velocity de-drift (seed 003,
+/// no Kalman filter; offline only: it needs the stance that ends each stride).
+enum class EstimatorKind : int { Ekf = 0, Feliz };
+
+/// How a pressure difference becomes a height difference (seed 004, eq. 6-10).
+enum class BarometerModel : int { Formula = 0, Linear };
+
 /// Every tunable of the pipeline. Field names here are the names the GUI sliders, the CLI's
 /// `--set name=value`, the JSON presets and the reports use (see parameterFields()).
 ///
@@ -56,9 +64,47 @@ struct Parameters {
     int filter_states = static_cast<int>(FilterStates::Nine);  ///< measured better (README, "Filter structure")
 
 
-    // Measurement sources
+    int estimator = static_cast<int>(EstimatorKind::Ekf);
+
+    // Measurement sources (core/nav/MeasurementSources.h lists them in the order they are applied)
     bool use_zupt = true;
     bool use_zaru = false;  ///< needs the gyro bias states of the 15-state filter
+    bool use_hdr = false;          ///< heuristic drift reduction (seed 002): yaw pulled back on straight walks
+    bool use_iper = false;         ///< position error reduction (seed 002): rectilinear building, level floor
+    bool use_zuna = false;         ///< zero navigation acceleration at mid-stance (seed 002)
+    bool use_baro = false;         ///< barometric height at each stance (seed 004)
+    bool use_mag_heading = false;  ///< magnetometer heading during stance (seed 001's future work)
+
+    // HDR
+    double hdr_lag_s = 1.0;            ///< heading now compared with the heading this long ago
+    double hdr_threshold_rad = 0.15;   ///< a smaller difference is drift, a larger one a real turn
+    double r_hdr_rad = 0.01;
+
+    // IPER
+    bool iper_axis_auto = true;        ///< building axis from the walk's dominant directions
+    double iper_axis_rad = 0.0;        ///< the building's main axis (x of the navigation frame = 0)
+    double iper_threshold_rad = 0.2;   ///< walking within this of an axis counts as along it
+    double iper_window_s = 2.0;        ///< displacement windows
+    double r_iper_m = 0.05;            ///< cross-axis displacement
+    double r_iper_height_m = 0.05;     ///< height at stance against the start height
+
+    // ZUNA
+    double zuna_reference_s = 3.0;     ///< static start averaged for the reference specific force
+    double zuna_min_stance_s = 0.15;   ///< mid-stance: a stance run at least this long ...
+    double zuna_margin_dec = 1.0;      ///< ... whose statistic is this far below the threshold
+    double r_zuna_mps2 = 0.05;
+
+    // Barometer and motion classes
+    int baro_model = static_cast<int>(BarometerModel::Formula);
+    double baro_linear_m_per_pa = 0.09;    ///< seed 004's experimental constant N
+    double r_baro_m = 0.3;
+    double motion_level_max_m = 0.16;      ///< gamma_h: a smaller height change per step is level walking
+    double motion_elevator_var_pa2 = 300.0;  ///< mu_h: pressure variance between steps above it: elevator
+
+    // Magnetometer heading
+    double r_mag_rad = 0.05;
+    double mag_norm_tolerance = 0.1;       ///< |m| within this fraction of its value at alignment
+    double mag_dip_tolerance_rad = 0.087;  ///< dip angle within this of its value at alignment
 
     // Process noise Q: std per 10 ms step, per 3-block (Guo 2015, section 2.6)
     double q_att_rad = 3e-5;
@@ -80,6 +126,8 @@ struct Parameters {
 
     DetectorKind detectorKind() const { return static_cast<DetectorKind>(detector); }
     FilterStates filterStates() const { return static_cast<FilterStates>(filter_states); }
+    EstimatorKind estimatorKind() const { return static_cast<EstimatorKind>(estimator); }
+    BarometerModel barometerModel() const { return static_cast<BarometerModel>(baro_model); }
 
     /// Human-readable problems ("acc_min_mps2 (12) must be below acc_max_mps2 (11)"); empty if valid.
     std::vector<std::string> validate() const;
@@ -103,6 +151,13 @@ enum class FieldScope {
     AdaptiveThreshold,       ///< a statistic detector with zv_adaptive on
     BiasStates,              ///< the 15-state filter
     Zaru,                    ///< the 15-state filter: ZARU corrects the gyro bias states
+    Hdr,                     ///< use_hdr
+    Iper,                    ///< use_iper
+    IperFixedAxis,           ///< use_iper with iper_axis_auto off
+    Zuna,                    ///< use_zuna
+    Barometer,               ///< use_baro
+    MagHeading,              ///< use_mag_heading
+    LinearBarometer,         ///< use_baro with baro_model linear
 };
 
 /// Description of one field, so every front end walks the same list.

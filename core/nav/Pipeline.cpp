@@ -5,6 +5,9 @@
 #include "nav/Alignment.h"
 #include "nav/Attitude.h"
 #include "nav/ErrorStateEkf.h"
+#include "nav/FelizIntegrator.h"
+#include "nav/MeasurementSources.h"
+#include "nav/MotionClasses.h"
 #include "nav/Plausibility.h"
 
 #include <chrono>
@@ -49,14 +52,17 @@ void recordState(Result& result, double time_s, const NavState& state)
     result.accBias_mps2.push_back(state.accBias_mps2);
 }
 
-void applyStanceUpdates(ErrorStateEkf& ekf, const ImuSample& sample, const Parameters& params)
+SampleStanceFlags flagsAt(const StanceFlags& flags, std::size_t k)
 {
-    if (params.use_zupt && params.use_zaru)
-        ekf.updateZeroVelocityAndRate(sample.gyr_radps);
-    else if (params.use_zupt)
-        ekf.updateZeroVelocity();
-    else if (params.use_zaru)
-        ekf.updateZeroAngularRate(sample.gyr_radps);
+    SampleStanceFlags sample;
+    sample.c1 = flags.c1[k];
+    sample.c2 = flags.c2[k];
+    sample.c3 = flags.c3[k];
+    sample.c = flags.c[k];
+    sample.stance = flags.stance[k];
+    sample.logStatistic = flags.logStatistic[k];
+    sample.logThreshold = flags.logThreshold[k];
+    return sample;
 }
 
 /// Runs the filter over every sample; returns false if the callback cancelled.
@@ -66,14 +72,16 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
     const std::vector<ImuSample>& samples = recording.samples;
     const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
     ErrorStateEkf ekf(params, alignment.bodyToNav);
+    MeasurementSources sources(params);
     reserveResult(result, samples.size());
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const std::optional<double> previousTime_s =
             k > 0 ? std::optional<double>(samples[k - 1].time_s) : std::nullopt;
-        filterSample(ekf, samples[k], previousTime_s, flags.stance[k] != 0, params, result);
+        filterSample(ekf, sources, samples[k], previousTime_s, flagsAt(flags, k), result);
         if (progress && k % kProgressInterval == 0 && !progress(static_cast<double>(k) / static_cast<double>(samples.size())))
             return false;
     }
+    sources.finish(samples.back().time_s, result.methodNotes);
     return true;
 }
 
@@ -95,13 +103,12 @@ Step makeStep(const Result& result, std::size_t first, std::size_t last)
 
 }  // namespace
 
-void filterSample(ErrorStateEkf& ekf, const ImuSample& sample, std::optional<double> previousTime_s, bool stance,
-                  const Parameters& params, Result& result)
+void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSample& sample,
+                  std::optional<double> previousTime_s, const SampleStanceFlags& flags, Result& result)
 {
     if (previousTime_s)
         ekf.propagate(sample.acc_mps2, sample.gyr_radps, sample.time_s - *previousTime_s);
-    if (stance)
-        applyStanceUpdates(ekf, sample, params);
+    sources.apply(ekf, SourceContext{sample, result.time_s.size(), flags, result.methodNotes});
     recordState(result, sample.time_s, ekf.state());
 }
 
@@ -156,11 +163,15 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
     const auto start = std::chrono::steady_clock::now();
     Result& result = output.result;
     result.flags = detectStance(recording.samples, params);
-    if (!runFilter(recording, params, result.flags, progress, result)) {
+    const bool completed = params.estimatorKind() == EstimatorKind::Feliz
+                               ? runFelizIntegrator(recording, params, progress, result)
+                               : runFilter(recording, params, result.flags, progress, result);
+    if (!completed) {
         result.cancelled = true;
         return output;
     }
     fillStepsAndSummary(result);
+    classifyMotion(recording, params, result);
     result.warnings = checkPlausibility(result, params);
     result.summary.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (progress)

@@ -11,6 +11,8 @@
 namespace footpath {
 
 class ErrorStateEkf;
+class MeasurementSources;
+struct SampleStanceFlags;
 
 /// Called now and then with the fraction done (0..1); return false to cancel the run.
 using ProgressCallback = std::function<bool(double fraction)>;
@@ -35,10 +37,10 @@ void fillStepsAndSummary(Result& result);
 // gives the same numbers as runPipeline.
 
 /// The filter's work on one sample: propagation over the time since the previous sample (none for
-/// the first), ZUPT/ZARU as enabled when the foot is at rest, then the state appended to result
-/// (the stance flags are the caller's to append).
-void filterSample(ErrorStateEkf& ekf, const ImuSample& sample, std::optional<double> previousTime_s, bool stance,
-                  const Parameters& params, Result& result);
+/// the first), the measurement sources (ZUPT/ZARU and the other methods as enabled), then the state
+/// appended to result (the stance flags are the caller's to append; notes go to result.methodNotes).
+void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSample& sample,
+                  std::optional<double> previousTime_s, const SampleStanceFlags& flags, Result& result);
 
 /// Appends the stance phase of samples [first, last) of result as a step, with its stride from the
 /// previous step. Summary fields are left alone.

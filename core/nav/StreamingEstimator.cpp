@@ -3,6 +3,7 @@
 #include "detect/StanceDetector.h"
 #include "nav/Alignment.h"
 #include "nav/ErrorStateEkf.h"
+#include "nav/MeasurementSources.h"
 #include "nav/Pipeline.h"
 #include "nav/Plausibility.h"
 
@@ -57,6 +58,7 @@ struct StreamingEstimator::Impl {
     bool alignmentPeriodOver = false;
 
     std::optional<ErrorStateEkf> ekf;  ///< set once aligned
+    MeasurementSources sources{params};
     std::optional<double> previousTime_s;  ///< of the last estimated sample
     std::optional<std::size_t> stancePhaseStart;  ///< index in result of the open stance phase
     double pathLength_m = 0.0;  ///< sum of the strides so far (stancePathLength, kept running)
@@ -102,6 +104,8 @@ void StreamingEstimator::Impl::end()
     estimateDecided();
     if (stancePhaseStart)
         closeStancePhase(result.time_s.size());  // offline, a stance phase up to the end is a step too
+    if (!result.time_s.empty())
+        sources.finish(result.time_s.back(), result.methodNotes);
     summarize(result, pathLength_m);
     result.warnings = checkPlausibility(result, params);
 }
@@ -136,7 +140,7 @@ void StreamingEstimator::Impl::estimateDecided()
 
 void StreamingEstimator::Impl::estimate(const ImuSample& sample, const SampleStanceFlags& flags)
 {
-    filterSample(*ekf, sample, previousTime_s, flags.stance != 0, params, result);
+    filterSample(*ekf, sources, sample, previousTime_s, flags, result);
     appendFlags(result.flags, flags);
     previousTime_s = sample.time_s;
     const std::size_t k = result.time_s.size() - 1;

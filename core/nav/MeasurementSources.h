@@ -1,0 +1,55 @@
+#pragma once
+
+#include "Recording.h"
+#include "Result.h"
+#include "detect/StanceDetector.h"
+#include "nav/Parameters.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace footpath {
+
+class ErrorStateEkf;
+
+/// What a measurement source sees at one sample, after the filter has propagated to it.
+struct SourceContext {
+    const ImuSample& sample;
+    std::size_t index = 0;            ///< samples since the start of the recording
+    const SampleStanceFlags& flags;   ///< the detector's decision and statistic for this sample
+    std::vector<MethodNote>& notes;   ///< where a source says what it did or skipped, with the span
+};
+
+/// One measurement of the error-state filter (ZUPT/ZARU, HDR, IPER, ZUNA, barometer, magnetometer):
+/// it decides from the sample, the stance flags and its own history whether its condition holds
+/// and, if so, updates the filter. Causal: it sees the samples in order and nothing later, so the
+/// live estimator uses the same sources as the offline pipeline.
+class MeasurementSource {
+public:
+    virtual ~MeasurementSource() = default;
+    /// Stable short name for notes and comparisons ("hdr").
+    virtual const char* name() const = 0;
+    virtual void apply(ErrorStateEkf& ekf, const SourceContext& context) = 0;
+    /// At the end of the recording: close any open span in the notes.
+    virtual void finish(double /*endTime_s*/, std::vector<MethodNote>& /*notes*/) {}
+};
+
+/// The sources the parameters switch on, in the order they are applied at each sample. The one
+/// place to add the next one: write a MeasurementSource in nav/sources/ and list it here.
+class MeasurementSources {
+public:
+    explicit MeasurementSources(const Parameters& params);
+    ~MeasurementSources();
+    MeasurementSources(MeasurementSources&&) noexcept;
+    MeasurementSources& operator=(MeasurementSources&&) noexcept;
+
+    void apply(ErrorStateEkf& ekf, const SourceContext& context);
+    void finish(double endTime_s, std::vector<MethodNote>& notes);
+    std::size_t size() const { return sources_.size(); }
+
+private:
+    std::vector<std::unique_ptr<MeasurementSource>> sources_;
+};
+
+}  // namespace footpath

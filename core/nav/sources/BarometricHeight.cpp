@@ -1,0 +1,11 @@
+#include "nav/sources/BarometricHeight.h"
+
+#include "nav/ErrorStateEkf.h"
+
+namespace footpath {
+
+void BarometricHeightSource::apply(ErrorStateEkf& /*ekf*/, const SourceContext& /*context*/)
+{
+}
+
+}  // namespace footpath
