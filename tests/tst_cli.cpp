@@ -39,7 +39,8 @@ const QString kTrajectoryHeader =
                    "gyro_bias_x_radps,gyro_bias_y_radps,gyro_bias_z_radps,acc_bias_x_mps2,acc_bias_y_mps2,"
                    "acc_bias_z_mps2");
 const QString kStepsHeader =
-    QStringLiteral("step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s");
+    QStringLiteral("step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,motion,"
+                   "baro_height_m");
 const QByteArray kImuHeader = "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
 
 struct Run {
@@ -281,7 +282,10 @@ void TestCli::process_writesTrajectoryStepsAndSummary()
     double strideSum_m = 0.0;
     for (int r = 1; r < stepRows.size(); ++r) {
         const QStringList cells = stepRows[r].split(QLatin1Char(','));
-        QCOMPARE(int(cells.size()), 8);
+        QCOMPARE(int(cells.size()), 10);
+        // The simulated walk has no barometer: no motion class, an empty barometric height.
+        QCOMPARE(cells[8], QStringLiteral("unknown"));
+        QVERIFY2(cells[9].isEmpty(), qPrintable(stepRows[r]));
         QCOMPARE(cells[0], QString::number(r - 1));
         QVERIFY(cells[1].toDouble() <= cells[2].toDouble());
         strideSum_m += cells[6].toDouble();
@@ -295,6 +299,12 @@ void TestCli::process_writesTrajectoryStepsAndSummary()
     QVERIFY2(error.isEmpty(), qPrintable(error));
     QVERIFY(std::abs(json.value(QStringLiteral("path_length_m")).toDouble() - strideSum_m) < 1e-6);
     QCOMPARE(json.value(QStringLiteral("steps")).toInt(), int(stepRows.size()) - 2);
+    // The motion classes count nothing without a barometer; the methods' notes are always a list.
+    const QJsonObject motion = json.value(QStringLiteral("motion")).toObject();
+    for (const char* key : {"stair_steps_up", "stair_steps_down", "elevator_rides", "stairs_climb_m",
+                            "stairs_descent_m"})
+        QVERIFY2(motion.contains(QLatin1String(key)) && motion.value(QLatin1String(key)).toDouble() == 0.0, key);
+    QVERIFY(json.value(QStringLiteral("method_notes")).isArray());
 }
 
 void TestCli::process_summaryFiguresArePlausible()

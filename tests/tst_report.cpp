@@ -8,6 +8,9 @@
 #include "nav/Pipeline.h"
 #include "sim/WalkSimulator.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -208,7 +211,40 @@ private slots:
         writeSummaryCsv(out, summary);
         QVERIFY(QString::fromStdString(out.str())
                     .startsWith("samples,duration_s,stance_phases,steps,path_length_m,end_to_start_m,"
-                                "end_to_start_pct,runtime_s\n10,0,0,0,12.5,"));
+                                "end_to_start_pct,runtime_s,stair_steps_up,stair_steps_down,elevator_rides,"
+                                "stairs_climb_m,stairs_descent_m\n10,0,0,0,12.5,"));
+    }
+
+    void exportsCarryMotionClassesAndMethodNotes()
+    {
+        Result result;
+        result.steps.resize(2);
+        result.steps[1].motion = MotionClass::StairsUp;
+        result.steps[1].baroHeight_m = 0.25;
+        result.summary.stairStepsUp = 1;
+        result.summary.stairsClimb_m = 0.25;
+        result.methodNotes.push_back({"iper", 1.5, 9.0, "not applied: no \"straight\" stretch"});
+        std::ostringstream steps;
+        writeStepsCsv(steps, result);
+        const QStringList rows = QString::fromStdString(steps.str()).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(rows.size(), 3);
+        QVERIFY(rows[0].endsWith(",stride_duration_s,motion,baro_height_m"));
+        QVERIFY2(rows[1].endsWith(",unknown,"), qPrintable(rows[1]));  // no barometer: an empty cell
+        QVERIFY2(rows[2].endsWith(",stairs_up,0.25"), qPrintable(rows[2]));
+
+        const QJsonObject json =
+            QJsonDocument::fromJson(QByteArray::fromStdString(summaryToJson(result.summary, {}, result.methodNotes)))
+                .object();
+        const QJsonObject motion = json.value("motion").toObject();
+        QCOMPARE(motion.value("stair_steps_up").toInt(), 1);
+        QCOMPARE(motion.value("stairs_climb_m").toDouble(), 0.25);
+        QCOMPARE(motion.value("elevator_rides").toInt(), 0);
+        const QJsonArray notes = json.value("method_notes").toArray();
+        QCOMPARE(notes.size(), 1);
+        QCOMPARE(notes[0].toObject().value("method").toString(), QStringLiteral("iper"));
+        QCOMPARE(notes[0].toObject().value("end_s").toDouble(), 9.0);
+        QCOMPARE(notes[0].toObject().value("message").toString(),
+                 QStringLiteral("not applied: no \"straight\" stretch"));
     }
 };
 

@@ -1,5 +1,7 @@
 #include "cli/CommandLine.h"
 
+#include "nav/MethodSets.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -19,7 +21,7 @@ std::vector<std::string> splitList(const std::string& text, char separator)
 
 std::string usageText()
 {
-    return R"(Usage:
+    std::string text = R"(Usage:
   footpath-cli process INPUT [import options] [--params preset.json] [--set name=value ...]
                              [--trajectory out.csv] [--steps out.csv] [--summary out.json]
                              [--summary-csv out.csv] [--parameters-csv out.csv]
@@ -28,6 +30,8 @@ std::string usageText()
   footpath-cli eval INPUT... [import options] [--params preset.json] [--set name=value ...]
                           [--reference-columns x,y,z] [--closed-loop] [--length METRES]
                           [--jobs N] [--json]
+  footpath-cli compare INPUT... [import options] [--params preset.json] [--set name=value ...]
+                             [--sets "zupt;zupt,zaru;zupt,zaru,hdr;..."] [--jobs N] [--json]
   footpath-cli info INPUT [import options] [--json]
   footpath-cli record --port PATH [--baud N] [--rate HZ] [--duration S] --out FILE.mtb [--csv FILE.csv]
 
@@ -39,7 +43,7 @@ Import options (every format is detected from the content; these override or com
   --import-preset NAME|FILE  read with a saved column map and units
   --save-import-preset NAME  save the column map and units given here under NAME
 Reference data the file carries (VICON columns, gait events beside an Xsens export, a length in the
-file name like rectangle_72m.TXT, a <file>.reference.json sidecar) is used by eval unless
+file name like rectangle_72m.TXT, a <file>.reference.json sidecar) is used by eval and compare unless
 --reference-columns, --closed-loop or --length say otherwise; a leading '-' in
 --reference-columns negates an axis.
 record talks to a live Xsens MTi (or footpath-mti-sim) on a serial port: the init sequence, then
@@ -53,9 +57,22 @@ One file prints its metrics as a table (or one JSON object); several print one r
 mean, median, worst and count of each metric per kind of reference (or one JSON object with
 "recordings" and "summary"). --jobs N evaluates N files at once (default: one per core); the
 output keeps the input order. A file that cannot be read becomes an error row, the others go on.
-eval and process print the plausibility warnings to stderr: FILE: warning: [t0-t1 s] message.
+compare runs every method set of --sets on each INPUT (files or folders, as for eval): sets are
+separated by ';', methods within a set by ',', from zupt, zaru, hdr, iper, zuna, baro, mag, feliz,
+9state, 15state; every method a set does not name is off, the other parameters come from --params
+and --set. Without --sets it runs the suggested sets:
+  SUGGESTED
+It prints a table per INPUT, one row per set in the order given: end-to-start (m and % of the path),
+path length, height change, ARMSE 2D and stance F1 where the recording has the reference, steps and
+plausibility warnings, with '*' after the best value of each column that has one (the smallest
+end-to-start and ARMSE, the largest F1); several INPUTs add the mean per set. With
+--json one object: "sets" (one object per set, in the order given) and "best"; for several INPUTs
+"inputs" (one such object per file), "sets" (the means) and "best". --jobs N runs N sets at once.
+eval, compare and process print the plausibility warnings to stderr: FILE: warning: [t0-t1 s] message.
 Exit codes: 0 success, 2 bad input or options or a device problem, 1 internal error.
 )";
+    const std::string placeholder = "SUGGESTED";
+    return text.replace(text.find(placeholder), placeholder.size(), suggestedMethodSetsSpec());
 }
 
 namespace {
@@ -137,6 +154,7 @@ const std::map<std::string, Handler>& valueOptions()
          }},
         {"--length", storePositive(&CommandLine::length_m, "--length", "metres")},
         {"--jobs", storeJobs()},
+        {"--sets", storeText(&CommandLine::methodSets)},
         {"--port", storeText(&CommandLine::port)},
         {"--baud", storePositive(&CommandLine::baud, "--baud", "a baud rate")},
         {"--duration", storePositive(&CommandLine::duration_s, "--duration", "seconds")},
@@ -158,7 +176,7 @@ std::string checkRecordCombination(const CommandLine& c)
                               || !c.importPreset.empty() || !c.saveImportPreset.empty() || !c.accUnit.empty()
                               || !c.gyrUnit.empty() || !c.timeUnit.empty() || !c.trajectoryOut.empty()
                               || !c.stepsOut.empty() || !c.summaryOut.empty() || !c.referenceColumns.empty()
-                              || c.closedLoop || c.length_m > 0.0 || c.json || c.jobs > 0;
+                              || c.closedLoop || c.length_m > 0.0 || c.json || c.jobs > 0 || !c.methodSets.empty();
     if (otherOptions)
         return "record takes only --port, --baud, --rate, --duration, --out and --csv";
     if (c.baud > 0.0 && c.baud != std::floor(c.baud))
@@ -178,16 +196,21 @@ std::string checkCombination(const CommandLine& c)
         return "--port, --baud, --duration, --out and --csv belong to record";
     if (c.input.empty())
         return "missing INPUT file";
-    const bool evaluation = !c.referenceColumns.empty() || c.closedLoop || c.length_m > 0.0;
+    const bool evaluation = c.closedLoop || c.length_m > 0.0;
+    const bool several = c.command == "eval" || c.command == "compare";
     const bool outputs = !c.trajectoryOut.empty() || !c.stepsOut.empty() || !c.summaryOut.empty()
                          || !c.summaryCsvOut.empty() || !c.parametersCsvOut.empty();
     const bool estimation = !c.paramsFile.empty() || !c.sets.empty();
     if (c.command != "eval" && evaluation)
-        return "--reference-columns, --closed-loop and --length belong to eval";
-    if (c.command != "eval" && c.jobs > 0)
-        return "--jobs belongs to eval";
-    if (c.command == "process" && c.json)
-        return "--json belongs to eval and info";
+        return "--closed-loop and --length belong to eval";
+    if (!several && !c.referenceColumns.empty())
+        return "--reference-columns belongs to eval and compare";
+    if (!several && c.jobs > 0)
+        return "--jobs belongs to eval and compare";
+    if (c.command != "compare" && !c.methodSets.empty())
+        return "--sets belongs to compare";
+    if ((c.command == "process" || c.command == "report") && c.json)
+        return "--json belongs to eval, compare and info";
     if (c.command != "process" && outputs)
         return "--trajectory, --steps, --summary, --summary-csv and --parameters-csv belong to process";
     if (c.command == "report" && c.pdfOut.empty())
@@ -195,7 +218,7 @@ std::string checkCombination(const CommandLine& c)
     if (c.command != "report" && !c.pdfOut.empty())
         return "--pdf belongs to report";
     if (c.command == "info" && estimation)
-        return "--params and --set belong to process and eval";
+        return "--params and --set belong to process, report, eval and compare";
     return {};
 }
 
@@ -208,9 +231,10 @@ std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& 
         return {};
     }
     out.command = args[0];
-    if (out.command != "process" && out.command != "eval" && out.command != "info" && out.command != "report"
-        && out.command != "record")
-        return "unknown command '" + out.command + "'; expected process, eval, info, report or record";
+    const bool known = out.command == "process" || out.command == "eval" || out.command == "compare"
+                       || out.command == "info" || out.command == "report" || out.command == "record";
+    if (!known)
+        return "unknown command '" + out.command + "'; expected process, eval, compare, info, report or record";
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& arg = args[i];
         if (arg == "--closed-loop") {
@@ -224,7 +248,7 @@ std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& 
                 return problem;
         } else if (arg.rfind("--", 0) == 0) {
             return "unknown option '" + arg + "'";
-        } else if (out.input.empty() || out.command == "eval") {
+        } else if (out.input.empty() || out.command == "eval" || out.command == "compare") {
             if (out.input.empty())
                 out.input = arg;
             out.inputs.push_back(arg);

@@ -7,9 +7,9 @@ namespace footpath::cli {
 
 /// What the user asked for, before any file is touched.
 struct CommandLine {
-    std::string command;  ///< "process", "eval", "info", "report", "record" or "help"
+    std::string command;  ///< "process", "eval", "compare", "info", "report", "record" or "help"
     std::string input;                ///< the first INPUT
-    std::vector<std::string> inputs;  ///< every INPUT (several only for eval)
+    std::vector<std::string> inputs;  ///< every INPUT (several only for eval and compare)
     // Parameters
     std::string paramsFile;
     std::vector<std::string> sets;  ///< "name=value"
@@ -34,7 +34,9 @@ struct CommandLine {
     bool closedLoop = false;
     double length_m = 0.0;
     bool json = false;
-    int jobs = 0;  ///< eval's parallel runs; 0: one per core
+    int jobs = 0;  ///< eval's and compare's parallel runs; 0: one per core
+    // Comparison (compare)
+    std::string methodSets;  ///< --sets "zupt;zupt,zaru"; empty: the suggested sets
     // Live recording (record)
     std::string port;
     double baud = 0.0;      ///< 0: 115200 with a probe of the common rates

@@ -127,7 +127,9 @@ int runProcess(const CommandLine& cmd)
     writeIfAsked(cmd.trajectoryOut, [&](std::ostream& out) { writeTrajectoryCsv(out, result); });
     writeIfAsked(cmd.stepsOut, [&](std::ostream& out) { writeStepsCsv(out, result); });
     printPlausibilityWarnings(cmd.input, result.warnings);
-    writeIfAsked(cmd.summaryOut, [&](std::ostream& out) { out << summaryToJson(result.summary, result.warnings); });
+    writeIfAsked(cmd.summaryOut, [&](std::ostream& out) {
+        out << summaryToJson(result.summary, result.warnings, result.methodNotes);
+    });
     writeIfAsked(cmd.summaryCsvOut, [&](std::ostream& out) { writeSummaryCsv(out, result.summary); });
     writeIfAsked(cmd.parametersCsvOut, [&](std::ostream& out) { writeParametersCsv(out, params); });
     const Summary& s = result.summary;

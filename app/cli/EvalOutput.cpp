@@ -83,22 +83,6 @@ Statistics statisticsOf(const std::vector<RecordingEvaluation>& evaluations, con
     return stats;
 }
 
-QJsonValue jsonNumber(double value)
-{
-    return std::isfinite(value) ? QJsonValue(value) : QJsonValue();  // JSON has no NaN
-}
-
-QJsonArray warningsJson(const std::vector<PlausibilityWarning>& warnings)
-{
-    QJsonArray array;
-    for (const PlausibilityWarning& warning : warnings)
-        array.append(QJsonObject{{"kind", QString::fromLatin1(warningKindName(warning.kind))},
-                                 {"start_s", warning.start_s},
-                                 {"end_s", warning.end_s},
-                                 {"message", QString::fromStdString(warning.message)}});
-    return array;
-}
-
 QJsonObject recordingJson(const CommandLine& cmd, const Parameters& params, const RecordingEvaluation& evaluation)
 {
     QJsonObject object{{"recording", QString::fromStdString(evaluation.path)},
@@ -253,6 +237,22 @@ void printBatchText(const CommandLine& cmd, const Parameters& params,
 }
 
 }  // namespace
+
+QJsonValue jsonNumber(double value)
+{
+    return std::isfinite(value) ? QJsonValue(value) : QJsonValue();  // JSON has no NaN
+}
+
+QJsonArray warningsJson(const std::vector<PlausibilityWarning>& warnings)
+{
+    QJsonArray array;
+    for (const PlausibilityWarning& warning : warnings)
+        array.append(QJsonObject{{"kind", QString::fromLatin1(warningKindName(warning.kind))},
+                                 {"start_s", warning.start_s},
+                                 {"end_s", warning.end_s},
+                                 {"message", QString::fromStdString(warning.message)}});
+    return array;
+}
 
 void printSingleEvaluation(const CommandLine& cmd, const Parameters& params, const RecordingEvaluation& evaluation)
 {

@@ -4,9 +4,17 @@
 #include "cli/EvalRun.h"
 #include "nav/Parameters.h"
 
+#include <QJsonArray>
+#include <QJsonValue>
+
 #include <vector>
 
 namespace footpath::cli {
+
+/// A number for JSON, null where it is not finite (JSON has no NaN).
+QJsonValue jsonNumber(double value);
+/// Plausibility warnings as {kind, start_s, end_s, message} objects, as eval and compare list them.
+QJsonArray warningsJson(const std::vector<PlausibilityWarning>& warnings);
 
 /// One evaluated file as eval has always printed it: the metric table, or one JSON object (--json).
 void printSingleEvaluation(const CommandLine& cmd, const Parameters& params, const RecordingEvaluation& evaluation);

@@ -1,6 +1,7 @@
 // footpath-cli: runs the estimation pipeline on recordings in batch.
 #include "cli/CliSupport.h"
 #include "cli/Commands.h"
+#include "cli/CompareCommand.h"
 #include "cli/RecordCommand.h"
 #include "cli/ReportCommand.h"
 
@@ -29,6 +30,8 @@ int dispatch(const std::vector<std::string>& args)
         return runRecord(cmd);
     if (cmd.command == "report")
         return runReport(cmd);
+    if (cmd.command == "compare")
+        return runCompare(cmd);
     return cmd.command == "process" ? runProcess(cmd) : runEval(cmd);
 }
 

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -81,7 +82,7 @@ void writeTrajectoryCsv(std::ostream& out, const Result& result)
 
 void writeStepsCsv(std::ostream& out, const Result& result)
 {
-    out << "step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s\n";
+    out << "step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,motion,baro_height_m\n";
     for (std::size_t i = 0; i < result.steps.size(); ++i) {
         const Step& step = result.steps[i];
         out << i << ',';
@@ -89,11 +90,53 @@ void writeStepsCsv(std::ostream& out, const Result& result)
         put(out, step.stanceEnd_s, ',');
         putVector(out, step.position_m);
         put(out, step.strideLength_m, ',');
-        put(out, step.strideDuration_s, '\n');
+        put(out, step.strideDuration_s, ',');
+        out << motionClassName(step.motion) << ',';
+        // An empty cell, not "nan", where there is no barometer: spreadsheets read it as missing.
+        if (std::isnan(step.baroHeight_m))
+            out << '\n';
+        else
+            put(out, step.baroHeight_m, '\n');
     }
 }
 
-std::string summaryToJson(const Summary& s, const std::vector<PlausibilityWarning>& warnings)
+namespace {
+
+void putMotionJson(std::ostream& out, const Summary& s)
+{
+    out << "  \"motion\": {\"stair_steps_up\": " << s.stairStepsUp << ", \"stair_steps_down\": " << s.stairStepsDown
+        << ", \"elevator_rides\": " << s.elevatorRides << ", \"stairs_climb_m\": " << s.stairsClimb_m
+        << ", \"stairs_descent_m\": " << s.stairsDescent_m << "},\n";
+}
+
+void putWarningsJson(std::ostream& out, const std::vector<PlausibilityWarning>& warnings)
+{
+    out << "  \"warnings\": [";
+    for (std::size_t i = 0; i < warnings.size(); ++i) {
+        const PlausibilityWarning& w = warnings[i];
+        out << (i == 0 ? "\n" : ",\n") << "    {\"kind\": " << jsonString(warningKindName(w.kind))
+            << ", \"start_s\": " << w.start_s << ", \"end_s\": " << w.end_s
+            << ", \"message\": " << jsonString(w.message) << "}";
+    }
+    out << (warnings.empty() ? "]" : "\n  ]");
+}
+
+void putMethodNotesJson(std::ostream& out, const std::vector<MethodNote>& notes)
+{
+    out << "  \"method_notes\": [";
+    for (std::size_t i = 0; i < notes.size(); ++i) {
+        const MethodNote& n = notes[i];
+        out << (i == 0 ? "\n" : ",\n") << "    {\"method\": " << jsonString(n.method)
+            << ", \"start_s\": " << n.start_s << ", \"end_s\": " << n.end_s
+            << ", \"message\": " << jsonString(n.message) << "}";
+    }
+    out << (notes.empty() ? "]" : "\n  ]");
+}
+
+}  // namespace
+
+std::string summaryToJson(const Summary& s, const std::vector<PlausibilityWarning>& warnings,
+                          const std::vector<MethodNote>& methodNotes)
 {
     std::ostringstream out;
     out.precision(10);
@@ -105,28 +148,29 @@ std::string summaryToJson(const Summary& s, const std::vector<PlausibilityWarnin
         << "  \"path_length_m\": " << s.pathLength_m << ",\n"
         << "  \"end_to_start_m\": " << s.endToStart_m << ",\n"
         << "  \"end_to_start_pct\": " << s.endToStartPct << ",\n"
-        << "  \"runtime_s\": " << s.runtime_s << ",\n"
-        << "  \"warnings\": [";
-    for (std::size_t i = 0; i < warnings.size(); ++i) {
-        const PlausibilityWarning& w = warnings[i];
-        out << (i == 0 ? "\n" : ",\n") << "    {\"kind\": " << jsonString(warningKindName(w.kind))
-            << ", \"start_s\": " << w.start_s << ", \"end_s\": " << w.end_s
-            << ", \"message\": " << jsonString(w.message) << "}";
-    }
-    out << (warnings.empty() ? "]\n" : "\n  ]\n") << "}\n";
+        << "  \"runtime_s\": " << s.runtime_s << ",\n";
+    putMotionJson(out, s);
+    putWarningsJson(out, warnings);
+    out << ",\n";
+    putMethodNotesJson(out, methodNotes);
+    out << "\n}\n";
     return out.str();
 }
 
 void writeSummaryCsv(std::ostream& out, const Summary& s)
 {
-    out << "samples,duration_s,stance_phases,steps,path_length_m,end_to_start_m,end_to_start_pct,runtime_s\n";
+    out << "samples,duration_s,stance_phases,steps,path_length_m,end_to_start_m,end_to_start_pct,runtime_s,"
+           "stair_steps_up,stair_steps_down,elevator_rides,stairs_climb_m,stairs_descent_m\n";
     out << s.samples << ',';
     put(out, s.duration_s, ',');
     out << s.stancePhases << ',' << s.steps << ',';
     put(out, s.pathLength_m, ',');
     put(out, s.endToStart_m, ',');
     put(out, s.endToStartPct, ',');
-    put(out, s.runtime_s, '\n');
+    put(out, s.runtime_s, ',');
+    out << s.stairStepsUp << ',' << s.stairStepsDown << ',' << s.elevatorRides << ',';
+    put(out, s.stairsClimb_m, ',');
+    put(out, s.stairsDescent_m, '\n');
 }
 
 void writeParametersCsv(std::ostream& out, const Parameters& params)

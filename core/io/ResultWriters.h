@@ -14,15 +14,20 @@ namespace footpath {
 /// time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance, then the
 /// bias estimates gyro_bias_{x,y,z}_radps, acc_bias_{x,y,z}_mps2. Numbers always use a dot.
 void writeTrajectoryCsv(std::ostream& out, const Result& result);
-/// Steps CSV: step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s
+/// Steps CSV: step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,
+/// motion,baro_height_m (motion: motionClassName; baro_height_m empty without a barometer).
 void writeStepsCsv(std::ostream& out, const Result& result);
-/// Summary as a header row and one value row.
+/// Summary as a header row and one value row; the motion-class counts and climbs follow the
+/// figures of every recording.
 void writeSummaryCsv(std::ostream& out, const Summary& summary);
 /// Every parameter: name,value,unit,default,differs_from_default,group,description.
 void writeParametersCsv(std::ostream& out, const Parameters& params);
 /// Summary as one JSON object (samples, duration_s, steps, path_length_m, end_to_start_m, ...),
-/// ending with "warnings": the plausibility warnings as {kind, start_s, end_s, message} objects.
-std::string summaryToJson(const Summary& summary, const std::vector<PlausibilityWarning>& warnings = {});
+/// then "motion" (stair_steps_up, stair_steps_down, elevator_rides, stairs_climb_m,
+/// stairs_descent_m), "warnings": the plausibility warnings as {kind, start_s, end_s, message}
+/// objects, and "method_notes": what the methods skipped, as {method, start_s, end_s, message}.
+std::string summaryToJson(const Summary& summary, const std::vector<PlausibilityWarning>& warnings = {},
+                          const std::vector<MethodNote>& methodNotes = {});
 
 /// Writes through a temporary file that is renamed at the end, so a failed write never leaves a
 /// truncated file behind. Returns an error naming the path, or empty.

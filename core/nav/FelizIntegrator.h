@@ -7,8 +7,19 @@
 
 namespace footpath {
 
-/// Feliz, Zalama, Garcia-Bermejo 2009 (seed 003): no Kalman filter. Fills result's per-sample
-/// state from the stance flags already in result.flags. (Being written.)
+/// Feliz, Zalama, Garcia-Bermejo 2009 (seed 003): dead reckoning without a Kalman filter.
+///
+/// Attitude: the initial alignment, then the integrated gyro (the EKF's Pade step), re-levelled
+/// from the accelerometer at every stance. Velocity: C f - g integrated and held at zero during
+/// stance; the velocity a swing reaches at the next stance start is the drift of that swing and is
+/// removed linearly in time over the swing (their Fig. 8), so the velocity is exactly zero at every
+/// stance. Position: the de-drifted velocity integrated (trapezoid).
+///
+/// Offline only: a swing's correction needs the stance that ends it. A final swing that no stance
+/// ends is left as integrated (and noted in result.methodNotes).
+///
+/// Fills result's per-sample vectors (time, position, velocity, roll/pitch/yaw; the bias vectors
+/// hold zeros) from the stance flags already in result.flags. Returns false if progress cancelled.
 bool runFelizIntegrator(const Recording& recording, const Parameters& params, const ProgressCallback& progress,
                         Result& result);
 

@@ -77,7 +77,7 @@ struct Parameters {
 
     // HDR
     double hdr_lag_s = 1.0;            ///< heading now compared with the heading this long ago
-    double hdr_threshold_rad = 0.15;   ///< a smaller difference is drift, a larger one a real turn
+    double hdr_threshold_rad = 0.08;   ///< a smaller difference is drift, a larger one a real turn (paper 0.15; 0.08 measured better on the ecg-xmu closed walks)
     double r_hdr_rad = 0.01;
 
     // IPER
@@ -85,7 +85,7 @@ struct Parameters {
     double iper_axis_rad = 0.0;        ///< the building's main axis (x of the navigation frame = 0)
     double iper_threshold_rad = 0.2;   ///< walking within this of an axis counts as along it
     double iper_window_s = 2.0;        ///< displacement windows
-    double r_iper_m = 0.05;            ///< cross-axis displacement
+    double r_iper_m = 0.005;           ///< cross-axis displacement (small: the 9-state filter is confident of its position)
     double r_iper_height_m = 0.05;     ///< height at stance against the start height
 
     // ZUNA
@@ -97,12 +97,12 @@ struct Parameters {
     // Barometer and motion classes
     int baro_model = static_cast<int>(BarometerModel::Formula);
     double baro_linear_m_per_pa = 0.09;    ///< seed 004's experimental constant N
-    double r_baro_m = 0.3;
-    double motion_level_max_m = 0.16;      ///< gamma_h: a smaller height change per step is level walking
-    double motion_elevator_var_pa2 = 300.0;  ///< mu_h: pressure variance between steps above it: elevator
+    double r_baro_m = 0.01;  ///< small because the gain is R against the filter's tiny vertical variance: 0.3 left ecg-xmu heights 1-6 m off
+    double motion_level_max_m = 0.2;       ///< gamma_h (paper 0.16): ecg-xmu stance heights wander +-0.2 m on level floors
+    double motion_elevator_var_pa2 = 100.0;  ///< mu_h (paper "300 Pa"): ecg-xmu rides 360-470 Pa^2, stairs and walking below 20
 
     // Magnetometer heading
-    double r_mag_rad = 0.05;
+    double r_mag_rad = 0.02;               ///< std per stance; the filter is sure of its heading, a looser R barely moves it
     double mag_norm_tolerance = 0.1;       ///< |m| within this fraction of its value at alignment
     double mag_dip_tolerance_rad = 0.087;  ///< dip angle within this of its value at alignment
 

@@ -32,6 +32,8 @@ std::string checkInput(const Recording& recording, const Parameters& params)
     return text;
 }
 
+}  // namespace
+
 void reserveResult(Result& result, std::size_t n)
 {
     result.time_s.reserve(n);
@@ -51,6 +53,8 @@ void recordState(Result& result, double time_s, const NavState& state)
     result.gyroBias_radps.push_back(state.gyroBias_radps);
     result.accBias_mps2.push_back(state.accBias_mps2);
 }
+
+namespace {
 
 SampleStanceFlags flagsAt(const StanceFlags& flags, std::size_t k)
 {

@@ -11,6 +11,7 @@
 namespace footpath {
 
 class ErrorStateEkf;
+struct NavState;
 class MeasurementSources;
 struct SampleStanceFlags;
 
@@ -28,6 +29,12 @@ struct PipelineOutput {
 /// is being cancelled.
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
                            const ProgressCallback& progress = {});
+
+/// Reserves room for n samples in result's per-sample vectors (time, state, attitude, biases).
+void reserveResult(Result& result, std::size_t n);
+
+/// Appends one sample's time and navigation state to result's per-sample vectors.
+void recordState(Result& result, double time_s, const NavState& state);
 
 /// Stance phases of the result as steps (stance times, mean stance position, stride) and the summary
 /// figures that depend on them. Exposed for tests; runPipeline calls it.

@@ -75,9 +75,12 @@ Profile evaluate(const Polynomial& coefficients, double tau)
     return profile;
 }
 
-/// One swing from a footfall to the next; the foot rests before and after it.
+/// One swing from a footfall to the next, or an elevator ride; the foot rests before and after it
+/// (and, in a ride, during it).
 struct Swing {
     double start_s = 0.0;
+    double duration_s = 0.0;
+    bool elevatorRide = false;
     Vector3d from_m = Vector3d::Zero();
     Vector3d to_m = Vector3d::Zero();
     double fromYaw_rad = 0.0;
@@ -123,9 +126,40 @@ int stridesForSegment(double horizontalLength_m, double strideLength_m)
     return std::max(1, static_cast<int>(std::lround(horizontalLength_m / strideLength_m)));
 }
 
+/// Peak of the progress profile's rate: 35/16 (at tau = 1/2).
+constexpr double kProgressPeakRate = 35.0 / 16.0;
+
+bool isElevatorSegment(std::size_t waypoint, const WalkSimulatorConfig& config)
+{
+    return std::find(config.elevatorWaypoints.begin(), config.elevatorWaypoints.end(), waypoint)
+        != config.elevatorWaypoints.end();
+}
+
+/// The movements in time order and when the last one, with the stance after it, is over.
+struct WalkPlan {
+    std::vector<Swing> swings;
+    double end_s = 0.0;
+};
+
+/// The ride waits, moves over the segment with the progress profile at the configured peak speed,
+/// and waits again; the foot keeps its heading.
+Swing planRide(const Vector3d& from_m, const Vector3d& to_m, double yaw_rad, double& start_s,
+               const WalkSimulatorConfig& config)
+{
+    Swing ride;
+    ride.elevatorRide = true;
+    ride.start_s = start_s + config.elevatorWait_s;
+    ride.duration_s = kProgressPeakRate * std::abs(to_m.z() - from_m.z()) / config.elevatorSpeed_mps;
+    ride.from_m = from_m;
+    ride.to_m = to_m;
+    ride.fromYaw_rad = ride.toYaw_rad = yaw_rad;
+    start_s = ride.start_s + ride.duration_s + config.elevatorWait_s;
+    return ride;
+}
+
 /// Splits every segment into equal strides and gives each its swing's start time and headings.
 /// The foot turns to a new segment's direction during that segment's first swing.
-std::vector<Swing> planSwings(const std::vector<Vector3d>& waypoints, const WalkSimulatorConfig& config)
+WalkPlan planSwings(const std::vector<Vector3d>& waypoints, const WalkSimulatorConfig& config)
 {
     std::vector<Swing> swings;
     double yaw_rad = initialYaw(waypoints);
@@ -134,6 +168,10 @@ std::vector<Swing> planSwings(const std::vector<Vector3d>& waypoints, const Walk
         const Vector3d delta = waypoints[i] - waypoints[i - 1];
         if (delta.norm() < kNegligibleLength_m)
             continue;
+        if (isElevatorSegment(i, config)) {
+            swings.push_back(planRide(waypoints[i - 1], waypoints[i], yaw_rad, start_s, config));
+            continue;
+        }
         const double horizontal_m = horizontalLength(delta);
         // Shortest turn from the current heading; a vertical segment keeps the heading.
         const double segmentYaw_rad = horizontal_m > kNegligibleLength_m
@@ -143,6 +181,7 @@ std::vector<Swing> planSwings(const std::vector<Vector3d>& waypoints, const Walk
         for (int s = 0; s < strides; ++s) {
             Swing swing;
             swing.start_s = start_s;
+            swing.duration_s = config.swingDuration_s;
             swing.from_m = waypoints[i - 1] + delta * (static_cast<double>(s) / strides);
             swing.to_m = waypoints[i - 1] + delta * (static_cast<double>(s + 1) / strides);
             swing.fromYaw_rad = yaw_rad;
@@ -152,7 +191,7 @@ std::vector<Swing> planSwings(const std::vector<Vector3d>& waypoints, const Walk
             start_s += config.swingDuration_s + config.stanceDuration_s;
         }
     }
-    return swings;
+    return {swings, start_s};
 }
 
 FootState restingAt(const Vector3d& position_m, double yaw_rad)
@@ -163,10 +202,20 @@ FootState restingAt(const Vector3d& position_m, double yaw_rad)
     return state;
 }
 
+/// The foot resting on the elevator's floor: only the height moves.
+FootState rideState(const Swing& ride, double tau)
+{
+    const Profile progress = evaluate(kProgress, tau);
+    const Vector3d delta_m = ride.to_m - ride.from_m;
+    FootState state = restingAt(ride.from_m + progress.value * delta_m, ride.fromYaw_rad);
+    state.acceleration_mps2 = progress.accel * delta_m / (ride.duration_s * ride.duration_s);
+    return state;
+}
+
 /// The analytic swing: time derivatives are tau derivatives scaled by 1/T and 1/T^2.
 FootState swingState(const Swing& swing, double tau, const WalkSimulatorConfig& config)
 {
-    const double duration_s = config.swingDuration_s;
+    const double duration_s = swing.duration_s;
     const Profile progress = evaluate(kProgress, tau);
     const Profile lift = evaluate(kLiftBump, tau);
     const Profile pitch = evaluate(kPitchWave, tau);
@@ -194,9 +243,11 @@ FootState footStateAt(double time_s, const std::vector<Swing>& swings, const Vec
         return restingAt(start_m, startYaw_rad);
     const Swing& latest = *(next - 1);
     const double sinceStart_s = time_s - latest.start_s;
-    if (sinceStart_s >= config.swingDuration_s - kTimeTolerance_s)
+    if (sinceStart_s >= latest.duration_s - kTimeTolerance_s)
         return restingAt(latest.to_m, latest.toYaw_rad);
-    FootState state = swingState(latest, sinceStart_s / config.swingDuration_s, config);
+    if (latest.elevatorRide)
+        return rideState(latest, sinceStart_s / latest.duration_s);
+    FootState state = swingState(latest, sinceStart_s / latest.duration_s, config);
     state.inSwing = sinceStart_s > kTimeTolerance_s;
     return state;
 }
@@ -259,15 +310,21 @@ ImuSample sensorReading(double time_s, const std::vector<Swing>& swings, const V
 }
 
 /// Adds the constant biases and white noise; draws nothing for a zero standard deviation because
-/// std::normal_distribution requires a positive one.
+/// std::normal_distribution requires a positive one. The barometer draws from its own generator,
+/// so switching its noise on leaves the inertial samples as they were.
 class SensorErrors {
 public:
-    explicit SensorErrors(const WalkSimulatorConfig& config) : config_(config), random_(config.seed) {}
+    explicit SensorErrors(const WalkSimulatorConfig& config)
+        : config_(config), random_(config.seed), pressureRandom_(config.seed ^ 0x5bd1e995u)
+    {
+    }
 
     void apply(ImuSample& sample)
     {
         sample.acc_mps2 += config_.accBias_mps2 + whiteNoise(config_.accNoiseStd_mps2);
         sample.gyr_radps += config_.gyrBias_radps + whiteNoise(config_.gyrNoiseStd_radps);
+        if (sample.hasPressure())
+            sample.pressure_pa = pressureReading(sample.pressure_pa);
     }
 
 private:
@@ -282,8 +339,18 @@ private:
         return {x, y, z};
     }
 
+    double pressureReading(double pressure_pa)
+    {
+        if (config_.pressureNoiseStd_pa > 0.0)
+            pressure_pa += std::normal_distribution<double>(0.0, config_.pressureNoiseStd_pa)(pressureRandom_);
+        if (config_.pressureQuantum_pa > 0.0)
+            pressure_pa = std::round(pressure_pa / config_.pressureQuantum_pa) * config_.pressureQuantum_pa;
+        return pressure_pa;
+    }
+
     const WalkSimulatorConfig& config_;
     std::mt19937 random_;
+    std::mt19937 pressureRandom_;
 };
 
 /// Empty when the configuration can produce a walk, else what is wrong with it.
@@ -295,8 +362,23 @@ std::string configProblem(const WalkSimulatorConfig& config)
         return "swing duration must be positive";
     if (!(config.stanceDuration_s >= 0.0 && config.initialStill_s >= 0.0 && config.finalStill_s >= 0.0))
         return "stance and still durations must not be negative";
-    if (!(config.accNoiseStd_mps2 >= 0.0 && config.gyrNoiseStd_radps >= 0.0))
-        return "noise standard deviations must not be negative";
+    if (!(config.accNoiseStd_mps2 >= 0.0 && config.gyrNoiseStd_radps >= 0.0 && config.pressureNoiseStd_pa >= 0.0
+          && config.pressureQuantum_pa >= 0.0))
+        return "noise standard deviations and the pressure quantum must not be negative";
+    if (!config.elevatorWaypoints.empty() && !(config.elevatorSpeed_mps > 0.0 && config.elevatorWait_s >= 0.0))
+        return "elevator speed must be positive and its wait not negative";
+    return {};
+}
+
+/// Empty when every elevator segment exists and is vertical.
+std::string elevatorProblem(const std::vector<Vector3d>& waypoints, const WalkSimulatorConfig& config)
+{
+    for (const std::size_t i : config.elevatorWaypoints) {
+        if (i == 0 || i >= waypoints.size())
+            return "elevator waypoint " + std::to_string(i) + " does not end a segment";
+        if (horizontalLength(waypoints[i] - waypoints[i - 1]) > kNegligibleLength_m)
+            return "elevator segment to waypoint " + std::to_string(i) + " is not vertical";
+    }
     return {};
 }
 
@@ -320,16 +402,18 @@ SimulatedWalk simulateWalk(const std::vector<Eigen::Vector3d>& waypoints, const 
 {
     SimulatedWalk walk;
     walk.truePathLength_m = horizontalPathLength(waypoints);
-    const std::vector<Swing> swings = planSwings(waypoints, config);
+    const WalkPlan plan = planSwings(waypoints, config);
+    const std::vector<Swing>& swings = plan.swings;
     walk.recording.source = describe(waypoints, swings.size(), walk.truePathLength_m);
-    if (const std::string problem = configProblem(config); !problem.empty()) {
+    std::string problem = configProblem(config);
+    if (problem.empty())
+        problem = elevatorProblem(waypoints, config);
+    if (!problem.empty()) {
         walk.recording.warnings.push_back("walk simulator: " + problem);
         return walk;
     }
 
-    const double duration_s = config.initialStill_s
-        + static_cast<double>(swings.size()) * (config.swingDuration_s + config.stanceDuration_s)
-        + config.finalStill_s;
+    const double duration_s = plan.end_s + config.finalStill_s;
     // Samples at k / rate up to and including the end (tolerance for a product such as 10.7 * 100).
     const auto sampleCount = static_cast<std::size_t>(std::floor(duration_s * config.rate_hz + 1e-9)) + 1;
     const Vector3d start_m = waypoints.empty() ? Vector3d::Zero() : waypoints.front();
@@ -365,6 +449,20 @@ std::vector<Eigen::Vector3d> closedRectanglePath(double sideX_m, double sideY_m)
 {
     return {Vector3d::Zero(), Vector3d(sideX_m, 0.0, 0.0), Vector3d(sideX_m, sideY_m, 0.0),
             Vector3d(0.0, sideY_m, 0.0), Vector3d::Zero()};
+}
+
+std::vector<Eigen::Vector3d> elevatorPath(double walkBefore_m, double rise_m, double walkAfter_m)
+{
+    return {Vector3d::Zero(), Vector3d(walkBefore_m, 0.0, 0.0), Vector3d(walkBefore_m, 0.0, rise_m),
+            Vector3d(walkBefore_m + walkAfter_m, 0.0, rise_m)};
+}
+
+WalkSimulatorConfig ecgXmuBarometer(WalkSimulatorConfig config)
+{
+    config.withPressure = true;
+    config.pressureNoiseStd_pa = 2.0;
+    config.pressureQuantum_pa = 0.01;
+    return config;
 }
 
 std::vector<Eigen::Vector3d> stairsPath(int strides, double rise_m, double run_m)

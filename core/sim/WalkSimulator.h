@@ -31,8 +31,24 @@ struct WalkSimulatorConfig {
     bool gyroIntervalAveraged = true;
     bool withMagnetometer = false;  ///< adds a constant Earth field rotated into the body frame
     bool withPressure = false;      ///< adds pressure from height by the standard barometric formula
+    /// Barometer errors. The ecg-xmu barometer at rest: about 2 Pa white noise (1.5-2.5 Pa, 0.1-0.2 m)
+    /// in steps of 0.01 Pa (see ecgXmuBarometer()). 0: exact readings.
+    double pressureNoiseStd_pa = 0.0;
+    double pressureQuantum_pa = 0.0;
+    /// Segments ridden in an elevator: index i makes waypoints[i - 1] -> waypoints[i], which must be
+    /// vertical, a ride during which the foot rests (true stance) while the height changes. The car
+    /// waits elevatorWait_s before and after moving, and moves with a smooth speed profile
+    /// (zero acceleration and jerk at both ends) that peaks at elevatorSpeed_mps.
+    std::vector<std::size_t> elevatorWaypoints;
+    double elevatorSpeed_mps = 1.0;
+    double elevatorWait_s = 3.0;
     std::uint32_t seed = 1;         ///< fixed seed: runs are repeatable
 };
+
+/// The ecg-xmu barometer's noise and resolution, measured on the files at rest (pressure_pa of
+/// Height.txt, data.txt, shanglou041601.TXT, mage_*_1.txt: 1.5-2.5 Pa standard deviation, values in
+/// 0.01 Pa), added to config with pressure switched on.
+WalkSimulatorConfig ecgXmuBarometer(WalkSimulatorConfig config);
 
 /// A simulated walk: the recording a sensor would produce plus the truth behind it.
 struct SimulatedWalk {
@@ -51,5 +67,10 @@ SimulatedWalk simulateWalk(const std::vector<Eigen::Vector3d>& waypoints, const 
 std::vector<Eigen::Vector3d> straightLinePath(double length_m);
 std::vector<Eigen::Vector3d> closedRectanglePath(double sideX_m, double sideY_m);  ///< counter-clockwise
 std::vector<Eigen::Vector3d> stairsPath(int strides, double rise_m, double run_m);  ///< climbs rise_m per stride
+/// Walks walkBefore_m along +x into an elevator, rides rise_m (negative: down) and walks walkAfter_m
+/// further along +x. The ride is the segment that ends at kElevatorPathRideWaypoint: put that index
+/// in WalkSimulatorConfig::elevatorWaypoints.
+std::vector<Eigen::Vector3d> elevatorPath(double walkBefore_m, double rise_m, double walkAfter_m);
+constexpr std::size_t kElevatorPathRideWaypoint = 2;
 
 }  // namespace footpath

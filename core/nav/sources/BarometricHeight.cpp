@@ -1,11 +1,165 @@
 #include "nav/sources/BarometricHeight.h"
 
 #include "nav/ErrorStateEkf.h"
+#include "nav/MotionClasses.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
 
 namespace footpath {
 
-void BarometricHeightSource::apply(ErrorStateEkf& /*ekf*/, const SourceContext& /*context*/)
+namespace {
+
+/// Neighbours on each side whose median a sample is compared with.
+constexpr std::size_t kSpikeHalfWindow = 5;
+/// About six standard deviations of the ecg-xmu barometer at rest (1.5-2.5 Pa), 1 m of height;
+/// an elevator at 1 m/s changes the pressure by 0.6 Pa across the window.
+constexpr double kSpikeThreshold_pa = 12.0;
+/// A stance this long may hold an elevator ride (the shortest ride, one floor, takes several
+/// seconds); shorter stances are too noisy to compare their parts.
+constexpr double kMinRideStance_s = 2.0;
+/// The first and last part of a long stance: 50 samples at 100 Hz average the noise to ~0.3 Pa.
+constexpr double kStancePart_s = 0.5;
+/// The measurement noise of a stance that spans a ride, as a fraction of r_baro_m.
+constexpr double kRideResetNoiseFactor = 0.01;
+
+double median(std::vector<double> values)
 {
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    return *middle;
+}
+
+double neighbourMedian(const std::vector<double>& pressures_pa, std::size_t i)
+{
+    const std::size_t first = i >= kSpikeHalfWindow ? i - kSpikeHalfWindow : 0;
+    const std::size_t last = std::min(pressures_pa.size(), i + kSpikeHalfWindow + 1);
+    return median(std::vector<double>(pressures_pa.begin() + static_cast<std::ptrdiff_t>(first),
+                                      pressures_pa.begin() + static_cast<std::ptrdiff_t>(last)));
+}
+
+bool isSpike(const std::vector<double>& pressures_pa, std::size_t i, double& replacement_pa)
+{
+    replacement_pa = neighbourMedian(pressures_pa, i);
+    return std::abs(pressures_pa[i] - replacement_pa) > kSpikeThreshold_pa;
+}
+
+/// Mean of the samples whose time lies in [from_s, to_s].
+double meanBetween(const std::vector<double>& times_s, const std::vector<double>& pressures_pa, double from_s,
+                   double to_s)
+{
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < times_s.size(); ++i) {
+        if (times_s[i] >= from_s && times_s[i] <= to_s) {
+            sum += pressures_pa[i];
+            ++count;
+        }
+    }
+    return count == 0 ? std::nan("") : sum / static_cast<double>(count);
+}
+
+}  // namespace
+
+std::vector<double> despikedPressure(const std::vector<double>& pressures_pa)
+{
+    std::vector<double> clean = pressures_pa;
+    for (std::size_t i = 0; i < pressures_pa.size(); ++i) {
+        double replacement_pa = 0.0;
+        if (isSpike(pressures_pa, i, replacement_pa))
+            clean[i] = replacement_pa;
+    }
+    return clean;
+}
+
+StancePressure readStancePressure(const std::vector<double>& times_s, const std::vector<double>& pressures_pa)
+{
+    StancePressure result;
+    if (pressures_pa.empty() || times_s.size() != pressures_pa.size()) {
+        result.mean_pa = result.first_pa = result.last_pa = std::nan("");
+        return result;
+    }
+    std::vector<double> kept_s, kept_pa;
+    for (std::size_t i = 0; i < pressures_pa.size(); ++i) {
+        double replacement_pa = 0.0;
+        if (!isSpike(pressures_pa, i, replacement_pa)) {
+            kept_s.push_back(times_s[i]);
+            kept_pa.push_back(pressures_pa[i]);
+        }
+    }
+    if (kept_pa.empty()) {  // all spikes cannot happen with a median, but stay defined
+        kept_s = times_s;
+        kept_pa = pressures_pa;
+    }
+    result.mean_pa = meanBetween(kept_s, kept_pa, kept_s.front(), kept_s.back());
+    result.first_pa = result.last_pa = result.mean_pa;
+    if (kept_s.back() - kept_s.front() >= kMinRideStance_s) {
+        result.spansHeightChange = true;
+        result.first_pa = meanBetween(kept_s, kept_pa, kept_s.front(), kept_s.front() + kStancePart_s);
+        result.last_pa = meanBetween(kept_s, kept_pa, kept_s.back() - kStancePart_s, kept_s.back());
+    }
+    return result;
+}
+
+void BarometricHeightSource::apply(ErrorStateEkf& ekf, const SourceContext& context)
+{
+    const ImuSample& sample = context.sample;
+    if (!sawSample_) {
+        sawSample_ = true;
+        firstTime_s_ = sample.time_s;
+        hasPressure_ = sample.hasPressure();
+    }
+    if (!hasPressure_)
+        return;
+    if (context.flags.stance) {
+        if (sample.hasPressure()) {  // a missing reading inside a recording with pressure: skip it
+            runTimes_s_.push_back(sample.time_s);
+            runPressures_pa_.push_back(sample.pressure_pa);
+        }
+        return;
+    }
+    if (!runPressures_pa_.empty())
+        stanceEnded(ekf);
+    runTimes_s_.clear();
+    runPressures_pa_.clear();
+}
+
+void BarometricHeightSource::stanceEnded(ErrorStateEkf& ekf)
+{
+    const StancePressure pressure = readStancePressure(runTimes_s_, runPressures_pa_);
+    if (!haveReference_) {
+        haveReference_ = true;
+        referencePressure_pa_ = pressure.mean_pa;
+        referenceZ_m_ = ekf.state().position_m.z();
+        return;
+    }
+    const double meanHeight_m = barometricHeight(pressure.mean_pa, referencePressure_pa_, params_);
+    const double rideHeight_m = barometricHeight(pressure.last_pa, pressure.first_pa, params_);
+    if (std::abs(rideHeight_m) <= kMinStanceRide_m) {
+        updateHeight(ekf, referenceZ_m_ + meanHeight_m, params_.r_baro_m);
+        return;
+    }
+    // A ride: the inertial height holds no information about it, so the barometer resets it (the
+    // gain is R against the filter's variance; a hundredth of the usual R makes it nearly 1).
+    updateHeight(ekf, referenceZ_m_ + barometricHeight(pressure.last_pa, referencePressure_pa_, params_),
+                 kRideResetNoiseFactor * params_.r_baro_m);
+}
+
+void BarometricHeightSource::updateHeight(ErrorStateEkf& ekf, double measuredZ_m, double noiseStd_m)
+{
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(1, ErrorStateEkf::kStates);
+    h(0, ErrorStateEkf::kPos + 2) = 1.0;  // dr_z = estimate - truth
+    ekf.updateRows(h, Eigen::VectorXd::Constant(1, ekf.state().position_m.z() - measuredZ_m),
+                   Eigen::VectorXd::Constant(1, noiseStd_m * noiseStd_m));
+}
+
+void BarometricHeightSource::finish(double endTime_s, std::vector<MethodNote>& notes)
+{
+    if (!sawSample_ || hasPressure_)
+        return;
+    notes.push_back(MethodNote{"baro", firstTime_s_, endTime_s,
+                               "not applied: the recording has no pressure readings, so there is no barometric height"});
 }
 
 }  // namespace footpath

@@ -1,11 +1,103 @@
 #include "nav/sources/ZeroNavigationAcceleration.h"
 
+#include "nav/Attitude.h"
 #include "nav/ErrorStateEkf.h"
+
+#include <sstream>
 
 namespace footpath {
 
-void ZeroNavigationAccelerationSource::apply(ErrorStateEkf& /*ekf*/, const SourceContext& /*context*/)
+namespace {
+
+/// The reference needs this much stance time in the reference period: the stance samples are
+/// static, so half a second averages the noise well; less is a start without a standstill.
+constexpr double kMinReferenceStance_s = 0.5;
+
+}  // namespace
+
+bool ZeroNavigationAccelerationSource::collectReference(const SourceContext& context)
 {
+    if (reference_ != Reference::Collecting)
+        return reference_ == Reference::Ready;
+    const double time_s = context.sample.time_s;
+    if (!started_) {
+        started_ = true;
+        startTime_s_ = time_s;
+    }
+    if (time_s - startTime_s_ < params_.zuna_reference_s) {
+        ++windowSamples_;
+        if (context.flags.stance) {
+            referenceSum_ += context.sample.acc_mps2;
+            ++referenceSamples_;
+        }
+        return false;
+    }
+    // Stance time from the sample count and the window's mean spacing (the rate is not fixed).
+    const double stance_s = windowSamples_ == 0 ? 0.0
+        : params_.zuna_reference_s * static_cast<double>(referenceSamples_) / static_cast<double>(windowSamples_);
+    if (stance_s < kMinReferenceStance_s) {
+        reference_ = Reference::Missing;
+        std::ostringstream message;
+        message << "not applied: the foot rests for only " << stance_s << " s of the first " << params_.zuna_reference_s
+                << " s, so there is no static reference for gravity (zuna_reference_s)";
+        context.notes.push_back(MethodNote{"zuna", startTime_s_, time_s, message.str()});
+        return false;
+    }
+    reference_ = Reference::Ready;
+    referenceGravity_mps2 = (referenceSum_ / static_cast<double>(referenceSamples_)).norm();
+    return true;
+}
+
+bool ZeroNavigationAccelerationSource::isMidStance(const SourceContext& context)
+{
+    if (!context.flags.stance) {
+        inStance_ = false;
+        return false;
+    }
+    if (!inStance_) {
+        inStance_ = true;
+        stanceStart_s_ = context.sample.time_s;
+    }
+    const bool settled = context.sample.time_s - stanceStart_s_ >= params_.zuna_min_stance_s;
+    const bool quiet = context.flags.logStatistic <= context.flags.logThreshold - params_.zuna_margin_dec;
+    return settled && quiet;
+}
+
+void ZeroNavigationAccelerationSource::update(ErrorStateEkf& ekf, const Eigen::Vector3d& specificForce_mps2) const
+{
+    const NavState& state = ekf.state();
+    const Eigen::Vector3d gravityReaction_n(0.0, 0.0, referenceGravity_mps2);
+    // Predicted minus measured (zero) navigation-frame acceleration.
+    const Eigen::Vector3d innovation = state.bodyToNav * (specificForce_mps2 - state.accBias_mps2) - gravityReaction_n;
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(3, ErrorStateEkf::kStates);
+    h.block<3, 3>(0, ErrorStateEkf::kAtt) = -skew(gravityReaction_n);
+    h.block<3, 3>(0, ErrorStateEkf::kAccBias) = state.bodyToNav;
+    ekf.updateRows(h, innovation, Eigen::VectorXd::Constant(3, params_.r_zuna_mps2 * params_.r_zuna_mps2));
+}
+
+void ZeroNavigationAccelerationSource::apply(ErrorStateEkf& ekf, const SourceContext& context)
+{
+    const bool midStance = isMidStance(context);  // tracks stance runs from the first sample
+    if (!collectReference(context) || !midStance)
+        return;
+    update(ekf, context.sample.acc_mps2);
+    ++updates_;
+}
+
+void ZeroNavigationAccelerationSource::finish(double endTime_s, std::vector<MethodNote>& notes)
+{
+    if (reference_ == Reference::Missing || updates_ > 0)
+        return;  // a missing reference has its note already
+    std::ostringstream message;
+    if (reference_ == Reference::Collecting) {
+        message << "not applied: the recording is shorter than the reference period zuna_reference_s ("
+                << params_.zuna_reference_s << " s)";
+        notes.push_back(MethodNote{"zuna", startTime_s_, endTime_s, message.str()});
+        return;
+    }
+    message << "not applied: no stance lasted " << params_.zuna_min_stance_s << " s with the detector statistic "
+            << params_.zuna_margin_dec << " decades below its threshold (zuna_min_stance_s, zuna_margin_dec)";
+    notes.push_back(MethodNote{"zuna", startTime_s_ + params_.zuna_reference_s, endTime_s, message.str()});
 }
 
 }  // namespace footpath
