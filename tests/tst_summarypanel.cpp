@@ -180,7 +180,7 @@ private slots:
         QVERIFY(table);
         QAbstractItemModel* model = table->model();
         QCOMPARE(static_cast<std::size_t>(model->rowCount()), result.steps.size());
-        QCOMPARE(model->columnCount(), 9);
+        QCOMPARE(model->columnCount(), 11);  // with Motion and Baro height (hidden without pressure)
         constexpr int strideColumn = 4;
         table->sortByColumn(strideColumn, Qt::DescendingOrder);
         for (int row = 1; row < model->rowCount(); ++row)

@@ -327,6 +327,14 @@
         <source>Reading the file raised no warnings.</source>
         <translation>Beim Lesen der Datei gab es keine Warnungen.</translation>
     </message>
+    <message>
+        <source>Method comparison</source>
+        <translation>Methodenvergleich</translation>
+    </message>
+    <message>
+        <source>Every method set run on this recording with the same detector and noise parameters; the best value of a column is in bold and marked %1.</source>
+        <translation>Jede Methodenkombination auf dieser Aufnahme mit denselben Detektor- und Rauschparametern gerechnet; der beste Wert einer Spalte ist fett und mit %1 markiert.</translation>
+    </message>
 </context>
 <context>
     <name>footpath::AnalysisSession</name>
@@ -641,7 +649,182 @@
     </message>
 </context>
 <context>
+    <name>footpath::MotionLanes</name>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: steps %2–%3 (%4–%5 s)</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: Schritte %2–%3 (%4–%5 s)</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;barometric height %1 → %2 m</source>
+        <translation>&lt;br&gt;barometrische Höhe %1 → %2 m</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Eben</translation>
+    </message>
+    <message>
+        <source>Stairs up</source>
+        <translation>Treppe hinauf</translation>
+    </message>
+    <message>
+        <source>Stairs down</source>
+        <translation>Treppe hinab</translation>
+    </message>
+    <message>
+        <source>Elevator up</source>
+        <translation>Aufzug hinauf</translation>
+    </message>
+    <message>
+        <source>Elevator down</source>
+        <translation>Aufzug hinab</translation>
+    </message>
+    <message>
+        <source>Unclassified</source>
+        <translation>Ohne Klasse</translation>
+    </message>
+    <message>
+        <source>1 floor up by stairs (%1 m)</source>
+        <translation>1 Stockwerk über die Treppe hinauf (%1 m)</translation>
+    </message>
+    <message>
+        <source>1 floor down by stairs (%1 m)</source>
+        <translation>1 Stockwerk über die Treppe hinab (%1 m)</translation>
+    </message>
+    <message>
+        <source>%1 floors up by stairs (%2 m)</source>
+        <translation>%1 Stockwerke über die Treppe hinauf (%2 m)</translation>
+    </message>
+    <message>
+        <source>%1 floors down by stairs (%2 m)</source>
+        <translation>%1 Stockwerke über die Treppe hinab (%2 m)</translation>
+    </message>
+    <message>
+        <source>%1 m up by stairs</source>
+        <translation>%1 m über die Treppe hinauf</translation>
+    </message>
+    <message>
+        <source>%1 m down by stairs</source>
+        <translation>%1 m über die Treppe hinab</translation>
+    </message>
+    <message>
+        <source>1 elevator ride</source>
+        <translation>1 Aufzugfahrt</translation>
+    </message>
+    <message>
+        <source>%1 elevator rides</source>
+        <translation>%1 Aufzugfahrten</translation>
+    </message>
+    <message>
+        <source>Level walking only: no stairs or elevator</source>
+        <translation>Nur ebenes Gehen: keine Treppe, kein Aufzug</translation>
+    </message>
+    <message>
+        <source>Magnetometer</source>
+        <translation>Magnetometer</translation>
+    </message>
+    <message>
+        <source>Barometer</source>
+        <translation>Barometer</translation>
+    </message>
+    <message>
+        <source>Heading drift reduction (HDR)</source>
+        <translation>Kursdriftreduktion (HDR)</translation>
+    </message>
+    <message>
+        <source>Position error reduction (IPER)</source>
+        <translation>Positionsfehlerreduktion (IPER)</translation>
+    </message>
+    <message>
+        <source>Zero navigation acceleration (ZUNA)</source>
+        <translation>Null-Navigationsbeschleunigung (ZUNA)</translation>
+    </message>
+    <message>
+        <source>Feliz integrator</source>
+        <translation>Feliz-Integrator</translation>
+    </message>
+    <message>
+        <source>%1–%2 s</source>
+        <translation>%1–%2 s</translation>
+    </message>
+    <message>
+        <source>%1, %2: %3</source>
+        <translation>%1, %2: %3</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <source>Method notes</source>
+        <translation>Hinweise der Verfahren</translation>
+    </message>
+    <message>
+        <source>barometer present, steps not classified (use_baro off?)</source>
+        <translation>Barometer vorhanden, Schritte nicht eingeordnet (use_baro aus?)</translation>
+    </message>
+    <message>
+        <source>Colour by motion</source>
+        <translation>Nach Bewegung färben</translation>
+    </message>
+    <message>
+        <source>Colour each stride by its step's motion class (stairs, elevator); needs a barometer</source>
+        <translation>Jeden Schritt nach seiner Bewegungsklasse färben (Treppe, Aufzug); braucht ein Barometer</translation>
+    </message>
+    <message>
+        <source>Baro height (m)</source>
+        <translation>Baro-Höhe (m)</translation>
+    </message>
+    <message>
+        <source>How the foot got to this step: level, stairs or elevator (from the barometer)</source>
+        <translation>Wie der Fuß zu diesem Schritt kam: eben, Treppe oder Aufzug (aus dem Barometer)</translation>
+    </message>
+    <message>
+        <source>Barometric height at this stance against the first one</source>
+        <translation>Barometrische Höhe in dieser Standphase gegenüber der ersten</translation>
+    </message>
+    <message>
+        <source>Counted from the barometer's height between steps (seed 004); a floor is 3 m</source>
+        <translation>Gezählt aus der Barometerhöhe zwischen den Schritten (Seed 004); ein Stockwerk sind 3 m</translation>
+    </message>
+    <message>
+        <source>Where a measurement method skipped itself or did not apply, and why</source>
+        <translation>Wo ein Messverfahren sich ausgesetzt hat oder nicht anwendbar war, und warum</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Motion&lt;/b&gt; (barometer): %1</source>
+        <translation>&lt;b&gt;Bewegung&lt;/b&gt; (Barometer): %1</translation>
+    </message>
+    <message>
+        <source>Spans where a measurement method skipped itself or did not apply, and why; the other methods ran on.</source>
+        <translation>Zeitspannen, in denen ein Messverfahren sich ausgesetzt hat oder nicht anwendbar war, und warum; die übrigen Verfahren liefen weiter.</translation>
+    </message>
+    <message>
+        <source>Motion (barometer): %1.</source>
+        <translation>Bewegung (Barometer): %1.</translation>
+    </message>
+</context>
+<context>
     <name>footpath::MainWindow</name>
+    <message>
+        <source>Path &amp;colours</source>
+        <translation>Pfad&amp;farben</translation>
+    </message>
+    <message>
+        <source>One colour</source>
+        <translation>Eine Farbe</translation>
+    </message>
+    <message>
+        <source>By time</source>
+        <translation>Nach Zeit</translation>
+    </message>
+    <message>
+        <source>By foot speed</source>
+        <translation>Nach Fußgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>By motion (stairs, elevator)</source>
+        <translation>Nach Bewegung (Treppe, Aufzug)</translation>
+    </message>
     <message>
         <source>Footpath</source>
         <translation>Footpath</translation>
@@ -872,6 +1055,30 @@
             <numerusform>%n Plausibilitätswarnung: %1</numerusform>
             <numerusform>%n Plausibilitätswarnungen: %1</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Method comparison</source>
+        <translation>Methodenvergleich</translation>
+    </message>
+    <message>
+        <source>&amp;Compare methods</source>
+        <translation>Methoden &amp;vergleichen</translation>
+    </message>
+    <message>
+        <source>Run several method sets on this recording and compare their paths and figures</source>
+        <translation>Mehrere Methodenkombinationen auf dieser Aufnahme rechnen und ihre Wege und Kennzahlen vergleichen</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Vergleichen</translation>
+    </message>
+    <message>
+        <source>Methods of the set %1</source>
+        <translation>Methoden der Kombination %1</translation>
+    </message>
+    <message>
+        <source>&amp;Analysis</source>
+        <translation>&amp;Analyse</translation>
     </message>
 </context>
 <context>
@@ -1739,6 +1946,149 @@ Statistik</translation>
     <message>
         <source>Parameters from the command line</source>
         <translation>Parameter von der Kommandozeile</translation>
+    </message>
+    <message>
+        <source>Open the method comparison and run these sets, e.g. &quot;zupt;zupt,zaru;feliz&quot;</source>
+        <translation>Den Methodenvergleich öffnen und diese Kombinationen rechnen, z. B. &quot;zupt;zupt,zaru;feliz&quot;</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::ComparisonPanel</name>
+    <message>
+        <source>Method sets to compare; tick the ones to run</source>
+        <translation>Zu vergleichende Methodenkombinationen; die zu rechnenden ankreuzen</translation>
+    </message>
+    <message>
+        <source>Add a set, e.g. zupt,hdr,mag</source>
+        <translation>Kombination hinzufügen, z. B. zupt,hdr,mag</translation>
+    </message>
+    <message>
+        <source>Methods separated by commas: zupt, zaru, hdr, iper, zuna, baro, mag, feliz, 9state, 15state. Enter adds the set.</source>
+        <translation>Methoden durch Kommas getrennt: zupt, zaru, hdr, iper, zuna, baro, mag, feliz, 9state, 15state. Eingabe fügt die Kombination hinzu.</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Rechnen</translation>
+    </message>
+    <message>
+        <source>Run every ticked set on the current recording</source>
+        <translation>Jede angekreuzte Kombination auf der aktuellen Aufnahme rechnen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Click a row to make its methods the workspace&apos;s parameters (Edit &gt; Undo goes back)</source>
+        <translation>Eine Zeile anklicken, um ihre Methoden als Parameter des Arbeitsbereichs zu übernehmen (Bearbeiten &gt; Rückgängig geht zurück)</translation>
+    </message>
+    <message>
+        <source>Use as main result</source>
+        <translation>Als Hauptergebnis verwenden</translation>
+    </message>
+    <message>
+        <source>Make the selected set&apos;s methods the workspace&apos;s parameters</source>
+        <translation>Die Methoden der gewählten Kombination als Parameter des Arbeitsbereichs übernehmen</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>height z (m)</source>
+        <translation>Höhe z (m)</translation>
+    </message>
+    <message>
+        <source>Tick at least one method set.</source>
+        <translation>Mindestens eine Methodenkombination ankreuzen.</translation>
+    </message>
+    <message>
+        <source>best</source>
+        <translation>bester Wert</translation>
+    </message>
+    <message>
+        <source>Stale: the parameters changed since this comparison. Run again to update it.</source>
+        <translation>Veraltet: Die Parameter haben sich seit diesem Vergleich geändert. Erneut rechnen, um ihn zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>Open a recording to compare methods on it.</source>
+        <translation>Eine Aufnahme öffnen, um Methoden darauf zu vergleichen.</translation>
+    </message>
+    <message>
+        <source>Tick the sets and press Run.</source>
+        <translation>Kombinationen ankreuzen und Rechnen drücken.</translation>
+    </message>
+    <message>
+        <source>Click a row to use its methods.</source>
+        <translation>Eine Zeile anklicken, um ihre Methoden zu verwenden.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Running %n set(s)...</source>
+        <translation>
+            <numerusform>Rechne %n Kombination...</numerusform>
+            <numerusform>Rechne %n Kombinationen...</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>footpath::ComparisonTable</name>
+    <message>
+        <source>failed: %1</source>
+        <translation>fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>no estimate</source>
+        <translation>keine Schätzung</translation>
+    </message>
+    <message>
+        <source>Method set</source>
+        <translation>Methodenkombination</translation>
+    </message>
+    <message>
+        <source>End to start
+(m)</source>
+        <translation>Ende bis Start
+(m)</translation>
+    </message>
+    <message>
+        <source>End to start
+(%)</source>
+        <translation>Ende bis Start
+(%)</translation>
+    </message>
+    <message>
+        <source>Path length
+(m)</source>
+        <translation>Weglänge
+(m)</translation>
+    </message>
+    <message>
+        <source>Height change
+(m)</source>
+        <translation>Höhenänderung
+(m)</translation>
+    </message>
+    <message>
+        <source>ARMSE 2D
+(m)</source>
+        <translation>ARMSE 2D
+(m)</translation>
+    </message>
+    <message>
+        <source>Stance F1</source>
+        <translation>Standphasen-F1</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Schritte</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Warnungen</translation>
     </message>
 </context>
 </TS>

@@ -327,6 +327,14 @@
         <source>Reading the file raised no warnings.</source>
         <translation>读取文件时没有警告。</translation>
     </message>
+    <message>
+        <source>Method comparison</source>
+        <translation>方法比较</translation>
+    </message>
+    <message>
+        <source>Every method set run on this recording with the same detector and noise parameters; the best value of a column is in bold and marked %1.</source>
+        <translation>每个方法组合都以相同的检测器和噪声参数在此记录上运行；每列的最佳值以粗体显示并标记 %1。</translation>
+    </message>
 </context>
 <context>
     <name>footpath::AnalysisSession</name>
@@ -641,7 +649,182 @@
     </message>
 </context>
 <context>
+    <name>footpath::MotionLanes</name>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: steps %2–%3 (%4–%5 s)</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;：第 %2–%3 步（%4–%5 s）</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;barometric height %1 → %2 m</source>
+        <translation>&lt;br&gt;气压高度 %1 → %2 m</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>平地</translation>
+    </message>
+    <message>
+        <source>Stairs up</source>
+        <translation>上楼梯</translation>
+    </message>
+    <message>
+        <source>Stairs down</source>
+        <translation>下楼梯</translation>
+    </message>
+    <message>
+        <source>Elevator up</source>
+        <translation>电梯上行</translation>
+    </message>
+    <message>
+        <source>Elevator down</source>
+        <translation>电梯下行</translation>
+    </message>
+    <message>
+        <source>Unclassified</source>
+        <translation>未分类</translation>
+    </message>
+    <message>
+        <source>1 floor up by stairs (%1 m)</source>
+        <translation>经楼梯上行 1 层（%1 m）</translation>
+    </message>
+    <message>
+        <source>1 floor down by stairs (%1 m)</source>
+        <translation>经楼梯下行 1 层（%1 m）</translation>
+    </message>
+    <message>
+        <source>%1 floors up by stairs (%2 m)</source>
+        <translation>经楼梯上行 %1 层（%2 m）</translation>
+    </message>
+    <message>
+        <source>%1 floors down by stairs (%2 m)</source>
+        <translation>经楼梯下行 %1 层（%2 m）</translation>
+    </message>
+    <message>
+        <source>%1 m up by stairs</source>
+        <translation>经楼梯上行 %1 m</translation>
+    </message>
+    <message>
+        <source>%1 m down by stairs</source>
+        <translation>经楼梯下行 %1 m</translation>
+    </message>
+    <message>
+        <source>1 elevator ride</source>
+        <translation>乘电梯 1 次</translation>
+    </message>
+    <message>
+        <source>%1 elevator rides</source>
+        <translation>乘电梯 %1 次</translation>
+    </message>
+    <message>
+        <source>Level walking only: no stairs or elevator</source>
+        <translation>仅平地行走：无楼梯或电梯</translation>
+    </message>
+    <message>
+        <source>Magnetometer</source>
+        <translation>磁力计</translation>
+    </message>
+    <message>
+        <source>Barometer</source>
+        <translation>气压计</translation>
+    </message>
+    <message>
+        <source>Heading drift reduction (HDR)</source>
+        <translation>航向漂移抑制（HDR）</translation>
+    </message>
+    <message>
+        <source>Position error reduction (IPER)</source>
+        <translation>位置误差抑制（IPER）</translation>
+    </message>
+    <message>
+        <source>Zero navigation acceleration (ZUNA)</source>
+        <translation>零导航加速度（ZUNA）</translation>
+    </message>
+    <message>
+        <source>Feliz integrator</source>
+        <translation>Feliz 积分器</translation>
+    </message>
+    <message>
+        <source>%1–%2 s</source>
+        <translation>%1–%2 s</translation>
+    </message>
+    <message>
+        <source>%1, %2: %3</source>
+        <translation>%1，%2：%3</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>运动</translation>
+    </message>
+    <message>
+        <source>Method notes</source>
+        <translation>方法说明</translation>
+    </message>
+    <message>
+        <source>barometer present, steps not classified (use_baro off?)</source>
+        <translation>有气压计，但步态未分类（use_baro 未开启？）</translation>
+    </message>
+    <message>
+        <source>Colour by motion</source>
+        <translation>按运动着色</translation>
+    </message>
+    <message>
+        <source>Colour each stride by its step's motion class (stairs, elevator); needs a barometer</source>
+        <translation>按每步的运动类别（楼梯、电梯）为步幅着色；需要气压计</translation>
+    </message>
+    <message>
+        <source>Baro height (m)</source>
+        <translation>气压高度 (m)</translation>
+    </message>
+    <message>
+        <source>How the foot got to this step: level, stairs or elevator (from the barometer)</source>
+        <translation>脚如何到达这一步：平地、楼梯或电梯（由气压计判断）</translation>
+    </message>
+    <message>
+        <source>Barometric height at this stance against the first one</source>
+        <translation>此支撑相相对于第一个支撑相的气压高度</translation>
+    </message>
+    <message>
+        <source>Counted from the barometer's height between steps (seed 004); a floor is 3 m</source>
+        <translation>由步间气压高度统计（seed 004）；一层按 3 m 计</translation>
+    </message>
+    <message>
+        <source>Where a measurement method skipped itself or did not apply, and why</source>
+        <translation>测量方法跳过或不适用的时段及原因</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Motion&lt;/b&gt; (barometer): %1</source>
+        <translation>&lt;b&gt;运动&lt;/b&gt;（气压计）：%1</translation>
+    </message>
+    <message>
+        <source>Spans where a measurement method skipped itself or did not apply, and why; the other methods ran on.</source>
+        <translation>测量方法跳过或不适用的时段及原因；其他方法照常运行。</translation>
+    </message>
+    <message>
+        <source>Motion (barometer): %1.</source>
+        <translation>运动（气压计）：%1。</translation>
+    </message>
+</context>
+<context>
     <name>footpath::MainWindow</name>
+    <message>
+        <source>Path &amp;colours</source>
+        <translation>路径颜色(&amp;C)</translation>
+    </message>
+    <message>
+        <source>One colour</source>
+        <translation>单色</translation>
+    </message>
+    <message>
+        <source>By time</source>
+        <translation>按时间</translation>
+    </message>
+    <message>
+        <source>By foot speed</source>
+        <translation>按脚速</translation>
+    </message>
+    <message>
+        <source>By motion (stairs, elevator)</source>
+        <translation>按运动（楼梯、电梯）</translation>
+    </message>
     <message>
         <source>Footpath</source>
         <translation>Footpath</translation>
@@ -871,6 +1054,30 @@
         <translation>
             <numerusform>%n 条合理性警告：%1</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Method comparison</source>
+        <translation>方法比较</translation>
+    </message>
+    <message>
+        <source>&amp;Compare methods</source>
+        <translation>比较方法(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Run several method sets on this recording and compare their paths and figures</source>
+        <translation>在此记录上运行多个方法组合并比较其路径和指标</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>比较</translation>
+    </message>
+    <message>
+        <source>Methods of the set %1</source>
+        <translation>组合 %1 的方法</translation>
+    </message>
+    <message>
+        <source>&amp;Analysis</source>
+        <translation>分析(&amp;A)</translation>
     </message>
 </context>
 <context>
@@ -1737,6 +1944,148 @@ statistic</source>
     <message>
         <source>Parameters from the command line</source>
         <translation>来自命令行的参数</translation>
+    </message>
+    <message>
+        <source>Open the method comparison and run these sets, e.g. &quot;zupt;zupt,zaru;feliz&quot;</source>
+        <translation>打开方法比较并运行这些组合，例如 &quot;zupt;zupt,zaru;feliz&quot;</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::ComparisonPanel</name>
+    <message>
+        <source>Method sets to compare; tick the ones to run</source>
+        <translation>要比较的方法组合；勾选要运行的组合</translation>
+    </message>
+    <message>
+        <source>Add a set, e.g. zupt,hdr,mag</source>
+        <translation>添加组合，例如 zupt,hdr,mag</translation>
+    </message>
+    <message>
+        <source>Methods separated by commas: zupt, zaru, hdr, iper, zuna, baro, mag, feliz, 9state, 15state. Enter adds the set.</source>
+        <translation>用逗号分隔的方法：zupt、zaru、hdr、iper、zuna、baro、mag、feliz、9state、15state。按回车添加。</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Run every ticked set on the current recording</source>
+        <translation>在当前记录上运行所有勾选的组合</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Click a row to make its methods the workspace&apos;s parameters (Edit &gt; Undo goes back)</source>
+        <translation>单击某行，将其方法设为工作区参数（编辑 &gt; 撤销可恢复）</translation>
+    </message>
+    <message>
+        <source>Use as main result</source>
+        <translation>用作主结果</translation>
+    </message>
+    <message>
+        <source>Make the selected set&apos;s methods the workspace&apos;s parameters</source>
+        <translation>将所选组合的方法设为工作区参数</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>时间 (s)</translation>
+    </message>
+    <message>
+        <source>height z (m)</source>
+        <translation>高度 z (m)</translation>
+    </message>
+    <message>
+        <source>Tick at least one method set.</source>
+        <translation>请至少勾选一个方法组合。</translation>
+    </message>
+    <message>
+        <source>best</source>
+        <translation>最佳</translation>
+    </message>
+    <message>
+        <source>Stale: the parameters changed since this comparison. Run again to update it.</source>
+        <translation>已过时：自此次比较后参数已更改。请重新运行以更新。</translation>
+    </message>
+    <message>
+        <source>Open a recording to compare methods on it.</source>
+        <translation>打开一个记录以在其上比较方法。</translation>
+    </message>
+    <message>
+        <source>Tick the sets and press Run.</source>
+        <translation>勾选组合并点击运行。</translation>
+    </message>
+    <message>
+        <source>Click a row to use its methods.</source>
+        <translation>单击某行以使用其方法。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Running %n set(s)...</source>
+        <translation>
+            <numerusform>正在运行 %n 个组合...</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>footpath::ComparisonTable</name>
+    <message>
+        <source>failed: %1</source>
+        <translation>失败：%1</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <source>no estimate</source>
+        <translation>无估计结果</translation>
+    </message>
+    <message>
+        <source>Method set</source>
+        <translation>方法组合</translation>
+    </message>
+    <message>
+        <source>End to start
+(m)</source>
+        <translation>终点到起点
+(m)</translation>
+    </message>
+    <message>
+        <source>End to start
+(%)</source>
+        <translation>终点到起点
+(%)</translation>
+    </message>
+    <message>
+        <source>Path length
+(m)</source>
+        <translation>路径长度
+(m)</translation>
+    </message>
+    <message>
+        <source>Height change
+(m)</source>
+        <translation>高度变化
+(m)</translation>
+    </message>
+    <message>
+        <source>ARMSE 2D
+(m)</source>
+        <translation>ARMSE 2D
+(m)</translation>
+    </message>
+    <message>
+        <source>Stance F1</source>
+        <translation>支撑相 F1</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>步数</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>警告</translation>
     </message>
 </context>
 </TS>

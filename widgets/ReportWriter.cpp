@@ -1,5 +1,7 @@
 #include "ReportWriter.h"
 
+#include "ComparisonTable.h"
+#include "MotionLanes.h"
 #include "SignalPlots.h"
 #include "StanceFlagsPlot.h"
 #include "SummaryPanel.h"
@@ -271,17 +273,48 @@ QList<QStringList> parameterRows(const Parameters& params)
     return rows;
 }
 
+/// Whether the step table has the motion class and barometric height columns (there was pressure).
+bool stepTableHasMotion(const Result& result)
+{
+    return hasBarometer(result) || hasMotionClasses(result);
+}
+
 QList<QStringList> stepRows(const Result& result)
 {
+    const bool motion = stepTableHasMotion(result);
     QList<QStringList> rows{{tr("Step"), tr("Stance from (s)"), tr("to (s)"), tr("Stride (m)"), tr("Stride (s)"),
                              tr("x (m)"), tr("y (m)"), tr("z (m)")}};
+    if (motion)
+        rows.first() << MotionLanes::tr("Motion") << MotionLanes::tr("Baro height (m)");
     for (std::size_t i = 0; i < result.steps.size(); ++i) {
         const Step& s = result.steps[i];
         rows << QStringList{QString::number(i), number(s.stanceStart_s, 2), number(s.stanceEnd_s, 2),
                             number(s.strideLength_m, 3), number(s.strideDuration_s, 3), number(s.position_m.x(), 3),
                             number(s.position_m.y(), 3), number(s.position_m.z(), 3)};
+        if (motion)
+            rows.last() << (s.motion == MotionClass::Unknown ? QStringLiteral("–") : motionClassLabel(s.motion))
+                        << number(s.baroHeight_m, 2);
     }
     return rows;
+}
+
+QList<double> stepColumnWidths(const Result& result)
+{
+    if (stepTableHasMotion(result))
+        return {0.07, 0.11, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.12, 0.1};
+    return {0.08, 0.14, 0.12, 0.13, 0.13, 0.13, 0.13, 0.14};
+}
+
+/// Where a measurement method skipped itself or did not apply; nothing when every method ran throughout.
+void writeMethodNotes(PageComposer& page, const Result& result)
+{
+    if (result.methodNotes.empty())
+        return;
+    page.heading(MotionLanes::tr("Method notes"));
+    page.paragraph(MotionLanes::tr("Spans where a measurement method skipped itself or did not apply, and why; the "
+                                   "other methods ran on."));
+    for (const MethodNote& note : result.methodNotes)
+        page.paragraph(methodNoteText(note));
 }
 
 QList<QStringList> headerRows(const ReportContent& c)
@@ -339,6 +372,34 @@ void writeWarnings(PageComposer& page, const Result& result)
                       "needs care there.").arg(result.warnings.size()));
     for (const PlausibilityWarning& w : result.warnings)
         page.paragraph(tr("%1, %2: %3").arg(warningSpanText(w), warningLabel(w.kind), QString::fromStdString(w.message)));
+}
+
+/// The comparison table as the window shows it, the best value per column in bold with a star.
+void writeComparison(PageComposer& page, const std::vector<ComparisonRow>& rows)
+{
+    if (rows.empty())
+        return;
+    page.heading(tr("Method comparison"));
+    page.paragraph(tr("Every method set run on this recording with the same detector and noise parameters; the best "
+                      "value of a column is in bold and marked %1.").arg(bestMarker().trimmed()));
+    const std::vector<ComparisonColumn> columns = comparisonColumns(rows);
+    QList<QStringList> cells{QStringList()};
+    QList<double> widths;
+    for (const ComparisonColumn& column : columns) {
+        cells.first() << QString(column.title).replace(QLatin1Char('\n'), QLatin1Char(' '));
+        // The set's name and the warnings (or the error) get the room; the figures share the rest.
+        widths << (&column == &columns.front() ? 0.22 : &column == &columns.back() ? 0.18 : 0.6 / static_cast<double>(columns.size() - 2));
+    }
+    for (const ComparisonRow& row : rows) {
+        QStringList line;
+        for (const ComparisonColumn& column : columns)
+            line << column.text(row);
+        cells << line;
+    }
+    for (std::size_t c = 0; c < columns.size(); ++c)
+        if (const int best = bestRowOfColumn(rows, columns[c]); best >= 0)
+            cells[best + 1][static_cast<int>(c)] = QLatin1Char('*') + cells[best + 1][static_cast<int>(c)] + bestMarker();
+    page.table(cells, widths, 7.5);
 }
 
 void drawHeightOverTime(QPainter& painter, const Result& result, const QRectF& target)
@@ -465,14 +526,18 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
     page.heading(tr("Summary"));
     page.table(summaryRows(computeGaitStatistics(*content.result, content.recording.get()), content.result->summary),
                {0.5, 0.5}, 9.0);
+    if (const QString motion = motionCountsSentence(*content.result); !motion.isEmpty())
+        page.paragraph(MotionLanes::tr("Motion (barometer): %1.").arg(motion));
     writeWarnings(page, *content.result);
+    writeMethodNotes(page, *content.result);
+    writeComparison(page, content.comparison);
     page.ensureRoom(page.mm(130));  // the heading with its first figure, not alone at the foot of a page
     page.heading(tr("Figures"));
     drawFigures(page, painter, content);
     page.heading(tr("Parameters (* differs from the default)"));
     page.table(parameterRows(content.parameters), {0.2, 0.12, 0.12, 0.1, 0.46}, 7.5);
     page.heading(tr("Steps"));
-    page.table(stepRows(*content.result), {0.08, 0.14, 0.12, 0.13, 0.13, 0.13, 0.13, 0.14}, 7.5);
+    page.table(stepRows(*content.result), stepColumnWidths(*content.result), 7.5);
     // What reading the file raised, apart from the plausibility of the result (its own section).
     page.heading(tr("Import notes (reading the file)"));
     for (const std::string& note : content.recording->reference.notes)

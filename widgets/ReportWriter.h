@@ -3,6 +3,7 @@
 #include "Recording.h"
 #include "Result.h"
 #include "io/Import.h"
+#include "nav/MethodSets.h"
 #include "nav/Parameters.h"
 
 #include <QPageSize>
@@ -21,6 +22,8 @@ struct ReportContent {
     Parameters parameters;
     QString parameterSource = QStringLiteral("defaults");  ///< "defaults" or the preset's path
     QString device;                                      ///< sensor/device when known
+    /// The window's method comparison, when it has one: a "Method comparison" section.
+    std::vector<ComparisonRow> comparison;
 };
 
 /// Writes the PDF report: header, summary and evaluation figures, the figures as vector graphics

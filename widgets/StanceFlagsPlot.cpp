@@ -1,5 +1,6 @@
 #include "StanceFlagsPlot.h"
 
+#include "MotionLanes.h"
 #include "TimeAxisNavigation.h"
 #include "TimeBands.h"
 #include "WarningOverlay.h"
@@ -109,9 +110,11 @@ std::size_t slot(Lane lane) { return static_cast<std::size_t>(lane); }
 std::size_t slot(Input input) { return static_cast<std::size_t>(input); }
 std::size_t slot(Threshold threshold) { return static_cast<std::size_t>(threshold); }
 constexpr std::size_t kWarningRow = 0;
-constexpr std::size_t kLanesRow = 1;
-constexpr std::size_t kStatisticRow = 2;
-std::size_t rowOf(Input input) { return 3 + slot(input); }  // below the lanes and the statistic
+constexpr std::size_t kNotesRow = 1;
+constexpr std::size_t kLanesRow = 2;
+constexpr std::size_t kMotionRow = 3;
+constexpr std::size_t kStatisticRow = 4;
+std::size_t rowOf(Input input) { return 5 + slot(input); }  // below the lanes and the statistic
 
 const std::vector<std::uint8_t>& laneFlags(const StanceFlags& flags, Lane lane)
 {
@@ -224,9 +227,12 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
     createInputRows();
     warnings_ = new WarningOverlay(plot_);
     for (std::size_t r = 0; r < kRowCount; ++r)
-        if (r != kWarningRow)
+        if (r != kWarningRow && r != kNotesRow && r != kMotionRow)  // the lanes keep their own colours
             warnings_->addRow(rows_[r].rect);
     warnings_->setLane(rows_[kWarningRow].rect);
+    motion_ = new MotionLanes(plot_);
+    motion_->setMotionLane(rows_[kMotionRow].rect);
+    motion_->setNotesLane(rows_[kNotesRow].rect);
     rescaleInputAxes();
     wireInteractions();
     setParameters(params_);  // names, lanes and rows of the default detector
@@ -439,6 +445,7 @@ void StanceFlagsPlot::plotLanes()
     statisticStance_->setSpans(result_ ? flaggedSpans(times, result_->flags.stance) : std::vector<QCPRange>());
     stanceLegendEntry_->setVisible(!statisticStance_->isEmpty());
     warnings_->setWarnings(result_ ? result_->warnings : std::vector<PlausibilityWarning>());
+    motion_->setResult(result_.get());
 }
 
 void StanceFlagsPlot::plotStatistic()
@@ -542,7 +549,9 @@ void StanceFlagsPlot::arrangeRows()
     QCPAxisRect* bottom = nullptr;
     for (std::size_t r = 0; r < kRowCount; ++r) {
         RowParts& row = rows_[r];
-        const bool shown = r == kWarningRow ? warnings_->hasWarnings() : (r == kLanesRow || r == kStatisticRow || inputsShown);
+        bool shown = r == kWarningRow ? warnings_->hasWarnings() : (r == kLanesRow || r == kStatisticRow || inputsShown);
+        if (r == kNotesRow || r == kMotionRow)
+            shown = r == kNotesRow ? motion_->hasNotes() : motion_->hasMotionLane();
         // Out of the layout a row keeps its old geometry: hide it, or it would paint over the others.
         row.rect->setVisible(shown);
         row.cursor->setVisible(shown && cursorPlaced_);
@@ -568,6 +577,8 @@ bool StanceFlagsPlot::isInputRowShown(Input input) const { return inputRect(inpu
 QCPAxisRect* StanceFlagsPlot::lanesRect() const { return rows_[kLanesRow].rect; }
 QCPAxisRect* StanceFlagsPlot::statisticRect() const { return rows_[kStatisticRow].rect; }
 QCPAxisRect* StanceFlagsPlot::warningLane() const { return rows_[kWarningRow].rect; }
+QCPAxisRect* StanceFlagsPlot::motionLane() const { return rows_[kMotionRow].rect; }
+QCPAxisRect* StanceFlagsPlot::methodNotesLane() const { return rows_[kNotesRow].rect; }
 QCPAxisRect* StanceFlagsPlot::inputRect(Input input) const { return rows_[rowOf(input)].rect; }
 QCPGraph* StanceFlagsPlot::laneGraph(Lane lane) const { return lanes_[slot(lane)]; }
 QCPGraph* StanceFlagsPlot::inputGraph(Input input) const { return inputs_[slot(input)]; }

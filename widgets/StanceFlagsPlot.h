@@ -23,6 +23,7 @@ class QToolBar;
 namespace footpath {
 
 class LinkedTimeRows;
+class MotionLanes;
 class TimeBands;
 class WarningOverlay;
 
@@ -97,6 +98,11 @@ public:
     QCPGraph* statisticThresholdGraph() const { return statisticThreshold_; }
     bool isStatisticStanceShaded(double time_s) const;
     const WarningOverlay& warningOverlay() const { return *warnings_; }
+    /// The steps' motion classes (seed 004) under the detector lanes; in the layout with a result.
+    QCPAxisRect* motionLane() const;
+    /// Spans where a method skipped itself; in the layout while the result has method notes.
+    QCPAxisRect* methodNotesLane() const;
+    const MotionLanes& motionLanes() const { return *motion_; }
     /// Draws the plots (without the toolbar) into target as vector commands.
     void renderTo(QPainter& painter, const QRect& target);
 
@@ -110,7 +116,8 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    static constexpr std::size_t kRowCount = 3 + kInputCount;  ///< warnings, lanes, statistic, one per input
+    /// warnings, method notes, lanes, motion, statistic, one per input
+    static constexpr std::size_t kRowCount = 5 + kInputCount;
     struct RowParts {
         QCPAxisRect* rect = nullptr;
         QCPItemStraightLine* cursor = nullptr;
@@ -144,6 +151,7 @@ private:
     QCPGraph* stanceLegendEntry_ = nullptr;  ///< draws nothing; gives the statistic row's stance shading an entry
     TimeBands* statisticStance_ = nullptr;
     WarningOverlay* warnings_ = nullptr;
+    MotionLanes* motion_ = nullptr;
     std::shared_ptr<const Result> result_;
     Parameters params_;
     std::vector<double> times_s_;  ///< the recording's, kept to recompute the std on a new window

@@ -1,5 +1,6 @@
 #include "SummaryPanel.h"
 
+#include "MotionLanes.h"
 #include "WarningOverlay.h"
 
 #include <QAbstractTableModel>
@@ -207,7 +208,8 @@ Histogram makeHistogram(const std::vector<double>& values, double minimumBinWidt
 /// numeric.
 class SummaryPanel::StepTableModel : public QAbstractTableModel {
 public:
-    enum Column { Number, StanceStart, StanceEnd, StanceDuration, StrideLength, StrideDuration, X, Y, Z, ColumnCount };
+    enum Column { Number, StanceStart, StanceEnd, StanceDuration, StrideLength, StrideDuration, X, Y, Z, Motion, BaroHeight,
+                  ColumnCount };
     static constexpr int kSortRole = Qt::UserRole;
 
     using QAbstractTableModel::QAbstractTableModel;
@@ -240,6 +242,8 @@ public:
             return QVariant(Qt::AlignRight | Qt::AlignVCenter);
         if (const QVariant marking = warningMarking(index, role); marking.isValid())
             return marking;
+        if (index.column() == Motion && role != kSortRole)
+            return motionData(index.row(), role);
         const double value = valueAt(index.row(), index.column());
         if (role == kSortRole)
             return value;
@@ -277,6 +281,17 @@ private:
         }
     }
 
+    /// The class's name with its colour as a swatch (as in the lane and the paths).
+    QVariant motionData(int row, int role) const
+    {
+        const MotionClass motion = result_->steps.at(static_cast<std::size_t>(row)).motion;
+        if (role == Qt::DisplayRole)
+            return motion == MotionClass::Unknown ? QStringLiteral("\u2013") : motionClassLabel(motion);
+        if (role == Qt::DecorationRole && motion != MotionClass::Unknown)
+            return motionClassColour(motion);
+        return {};
+    }
+
     double valueAt(int row, int column) const
     {
         const Step& step = result_->steps[static_cast<std::size_t>(row)];
@@ -290,6 +305,8 @@ private:
         case X: return step.position_m.x();
         case Y: return step.position_m.y();
         case Z: return step.position_m.z();
+        case Motion: return static_cast<int>(step.motion);
+        case BaroHeight: return step.baroHeight_m;
         default: return 0.0;
         }
     }
@@ -312,6 +329,8 @@ private:
         case X: return SummaryPanel::tr("x (m)");
         case Y: return SummaryPanel::tr("y (m)");
         case Z: return SummaryPanel::tr("z (m)");
+        case Motion: return MotionLanes::tr("Motion");
+        case BaroHeight: return MotionLanes::tr("Baro height (m)");
         default: return {};
         }
     }
@@ -327,6 +346,8 @@ private:
         case X:
         case Y:
         case Z: return SummaryPanel::tr("Mean position during the stance, relative to the start");
+        case Motion: return MotionLanes::tr("How the foot got to this step: level, stairs or elevator (from the barometer)");
+        case BaroHeight: return MotionLanes::tr("Barometric height at this stance against the first one");
         default: return {};
         }
     }
@@ -394,6 +415,7 @@ QWidget* SummaryPanel::createFigures()
     auto* layout = new QVBoxLayout(content);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(createWarnings());
+    layout->addWidget(createMotionAndNotes());
     layout->addWidget(walk);
     layout->addWidget(referenceGroup_);
     layout->addStretch(1);
@@ -548,6 +570,7 @@ void SummaryPanel::refresh()
     showWalkFigures();
     showReferenceFigures();
     showWarnings();
+    showMotionAndNotes();
     showCharts();
 }
 
@@ -571,6 +594,57 @@ void SummaryPanel::showWarnings()
         label->setToolTip(tr("Click the time span to move the time cursor there"));
         connect(label, &QLabel::linkActivated, this, [this, start = w.start_s] { emit timeCursorRequested(start); });
         warningList_->layout()->addWidget(label);
+    }
+}
+
+QWidget* SummaryPanel::createMotionAndNotes()
+{
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    motionSentence_ = new QLabel;
+    motionSentence_->setObjectName(QStringLiteral("motionSentence"));
+    motionSentence_->setWordWrap(true);
+    motionSentence_->setToolTip(MotionLanes::tr("Counted from the barometer's height between steps (seed 004); a floor "
+                                                "is 3 m"));
+    layout->addWidget(motionSentence_);
+    methodNotesGroup_ = new QGroupBox(MotionLanes::tr("Method notes"));
+    methodNotesGroup_->setObjectName(QStringLiteral("methodNotes"));
+    methodNotesGroup_->setToolTip(MotionLanes::tr("Where a measurement method skipped itself or did not apply, and why"));
+    methodNoteList_ = new QWidget;
+    auto* listLayout = new QVBoxLayout(methodNoteList_);
+    listLayout->setContentsMargins(0, 0, 0, 0);
+    (new QVBoxLayout(methodNotesGroup_))->addWidget(methodNoteList_);
+    layout->addWidget(methodNotesGroup_);
+    return box;
+}
+
+void SummaryPanel::showMotionAndNotes()
+{
+    const QString sentence = result_ ? motionCountsSentence(*result_) : QString();
+    motionSentence_->setText(sentence.isEmpty() ? QString()
+                                                : MotionLanes::tr("<b>Motion</b> (barometer): %1").arg(sentence.toHtmlEscaped()));
+    motionSentence_->setVisible(!sentence.isEmpty());
+    // Without pressure the two columns would only hold dashes.
+    const bool barometer = result_ && (hasBarometer(*result_) || hasMotionClasses(*result_));
+    table_->setColumnHidden(StepTableModel::Motion, !barometer);
+    table_->setColumnHidden(StepTableModel::BaroHeight, !barometer);
+
+    qDeleteAll(methodNoteList_->findChildren<QLabel*>(QString(), Qt::FindDirectChildrenOnly));
+    const std::vector<MethodNote> none;
+    const std::vector<MethodNote>& notes = result_ ? result_->methodNotes : none;
+    methodNotesGroup_->setVisible(!notes.empty());
+    for (std::size_t i = 0; i < notes.size(); ++i) {
+        const MethodNote& note = notes[i];
+        // As the warnings: the span is a link to the moment.
+        auto* label = new QLabel(QStringLiteral("<b>%1</b>, <a href=\"%2\">%3</a>: %4")
+                                     .arg(methodLabel(note.method).toHtmlEscaped(), QString::number(i),
+                                          methodNoteSpanText(note), QString::fromStdString(note.message).toHtmlEscaped()));
+        label->setObjectName(QStringLiteral("methodNote_%1").arg(i));
+        label->setWordWrap(true);
+        label->setTextInteractionFlags(Qt::LinksAccessibleByMouse | Qt::LinksAccessibleByKeyboard);
+        connect(label, &QLabel::linkActivated, this, [this, start = note.start_s] { emit timeCursorRequested(start); });
+        methodNoteList_->layout()->addWidget(label);
     }
 }
 

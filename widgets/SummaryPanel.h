@@ -117,6 +117,7 @@ private:
 
     QWidget* createFigures();
     QWidget* createWarnings();
+    QWidget* createMotionAndNotes();
     QGroupBox* createFigureGroup(const QString& title, const std::vector<std::pair<QString, QString>>& rows);
     QWidget* createTable();
     QWidget* createChartPair(QChartView* left, QChartView* right);
@@ -126,6 +127,7 @@ private:
     void showWalkFigures();
     void showReferenceFigures();
     void showWarnings();
+    void showMotionAndNotes();
     void setFigure(const QString& key, const QString& text);
     void showCharts();
     void showPerStepChart(QChartView* view, const QString& title, const QString& yTitle, std::size_t firstStep,
@@ -143,6 +145,9 @@ private:
     QLabel* warningsTitle_ = nullptr;
     QWidget* warningList_ = nullptr;  ///< one label per warning, remade with each result
     QLabel* noWarnings_ = nullptr;
+    QLabel* motionSentence_ = nullptr;     ///< seed 004's counts; hidden without motion classes
+    QGroupBox* methodNotesGroup_ = nullptr;
+    QWidget* methodNoteList_ = nullptr;    ///< one label per method note, remade with each result
     QLabel* referenceNotes_ = nullptr;
     StepTableModel* stepModel_ = nullptr;
     QTableView* table_ = nullptr;

@@ -1,5 +1,6 @@
 #include "TrajectoryView2D.h"
 
+#include "MotionLanes.h"
 #include "metrics/Evaluation.h"
 
 #include <Eigen/Geometry>
@@ -8,6 +9,7 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -135,6 +137,23 @@ public:
             levelColours_.push_back(QColor::fromRgb(gradient.color((level + 0.5) / kColourLevels, QCPRange(0.0, 1.0))));
     }
 
+    /// One category per point, drawn in colours[category] (the motion classes).
+    void setCategories(std::vector<std::uint8_t> categories, std::vector<QColor> colours)
+    {
+        levels_.clear();
+        levelColours_.clear();
+        if (categories.size() != points_m_.size())
+            return;
+        levels_ = std::move(categories);
+        levelColours_ = std::move(colours);
+    }
+
+    /// The colour the segment ending at this point is drawn in.
+    QColor colourAt(std::size_t index) const
+    {
+        return index < levels_.size() ? levelColours_[levels_[index]] : mPen.color();
+    }
+
     double selectTest(const QPointF&, bool, QVariant*) const override { return -1.0; }
 
     QCPRange getKeyRange(bool& foundRange, QCP::SignDomain) const override
@@ -171,7 +190,7 @@ protected:
         QPen pen = mPen;
         for (int piece = 0; piece < pieces; ++piece) {
             if (!levelColours_.empty())
-                pen.setColor(levelColours_[static_cast<std::size_t>(piece * (kColourLevels - 1) / 2)]);
+                pen.setColor(levelColours_[static_cast<std::size_t>(piece) * (levelColours_.size() - 1) / 2]);
             painter->setPen(pen);
             const double x0 = rect.left() + rect.width() * piece / pieces;
             const double x1 = rect.left() + rect.width() * (piece + 1) / pieces;
@@ -182,7 +201,7 @@ protected:
 private:
     std::vector<QVector<QLineF>> segmentsInPixels() const
     {
-        std::vector<QVector<QLineF>> linesByLevel(levels_.empty() ? 1 : kColourLevels);
+        std::vector<QVector<QLineF>> linesByLevel(levels_.empty() ? 1 : levelColours_.size());
         QPointF previous = coordsToPixels(points_m_.front().x(), points_m_.front().y());
         for (std::size_t k = 1; k < points_m_.size(); ++k) {
             const QPointF pixel = coordsToPixels(points_m_[k].x(), points_m_[k].y());
@@ -409,6 +428,55 @@ void TrajectoryView2D::showReferenceCurve()
     wrapLegendToWidth();
 }
 
+void TrajectoryView2D::setOverlays(const std::vector<PathOverlay>& overlays)
+{
+    if (!overlayLegend_)
+        createOverlayLegend();
+    overlayLegend_->clearItems();  // before the curves go: its items point at them
+    for (QCPCurve* curve : overlayCurves_)
+        plot_->removePlottable(curve);
+    overlayCurves_.clear();
+    overlayPositions_m_.clear();
+    for (const PathOverlay& overlay : overlays) {
+        auto* curve = new QCPCurve(plot_->xAxis, plot_->yAxis);
+        curve->setLayer(QStringLiteral("overlays"));
+        curve->setName(overlay.label);
+        curve->setPen(QPen(overlay.colour, 1.3));
+        QVector<double> t, x, y;
+        for (const Eigen::Vector3d& p : overlay.positions_m) {
+            t << static_cast<double>(t.size());
+            x << p.x();
+            y << p.y();
+        }
+        curve->setData(t, x, y, true);
+        // A key of their own: with the main key below the plot, a dozen more entries would take
+        // the height of the path itself in a narrow view.
+        curve->removeFromLegend();
+        overlayLegend_->addItem(new QCPPlottableLegendItem(overlayLegend_, curve));
+        overlayCurves_.push_back(curve);
+        overlayPositions_m_.insert(overlayPositions_m_.end(), overlay.positions_m.begin(), overlay.positions_m.end());
+    }
+    overlayLegend_->setVisible(!overlayCurves_.empty());
+    fitViewToData();
+    plot_->replot();
+}
+
+void TrajectoryView2D::createOverlayLegend()
+{
+    plot_->addLayer(QStringLiteral("overlays"), plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
+    overlayLegend_ = new QCPLegend;
+    plot_->axisRect()->insetLayout()->addElement(overlayLegend_, Qt::AlignTop | Qt::AlignLeft);
+    overlayLegend_->setLayer(QStringLiteral("legend"));
+    overlayLegend_->setBrush(QColor(255, 255, 255, 190));  // the paths under it still show
+    overlayLegend_->setBorderPen(QPen(QColor(200, 200, 200)));
+    QFont font = plot_->legend->font();
+    font.setPointSizeF(font.pointSizeF() * 0.85);
+    overlayLegend_->setFont(font);
+    overlayLegend_->setIconSize(20, 10);
+    overlayLegend_->setRowSpacing(0);
+    overlayLegend_->setVisible(false);
+}
+
 void TrajectoryView2D::setColouring(Colouring colouring)
 {
     colouring_ = colouring;
@@ -444,6 +512,8 @@ void TrajectoryView2D::showPathAndMarkers()
 
 void TrajectoryView2D::updateColouring()
 {
+    if (showMotionColouring())
+        return;
     std::vector<double> values;
     QCPRange range;
     if (result_ && colouring_ == Colouring::Time && result_->time_s.size() == result_->position_m.size()) {
@@ -463,6 +533,51 @@ void TrajectoryView2D::updateColouring()
     showColourScale(!values.empty() && range.size() > 0.0);
 }
 
+/// Colours each stride by the class of the step it leads to, with a legend entry per class shown.
+/// False (and no class entries) when not coloured by motion or no step is classified: the path is
+/// then drawn as for no colouring.
+bool TrajectoryView2D::showMotionColouring()
+{
+    for (QCPGraph* entry : motionLegend_)
+        plot_->removePlottable(entry);
+    motionLegend_.clear();
+    // Wider while coloured by class: a class is read from a colour, and 1.5 px of it hides behind the stance rings.
+    path_->setPen(QPen(kPathColour, colouring_ == Colouring::Motion ? 2.5 : 1.5));
+    if (colouring_ != Colouring::Motion || !result_ || !hasMotionClasses(*result_) ||
+        result_->time_s.size() != result_->position_m.size())
+        return false;
+    const std::vector<MotionClass> classes = motionOfSamples(*result_);
+    std::vector<std::uint8_t> categories;
+    categories.reserve(classes.size());
+    for (const MotionClass motion : classes)
+        categories.push_back(static_cast<std::uint8_t>(motion));
+    const std::array allClasses{MotionClass::Unknown,    MotionClass::Level,      MotionClass::StairsUp,
+                                MotionClass::StairsDown, MotionClass::ElevatorUp, MotionClass::ElevatorDown};
+    std::vector<QColor> colours;
+    for (const MotionClass motion : allClasses) {  // indexed by the enum's value
+        colours.push_back(motionClassColour(motion));
+        if (std::find(classes.begin(), classes.end(), motion) == classes.end())
+            continue;
+        QCPGraph* entry = plot_->addGraph();
+        entry->setName(motionClassLabel(motion));
+        entry->setPen(QPen(motionClassColour(motion), 3.0));
+        entry->setSelectable(QCP::stNone);
+        if (!plot_->legend->hasItemWithPlottable(entry))
+            entry->addToLegend();
+        motionLegend_.push_back(entry);
+    }
+    path_->setCategories(std::move(categories), std::move(colours));
+    stances_->setScatterStyle(stanceRing());
+    showColourScale(false);
+    wrapLegendToWidth();
+    return true;
+}
+
+QColor TrajectoryView2D::pathColourAt(std::size_t index) const
+{
+    return path_->colourAt(index);
+}
+
 void TrajectoryView2D::updateTimeCursorMarker()
 {
     cursor_->data()->clear();
@@ -476,8 +591,9 @@ void TrajectoryView2D::updateTimeCursorMarker()
 void TrajectoryView2D::fitViewToData()
 {
     const std::optional<QRectF> bounds =
-        unite(horizontalBounds(result_ ? result_->position_m : std::vector<Eigen::Vector3d>()),
-              horizontalBounds(referencePositions_m_));
+        unite(unite(horizontalBounds(result_ ? result_->position_m : std::vector<Eigen::Vector3d>()),
+                    horizontalBounds(referencePositions_m_)),
+              horizontalBounds(overlayPositions_m_));
     if (!bounds)
         return;  // nothing to show: keep whatever the axes show
     // The fixed part keeps a single point or a straight line from filling the view edge to edge.

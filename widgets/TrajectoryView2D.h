@@ -1,9 +1,11 @@
 #pragma once
 
+#include "PathOverlay.h"
 #include "Result.h"
 
 #include <Eigen/Core>
 
+#include <QColor>
 #include <QPoint>
 #include <QRectF>
 #include <QWidget>
@@ -16,6 +18,7 @@ class QCustomPlot;
 class QCPColorScale;
 class QCPCurve;
 class QCPGraph;
+class QCPLegend;
 class QCPLayer;
 class QCPMarginGroup;
 class QMouseEvent;
@@ -43,7 +46,7 @@ std::vector<Eigen::Vector3d> alignReferenceToEstimate(const std::vector<Eigen::V
 class TrajectoryView2D : public QWidget {
     Q_OBJECT
 public:
-    enum class Colouring { None, Time, Speed };
+    enum class Colouring { None, Time, Speed, Motion };  ///< Motion: each stride by its step's class (seed 004)
     Q_ENUM(Colouring)
 
     explicit TrajectoryView2D(QWidget* parent = nullptr);
@@ -66,6 +69,17 @@ public:
     double timeCursor() const { return timeCursor_s_; }
 
     QCustomPlot* plot() const { return plot_; }  ///< for the report and for tests
+    /// The legend entries of the motion classes the path shows while coloured by motion (for tests).
+    const std::vector<QCPGraph*>& motionLegendEntries() const { return motionLegend_; }
+    /// The colour the path is drawn in at sample index (the pen colour when not coloured).
+    QColor pathColourAt(std::size_t index) const;
+
+    /// Further paths (the comparison's method sets) under the main one, each with an entry in a
+    /// key of their own in the plot's top left corner; empty removes them. The view refits to hold
+    /// them all.
+    void setOverlays(const std::vector<PathOverlay>& overlays);
+    const std::vector<QCPCurve*>& overlayCurves() const { return overlayCurves_; }  ///< for tests
+    QCPLegend* overlayLegend() const { return overlayLegend_; }  ///< null until the first overlays
 
 signals:
     /// The user clicked near the path: time of the nearest path sample.
@@ -82,6 +96,8 @@ private:
     void showReferenceCurve();
     void showPathAndMarkers();
     void updateColouring();
+    bool showMotionColouring();
+    void createOverlayLegend();
     void updateTimeCursorMarker();
     void fitViewToData();
     void keepEqualAxisScales();
@@ -112,6 +128,10 @@ private:
     QRectF viewRegion_;
     QRectF lastFitted_;  ///< the axis ranges we set last, to tell the user's pan/zoom from our fit
     bool viewMovedByUser_ = false;  ///< since the last fit to the data; followResult keeps the view
+    std::vector<QCPGraph*> motionLegend_;  ///< legend-only graphs, one per class shown
+    std::vector<QCPCurve*> overlayCurves_;
+    QCPLegend* overlayLegend_ = nullptr;
+    std::vector<Eigen::Vector3d> overlayPositions_m_;  ///< all overlays' points, for fitting the view
 };
 
 }  // namespace footpath

@@ -1,5 +1,6 @@
 #include "TrajectoryView3D.h"
 
+#include "MotionLanes.h"
 #include "TrajectoryView2D.h"  // nearestSampleAtTime, shared so both views mark the same sample
 
 #include <Eigen/Geometry>
@@ -21,6 +22,7 @@
 #include <functional>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <utility>
 
 namespace footpath {
@@ -199,6 +201,11 @@ QWidget* TrajectoryView3D::createToolbar()
     for (QWidget* widget : std::initializer_list<QWidget*>{label, heightSpin_, perspectiveCheck_, reset})
         layout->addWidget(widget);
 
+    motionCheck_ = new QCheckBox(MotionLanes::tr("Colour by motion"), bar);
+    motionCheck_->setToolTip(MotionLanes::tr("Colour each stride by its step's motion class (stairs, elevator); "
+                                             "needs a barometer"));
+    layout->insertWidget(layout->indexOf(reset), motionCheck_);
+    connect(motionCheck_, &QCheckBox::toggled, this, &TrajectoryView3D::setMotionColouring);
     connect(heightSpin_, &QDoubleSpinBox::valueChanged, this, &TrajectoryView3D::setHeightExaggeration);
     connect(perspectiveCheck_, &QCheckBox::toggled, this, [this](bool on) {
         setProjection(on ? Projection::Perspective : Projection::Orthographic);
@@ -286,6 +293,7 @@ void TrajectoryView3D::rebuildScene()
 {
     const std::vector<std::uint8_t> noFlags;
     drawnPathIndices_ = decimatedIndices(positions().size(), result_ ? result_->flags.stance : noFlags);
+    sampleMotion_ = result_ ? motionOfSamples(*result_) : std::vector<MotionClass>();
     drawnReferenceIndices_ = decimatedIndices(reference_m_.size(), noFlags);
     sceneMin_m_ = sceneMax_m_ = Eigen::Vector3d::Zero();
     bool first = true;
@@ -297,6 +305,7 @@ void TrajectoryView3D::rebuildScene()
             first = false;
         }
     }
+    extendSceneByOverlays();
 }
 
 void TrajectoryView3D::resetView()
@@ -321,6 +330,9 @@ void TrajectoryView3D::resetView()
         seenPoints << view(positions()[index]);
     for (std::size_t index : drawnReferenceIndices_)
         seenPoints << view(reference_m_[index]);
+    for (std::size_t i = 0; i < overlays_.size(); ++i)
+        for (std::size_t index : drawnOverlayIndices_[i])
+            seenPoints << view(overlays_[i].positions_m[index]);
     const QRectF seen = seenPoints.boundingRect();
     fitHalfExtent_m_ = QPointF(std::max(0.5 * seen.width(), kMinHalfExtent_m), std::max(0.5 * seen.height(), kMinHalfExtent_m));
     pan_m_ = -seen.center();
@@ -402,10 +414,12 @@ void TrajectoryView3D::render(QPainter& painter, const QRectF& target) const
     const ViewTransform view = viewTransform(target);
     const Grid grid = groundGrid();
     drawGrid(painter, view, grid);
+    drawOverlays(painter, view);
     drawPaths(painter, view, grid);
     drawAxisArrows(painter, view, target);
     drawMarkers(painter, view, grid);
     drawLegend(painter, target);
+    drawOverlayLegend(painter, target);
     painter.restore();
 }
 
@@ -506,6 +520,10 @@ void TrajectoryView3D::drawPaths(QPainter& painter, const ViewTransform& view, c
     drawInPieces(painter, projectedPolyline(view, reference_m_, drawnReferenceIndices_, kTrueHeight));
     // A wide pen with flat caps, segment by segment, is the one wide stroke QPainter rasterises
     // quickly (a tenth of the time of a polyline); the joins it leaves out are sub-pixel.
+    if (showsMotionColours()) {
+        drawMotionColouredPath(painter, view);
+        return;
+    }
     painter.setPen(QPen(kPathColour, 1.6, Qt::SolidLine, Qt::FlatCap));
     const QPolygonF path = projectedPolyline(view, positions(), drawnPathIndices_, kTrueHeight);
     QVector<QLineF> segments;
@@ -558,6 +576,13 @@ void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target) const
     };
     std::vector<std::pair<QString, Icon>> entries{{tr("Foot path"), line(QPen(kPathColour, 2.0))},
                                                   {tr("Shadow on the floor"), line(QPen(kShadowColour, 2.0))}};
+    if (showsMotionColours()) {  // the path's one colour gives way to the classes'
+        entries.erase(entries.begin());
+        std::vector<std::pair<QString, Icon>> classes;
+        for (const MotionClass motion : motionClassesIn(sampleMotion_))
+            classes.emplace_back(motionClassLabel(motion), line(QPen(motionClassColour(motion), 2.0)));
+        entries.insert(entries.begin(), classes.begin(), classes.end());
+    }
     if (!reference_m_.empty())
         entries.emplace_back(tr("Reference"), line(QPen(kReferenceColour, 1.5, Qt::DashLine)));
     entries.emplace_back(tr("Stance"), drawStance);
@@ -589,6 +614,104 @@ void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target) const
         painter.drawText(QRectF(box.left() + 40.0, y - 0.5 * lineHeight, textWidth + 4.0, lineHeight),
                          Qt::AlignVCenter | Qt::AlignLeft, text);
         y += lineHeight;
+    }
+}
+
+void TrajectoryView3D::setOverlays(const std::vector<PathOverlay>& overlays)
+{
+    overlays_ = overlays;
+    rebuildScene();
+    if (cameraMovedByUser_)
+        update();
+    else
+        resetView();
+}
+
+void TrajectoryView3D::extendSceneByOverlays()
+{
+    const std::vector<std::uint8_t> noFlags;
+    drawnOverlayIndices_.clear();
+    bool first = positions().empty() && reference_m_.empty();
+    for (const PathOverlay& overlay : overlays_) {
+        drawnOverlayIndices_.push_back(decimatedIndices(overlay.positions_m.size(), noFlags));
+        for (const Eigen::Vector3d& p : overlay.positions_m) {
+            sceneMin_m_ = first ? p : sceneMin_m_.cwiseMin(p);
+            sceneMax_m_ = first ? p : sceneMax_m_.cwiseMax(p);
+            first = false;
+        }
+    }
+}
+
+void TrajectoryView3D::drawOverlays(QPainter& painter, const ViewTransform& view) const
+{
+    constexpr double kTrueHeight = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t i = 0; i < overlays_.size(); ++i) {
+        painter.setPen(QPen(overlays_[i].colour, 1.3));
+        drawInPieces(painter, projectedPolyline(view, overlays_[i].positions_m, drawnOverlayIndices_[i], kTrueHeight));
+    }
+}
+
+void TrajectoryView3D::drawOverlayLegend(QPainter& painter, const QRectF& target) const
+{
+    // Top left, apart from the main key at the bottom: both stay small enough to leave the path room.
+    if (overlays_.empty())
+        return;
+    painter.save();
+    QFont font = painter.font();
+    font.setPointSizeF(font.pointSizeF() * 0.85);
+    painter.setFont(font);
+    const QFontMetricsF metrics(painter.font());
+    const double lineHeight = metrics.height() + 2.0;
+    double textWidth = 0.0;
+    for (const PathOverlay& overlay : overlays_)
+        textWidth = std::max(textWidth, metrics.horizontalAdvance(overlay.label));
+    // On screen the toolbar sits over the view's top: the key goes under it (not in the report).
+    const double top = target.top() + 8.0 + (target == QRectF(rect()) ? toolbar_->geometry().bottom() : 0.0);
+    const QRectF box(target.left() + 8.0, top, textWidth + 46.0,
+                     static_cast<double>(overlays_.size()) * lineHeight + 8.0);
+    if (box.height() > 0.5 * target.height() || box.width() > 0.7 * target.width()) {
+        painter.restore();
+        return;
+    }
+    painter.setPen(QPen(QColor(200, 200, 200), 1.0));
+    painter.setBrush(QColor(255, 255, 255, 225));
+    painter.drawRect(box);
+    double y = box.top() + 4.0 + 0.5 * lineHeight;
+    for (const PathOverlay& overlay : overlays_) {
+        painter.setPen(QPen(overlay.colour, 2.0));
+        painter.drawLine(QPointF(box.left() + 8.0, y), QPointF(box.left() + 32.0, y));
+        painter.setPen(Qt::black);
+        painter.drawText(QRectF(box.left() + 40.0, y - 0.5 * lineHeight, textWidth + 4.0, lineHeight),
+                         Qt::AlignVCenter | Qt::AlignLeft, overlay.label);
+        y += lineHeight;
+    }
+    painter.restore();
+}
+
+void TrajectoryView3D::setMotionColouring(bool on)
+{
+    motionColouring_ = on;
+    const QSignalBlocker quiet(motionCheck_);
+    motionCheck_->setChecked(on);
+    update();
+}
+
+bool TrajectoryView3D::showsMotionColours() const
+{
+    return motionColouring_ && result_ && hasMotionClasses(*result_) && sampleMotion_.size() == positions().size();
+}
+
+void TrajectoryView3D::drawMotionColouredPath(QPainter& painter, const ViewTransform& view) const
+{
+    // Segments grouped by class, one drawLines call each; a segment takes the class of its end.
+    std::map<MotionClass, QVector<QLineF>> segments;
+    for (std::size_t k = 1; k < drawnPathIndices_.size(); ++k) {
+        const std::size_t from = drawnPathIndices_[k - 1], to = drawnPathIndices_[k];
+        segments[sampleMotion_[to]].append(QLineF(view(positions()[from]), view(positions()[to])));
+    }
+    for (const auto& [motion, lines] : segments) {
+        painter.setPen(QPen(motionClassColour(motion), 2.2, Qt::SolidLine, Qt::FlatCap));
+        painter.drawLines(lines);
     }
 }
 

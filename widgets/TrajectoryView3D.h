@@ -1,5 +1,6 @@
 #pragma once
 
+#include "PathOverlay.h"
 #include "Result.h"
 
 #include <Eigen/Core>
@@ -42,6 +43,16 @@ public:
 
     /// Positions already in the estimate's frame (see alignReferenceToEstimate); empty hides it.
     void setReference(const std::vector<Eigen::Vector3d>& positions_m);
+    /// Further paths (the comparison's method sets) drawn with the main one, with a key of their
+    /// own; empty removes them. The camera refits to hold them all.
+    void setOverlays(const std::vector<PathOverlay>& overlays);
+    const std::vector<PathOverlay>& overlays() const { return overlays_; }
+    /// Colours each stride by the motion class of the step it leads to (seed 004), with a key;
+    /// a result without classified steps keeps the one path colour.
+    void setMotionColouring(bool on);
+    bool motionColouring() const { return motionColouring_; }
+    /// Whether the path is drawn in the motion classes' colours now.
+    bool showsMotionColours() const;
     /// Marks the path sample nearest in time; NaN hides the marker.
     void setTimeCursor(double time_s);
     double timeCursor() const { return timeCursor_s_; }
@@ -93,12 +104,18 @@ private:
     void drawPaths(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
     void drawMarkers(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
     void drawLegend(QPainter& painter, const QRectF& target) const;
+    void drawMotionColouredPath(QPainter& painter, const ViewTransform& view) const;
+    void drawOverlays(QPainter& painter, const ViewTransform& view) const;
+    void drawOverlayLegend(QPainter& painter, const QRectF& target) const;
+    void extendSceneByOverlays();
     const std::vector<Eigen::Vector3d>& positions() const;
 
     std::shared_ptr<const Result> result_;
     std::vector<Eigen::Vector3d> reference_m_;
     std::vector<std::size_t> drawnPathIndices_;  ///< decimated, keeping every stance change
     std::vector<std::size_t> drawnReferenceIndices_;
+    std::vector<PathOverlay> overlays_;
+    std::vector<std::vector<std::size_t>> drawnOverlayIndices_;
     Eigen::Vector3d sceneMin_m_ = Eigen::Vector3d::Zero();
     Eigen::Vector3d sceneMax_m_ = Eigen::Vector3d::Zero();
     double timeCursor_s_;
@@ -118,6 +135,9 @@ private:
     QWidget* toolbar_;
     QDoubleSpinBox* heightSpin_;
     QCheckBox* perspectiveCheck_;
+    QCheckBox* motionCheck_ = nullptr;
+    bool motionColouring_ = false;
+    std::vector<MotionClass> sampleMotion_;  ///< per result sample (motionOfSamples)
 };
 
 }  // namespace footpath

@@ -2,6 +2,7 @@
 
 #include "AnalysisSession.h"
 #include "AppSettings.h"
+#include "ComparisonPanel.h"
 #include "ImportDialog.h"
 #include "LivePanel.h"
 #include "LiveViews.h"
@@ -33,6 +34,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTimer>
+#include <QToolButton>
 #include <QUndoStack>
 #include <qcustomplot.h>
 
@@ -73,6 +75,7 @@ MainWindow::MainWindow(AppSettings& settings, QWidget* parent)
     createViews();
     createDocks();
     createMenus();
+    createComparison();
     wireSession();
     wireViews();
     status_ = new QLabel(tr("Ready"), this);
@@ -211,6 +214,7 @@ void MainWindow::createViewMenu()
                          [this] { trajectoryTabs_->setCurrentWidget(live_->views()->trajectory2D()); });
     viewMenu_->addAction(tr("Live si&gnals"), QKeySequence(Qt::CTRL | Qt::Key_6), this,
                          [this] { signalTabs_->setCurrentWidget(live_->views()->signalPlots()); });
+    addPathColouringMenu();
     viewMenu_->addSeparator();
     for (QDockWidget* widget : findChildren<QDockWidget*>())
         viewMenu_->addAction(widget->toggleViewAction());
@@ -226,6 +230,42 @@ void MainWindow::showView(const QString& name)
         trajectoryTabs_->setCurrentWidget(trajectory2D_);
     else if (name == QLatin1String("trajectory3d"))
         trajectoryTabs_->setCurrentWidget(trajectory3D_);
+    else if (name == QLatin1String("motion")) {
+        signalTabs_->setCurrentWidget(flags_);
+        trajectoryTabs_->setCurrentWidget(trajectory2D_);
+        setPathColouring(name);
+    }
+}
+
+void MainWindow::addPathColouringMenu()
+{
+    QMenu* menu = viewMenu_->addMenu(tr("Path &colours"));
+    menu->setObjectName(QStringLiteral("pathColouringMenu"));
+    auto* group = new QActionGroup(menu);
+    const QList<QPair<QString, QString>> choices{{"none", tr("One colour")},
+                                                 {"time", tr("By time")},
+                                                 {"speed", tr("By foot speed")},
+                                                 {"motion", tr("By motion (stairs, elevator)")}};
+    for (const auto& [name, label] : choices) {
+        QAction* action = menu->addAction(label, this, [this, name = name] { setPathColouring(name); });
+        action->setObjectName(QStringLiteral("pathColouring_") + name);
+        action->setCheckable(true);
+        action->setChecked(name == QLatin1String("none"));
+        group->addAction(action);
+    }
+}
+
+void MainWindow::setPathColouring(const QString& name)
+{
+    using Colouring = TrajectoryView2D::Colouring;
+    const Colouring colouring = name == QLatin1String("time")    ? Colouring::Time
+                                : name == QLatin1String("speed")  ? Colouring::Speed
+                                : name == QLatin1String("motion") ? Colouring::Motion
+                                                                  : Colouring::None;
+    trajectory2D_->setColouring(colouring);
+    trajectory3D_->setMotionColouring(colouring == Colouring::Motion);
+    if (auto* action = findChild<QAction*>(QStringLiteral("pathColouring_") + name))
+        action->setChecked(true);
 }
 
 void MainWindow::createSettingsMenu()
@@ -300,6 +340,8 @@ ReportContent MainWindow::reportContent() const
     content.result = session_->result();
     content.parameters = session_->parameters();
     content.parameterSource = content.parameters == Parameters() ? tr("defaults") : tr("adjusted in the window");
+    if (comparisonDock_ && !comparisonDock_->isHidden())
+        content.comparison = comparison_->rows();
     return content;
 }
 
@@ -321,6 +363,80 @@ void MainWindow::exportReport()
         QMessageBox::warning(this, tr("Export report"), problem);
     else
         showStatus(tr("Report written to %1").arg(path));
+}
+
+QString MainWindow::writeReport(const QString& path, QPageSize::PageSizeId pageSize) const
+{
+    return writePdfReport(reportContent(), path, pageSize);
+}
+
+void MainWindow::createComparison()
+{
+    comparison_ = new ComparisonPanel(this);
+    comparison_->setObjectName(QStringLiteral("comparisonPanel"));
+    comparison_->setBaseParameters(session_->parameters());
+    comparisonDock_ = dock(this, tr("Method comparison"), QStringLiteral("comparisonDock"), comparison_,
+                           Qt::BottomDockWidgetArea);
+    if (auto* summaryDock = findChild<QDockWidget*>(QStringLiteral("summaryDock")))
+        tabifyDockWidget(summaryDock, comparisonDock_);
+    comparisonDock_->hide();
+    auto* compare = new QAction(tr("&Compare methods"), this);
+    compare->setObjectName(QStringLiteral("compareMethods"));
+    compare->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
+    compare->setToolTip(tr("Run several method sets on this recording and compare their paths and figures"));
+    connect(compare, &QAction::triggered, this, [this] { showComparison(); });
+    addComparisonMenu(compare);
+    // In reach next to the path it changes, without a toolbar taking height from the views.
+    auto* button = new QToolButton(trajectoryTabs_);
+    button->setObjectName(QStringLiteral("compareButton"));
+    button->setText(tr("Compare"));  // short: the tab bar beside it needs the width
+    button->setToolTip(compare->toolTip());
+    button->setAutoRaise(true);
+    connect(button, &QToolButton::clicked, compare, &QAction::trigger);
+    trajectoryTabs_->setCornerWidget(button, Qt::TopRightCorner);
+
+    connect(session_, &AnalysisSession::recordingChanged, this,
+            [this] { comparison_->setRecording(session_->recording()); });
+    connect(session_, &AnalysisSession::parametersChanged, this,
+            [this] { comparison_->setBaseParameters(session_->parameters()); });
+    connect(comparison_, &ComparisonPanel::rowsChanged, this,
+            [this] { showComparisonOverlays(!comparisonDock_->isHidden()); });
+    connect(comparison_, &ComparisonPanel::parametersChosen, this, [this](const Parameters& params, const QString& label) {
+        session_->setParameters(params, tr("Methods of the set %1").arg(label));
+    });
+    connect(comparisonDock_->toggleViewAction(), &QAction::toggled, this, &MainWindow::showComparisonOverlays);
+}
+
+void MainWindow::addComparisonMenu(QAction* compare)
+{
+    auto* analysis = new QMenu(tr("&Analysis"), this);
+    analysis->addAction(compare);
+    // After View, before Settings and Help.
+    const QList<QAction*> menus = menuBar()->actions();
+    const qsizetype view = menus.indexOf(viewMenu_->menuAction());
+    menuBar()->insertMenu(view >= 0 && view + 1 < menus.size() ? menus[view + 1] : nullptr, analysis);
+    viewMenu_->addAction(comparisonDock_->toggleViewAction());
+}
+
+QString MainWindow::showComparison(const QString& sets)
+{
+    comparisonDock_->show();
+    comparisonDock_->raise();
+    if (sets.isEmpty())
+        return {};
+    if (const QString error = comparison_->setCheckedSets(sets); !error.isEmpty()) {
+        showStatus(error, true);
+        return error;
+    }
+    comparison_->run();
+    return {};
+}
+
+void MainWindow::showComparisonOverlays(bool shown)
+{
+    const std::vector<PathOverlay> overlays = shown ? comparison_->overlays() : std::vector<PathOverlay>();
+    trajectory2D_->setOverlays(overlays);
+    trajectory3D_->setOverlays(overlays);
 }
 
 void MainWindow::exportCsv()

@@ -8,6 +8,7 @@
 #include <memory>
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QTabWidget;
@@ -16,6 +17,7 @@ namespace footpath {
 
 class AnalysisSession;
 class AppSettings;
+class ComparisonPanel;
 class LivePanel;
 class ParameterPanel;
 class RecordedInputPanel;
@@ -38,8 +40,17 @@ public:
     void connectLive(const QString& port);
     void openRecording(const QString& path, const ImportOptions& options = {});
     AnalysisSession* session() const { return session_; }
-    /// Brings a view to the front: "signals", "detector", "trajectory2d" or "trajectory3d".
+    /// Brings a view to the front: "signals", "detector", "trajectory2d" or "trajectory3d";
+    /// "motion" shows the detector (with the motion lane) and colours the paths by motion class.
     void showView(const QString& name);
+    /// Colours the 2D and 3D paths: "none", "time", "speed" or "motion" (the 3D view knows motion only).
+    void setPathColouring(const QString& name);
+    /// Opens the method comparison; given sets ("zupt;zupt,zaru;feliz") are ticked and run (once a
+    /// recording is there). Returns the sets' parse error, empty on success.
+    QString showComparison(const QString& sets = QString());
+    ComparisonPanel* comparisonPanel() const { return comparison_; }
+    /// Writes the PDF report (with the comparison while its panel is open); an error message or empty.
+    QString writeReport(const QString& path, QPageSize::PageSizeId pageSize = QPageSize::A4) const;
 
 signals:
     /// A result is on screen (after each estimate); screenshots and tests wait for it.
@@ -57,6 +68,7 @@ private:
     void createFileMenu();
     void createEditMenu();
     void createViewMenu();
+    void addPathColouringMenu();
     void createSettingsMenu();
     void wireSession();
     void wireViews();
@@ -75,6 +87,10 @@ private:
     void showEstimating(bool running);
     void chooseLanguage(const QString& language);
     void restoreLayout();
+    void createComparison();
+    void addComparisonMenu(QAction* compare);
+    /// The comparison's paths in the trajectory views while its panel is open, none otherwise.
+    void showComparisonOverlays(bool shown);
 
     AppSettings& settings_;
     AnalysisSession* session_;
@@ -91,6 +107,8 @@ private:
     LivePanel* live_ = nullptr;
     QLabel* status_ = nullptr;
     QMenu* viewMenu_ = nullptr;
+    ComparisonPanel* comparison_ = nullptr;
+    QDockWidget* comparisonDock_ = nullptr;
 };
 
 }  // namespace footpath

@@ -1,6 +1,7 @@
 // footpath: the desktop application. With no argument it opens the bundled sample walk.
 #include "AnalysisSession.h"
 #include "AppSettings.h"
+#include "ComparisonPanel.h"
 #include "MainWindow.h"
 #include "Result.h"
 #include "io/ParameterIo.h"
@@ -82,6 +83,10 @@ int main(int argc, char** argv)
     parser.addOption(preset);
     parser.addOption(assignment);
     parser.addOption(view);
+    const QCommandLineOption compare(
+        "compare", QApplication::translate("main", "Open the method comparison and run these sets, e.g. \"zupt;zupt,zaru;feliz\""),
+        "sets");
+    parser.addOption(compare);
     parser.addOption(language);
     parser.addOption(connectPort);
     parser.process(app);
@@ -98,6 +103,11 @@ int main(int argc, char** argv)
         window.session()->setParameters(params, QApplication::translate("main", "Parameters from the command line"));
     if (parser.isSet(view))
         window.showView(parser.value(view));
+    if (parser.isSet(compare))
+        if (const QString error = window.showComparison(parser.value(compare)); !error.isEmpty()) {
+            std::fprintf(stderr, "footpath: %s\n", qPrintable(error));
+            return 2;
+        }
     window.show();
     const QStringList files = parser.positionalArguments();
     window.openRecording(files.isEmpty() ? QString::fromUtf8(kSampleWalk) : files.first());
@@ -109,6 +119,15 @@ int main(int argc, char** argv)
             window.grab().save(path);
             QApplication::quit();
         });
+    } else if (parser.isSet(screenshot) && parser.isSet(compare)) {
+        // The comparison takes longer than the main estimate: grab once its table is filled.
+        QObject::connect(window.comparisonPanel(), &footpath::ComparisonPanel::finished, &window,
+                         [&window, path = parser.value(screenshot)] {
+                             QTimer::singleShot(800, &window, [&window, path] {
+                                 window.grab().save(path);
+                                 QApplication::quit();
+                             });
+                         });
     } else if (parser.isSet(screenshot)) {
         // For documentation and visual checks under xvfb-run: grab once the first result is drawn.
         QObject::connect(&window, &footpath::MainWindow::resultShown, &window, [&window, path = parser.value(screenshot)] {

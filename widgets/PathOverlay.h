@@ -1,0 +1,20 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include <QColor>
+#include <QString>
+
+#include <vector>
+
+namespace footpath {
+
+/// A further path drawn over the main one in the trajectory views (the comparison mode's method
+/// sets), with its own colour and legend entry.
+struct PathOverlay {
+    QString label;
+    QColor colour;
+    std::vector<Eigen::Vector3d> positions_m;  ///< navigation frame, as Result::position_m
+};
+
+}  // namespace footpath
