@@ -269,6 +269,28 @@ private slots:
         movingAtOnce.finalStill_s = 0.0;  // ends in a swing: the open phase and truncated windows
         QTest::newRow("100 Hz, no still start or end")
             << simulateWalk(straightLinePath(8.0), movingAtOnce).recording << Parameters();
+        // Every measurement source is causal: live gives the offline numbers with all of them on.
+        Parameters everySource;
+        everySource.filter_states = static_cast<int>(FilterStates::Fifteen);
+        everySource.use_zaru = everySource.use_hdr = everySource.use_iper = everySource.use_zuna = true;
+        everySource.use_baro = everySource.use_mag_heading = true;
+        WalkSimulatorConfig withMagnetometerAndPressure = noisySensor(100.0, 5);
+        withMagnetometerAndPressure.withMagnetometer = withMagnetometerAndPressure.withPressure = true;
+        QTest::newRow("100 Hz rectangle, every measurement source")
+            << simulateWalk(closedRectanglePath(12.0, 8.0), withMagnetometerAndPressure).recording << everySource;
+    }
+
+    void felizLiveRunsTheFilterAndSaysSo()
+    {
+        Parameters feliz;
+        feliz.estimator = static_cast<int>(EstimatorKind::Feliz);
+        const Recording recording = simulatedRectangle(100.0);
+        const Result live = runStreaming(recording.samples, feliz);
+        QVERIFY(live.steps.size() > 3);
+        const auto note = std::find_if(live.methodNotes.begin(), live.methodNotes.end(),
+                                       [](const MethodNote& n) { return n.method == "feliz"; });
+        QVERIFY(note != live.methodNotes.end());
+        QVERIFY(note->message.find("Kalman filter") != std::string::npos);
     }
 
     void equalsRunPipelineOnSimulatedWalks()

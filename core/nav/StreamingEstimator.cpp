@@ -31,6 +31,12 @@ struct StreamingEstimator::Impl {
         : params(p)
         , detector(makeCausalStanceDetector(p))
     {
+        // Feliz's de-drift corrects each swing once the next stance has begun: a live estimate
+        // cannot wait for it, so the filter runs instead, and the result says so.
+        if (params.estimatorKind() == EstimatorKind::Feliz)
+            result.methodNotes.push_back({"feliz", 0.0, 0.0,
+                                          "live estimate by the Kalman filter: Feliz's de-drift needs the "
+                                          "stance that ends each swing, so it runs on recordings only"});
     }
 
     bool accepts(const ImuSample& sample) const;
