@@ -77,9 +77,14 @@ std::string whatBlockedStance(const Result& result, std::size_t first, std::size
         if (flags.logStatistic[k] - flags.logThreshold[k] < flags.logStatistic[quietest] - flags.logThreshold[quietest])
             quietest = k;
     const double at = result.time_s[quietest];
-    if (params.detectorKind() != DetectorKind::PaperC1C2C3)
+    if (params.detectorKind() != DetectorKind::PaperC1C2C3) {
+        if (flags.logStatistic[quietest] < flags.logThreshold[quietest])  // dropped by the duration rule
+            return format("at its quietest (t = %.2f s) the detector statistic (10^%.1f) fell below its threshold "
+                          "(10^%.1f) for less than the minimum stance of %.3f s",
+                          at, flags.logStatistic[quietest], flags.logThreshold[quietest], params.zv_min_stance_s);
         return format("at its quietest (t = %.2f s) the detector statistic was 10^%.1f, above its threshold 10^%.1f",
                       at, flags.logStatistic[quietest], flags.logThreshold[quietest]);
+    }
     std::string failed;
     const auto note = [&](bool ok, const char* what) {
         if (!ok)
