@@ -414,6 +414,23 @@ void TestCli::eval_setOverridesThePresetAndBothAreApplied()
     json = readJsonObject(setOnly.out.toUtf8(), &error);
     QVERIFY2(error.isEmpty(), qPrintable(error));
     QCOMPARE(json.value(QStringLiteral("methods")).toString(), QStringLiteral("ZARU"));
+
+    // The papers' methods are named, and Feliz's estimator replaces the filter's list.
+    const std::pair<QStringList, QString> namedSets[] = {
+        {{QStringLiteral("use_hdr=1"), QStringLiteral("use_baro=1")}, QStringLiteral("ZUPT+HDR+barometer")},
+        {{QStringLiteral("filter_states=15"), QStringLiteral("use_iper=1")}, QStringLiteral("ZUPT+IPER+15-state")},
+        {{QStringLiteral("estimator=feliz")}, QStringLiteral("Feliz")},
+    };
+    for (const auto& [sets, expected] : namedSets) {
+        QStringList args{QStringLiteral("eval"), walkCsv_, QStringLiteral("--json")};
+        for (const QString& set : sets)
+            args << QStringLiteral("--set") << set;
+        const Run named = runCli(args);
+        VERIFY_EXIT(named, 0);
+        json = readJsonObject(named.out.toUtf8(), &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        QCOMPARE(json.value(QStringLiteral("methods")).toString(), expected);
+    }
 }
 
 void TestCli::eval_lengthJsonReportsDistanceError()

@@ -135,7 +135,7 @@ private slots:
         for (int r = 0; r < 3; ++r) {
             const ComparisonRow& row = direct[static_cast<std::size_t>(r)];
             QVERIFY2(row.output.error.empty(), row.output.error.c_str());
-            QCOMPARE(table.item(r, 0)->text(), methodSetLabel(row.set.name));
+            QCOMPARE(table.item(r, 0)->text(), methodSetText(row.set.name));
             QCOMPARE(figureText(table, r, endToStart), QString::number(row.endToStart_m, 'f', 2));
             QCOMPARE(figureText(table, r, endToStartPct), QString::number(row.endToStartPct, 'f', 2));
             QCOMPARE(figureText(table, r, pathLength), QString::number(row.pathLength_m, 'f', 2));
@@ -153,7 +153,7 @@ private slots:
         for (std::size_t i = 0; i < 3; ++i) {
             QCPCurve* curve = view2D->overlayCurves()[i];
             QVERIFY(view2D->overlayLegend()->hasItemWithPlottable(curve));
-            QCOMPARE(curve->name(), methodSetLabel(direct[i].set.name));
+            QCOMPARE(curve->name(), methodSetText(direct[i].set.name));
             QCOMPARE(std::size_t(curve->dataCount()), direct[i].output.result.position_m.size());
         }
         QCOMPARE(view3D->overlays().size(), std::size_t(3));

@@ -148,7 +148,7 @@ void ComparisonPanel::addSetItem(const MethodSet& set, bool checked)
             return;
         }
     }
-    auto* item = new QListWidgetItem(methodSetLabel(set.name), setList_);
+    auto* item = new QListWidgetItem(methodSetText(set.name), setList_);
     item->setData(kSpecRole, spec);
     item->setToolTip(spec);
     item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable | Qt::ItemIsSelectable);
@@ -337,7 +337,7 @@ void ComparisonPanel::plotHeights()
             z << result.position_m[k].z();
         }
         QCPGraph* graph = heightPlot_->addGraph();
-        graph->setName(methodSetLabel(rows_[i].set.name));
+        graph->setName(methodSetText(rows_[i].set.name));
         graph->setPen(QPen(comparisonColour(i), 1.2));
         graph->setData(t, z, true);
     }
@@ -351,7 +351,7 @@ std::vector<PathOverlay> ComparisonPanel::overlays() const
     std::vector<PathOverlay> paths;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         if (comparisonRowProblem(rows_[i]).isEmpty())
-            paths.push_back({methodSetLabel(rows_[i].set.name), comparisonColour(i), rows_[i].output.result.position_m});
+            paths.push_back({methodSetText(rows_[i].set.name), comparisonColour(i), rows_[i].output.result.position_m});
     }
     return paths;
 }
@@ -389,7 +389,7 @@ void ComparisonPanel::chooseRow(int row)
     if (row < 0 || row >= static_cast<int>(rows_.size()))
         return;
     const ComparisonRow& chosen = rows_[static_cast<std::size_t>(row)];
-    emit parametersChosen(chosen.set.params, methodSetLabel(chosen.set.name));
+    emit parametersChosen(chosen.set.params, methodSetText(chosen.set.name));
 }
 
 }  // namespace footpath

@@ -4,8 +4,6 @@
 #include <QStringList>
 
 #include <cmath>
-#include <map>
-#include <sstream>
 
 namespace footpath {
 
@@ -39,19 +37,9 @@ std::function<QString(const ComparisonRow&)> figure(double ComparisonRow::*membe
 
 }  // namespace
 
-QString methodSetLabel(const std::string& setName)
+QString methodSetText(const std::string& setName)
 {
-    static const std::map<std::string, QString> names{
-        {"zupt", "ZUPT"}, {"zaru", "ZARU"}, {"hdr", "HDR"}, {"iper", "IPER"}, {"zuna", "ZUNA"},
-        {"baro", "barometer"}, {"mag", "magnetometer"}, {"feliz", "Feliz"}, {"9state", "9-state"},
-        {"15state", "15-state"}, {"9", "9-state"}, {"15", "15-state"}};
-    QStringList parts;
-    std::istringstream in(setName);
-    for (std::string token; std::getline(in, token, ',');) {
-        const auto known = names.find(token);
-        parts << (known != names.end() ? known->second : QString::fromStdString(token));
-    }
-    return parts.join(QLatin1Char('+'));
+    return QString::fromStdString(footpath::methodSetLabel(setName));
 }
 
 QColor comparisonColour(std::size_t index)
@@ -78,7 +66,7 @@ QString comparisonRowProblem(const ComparisonRow& row)
 std::vector<ComparisonColumn> comparisonColumns(const std::vector<ComparisonRow>& rows)
 {
     std::vector<ComparisonColumn> columns;
-    columns.push_back({tr("Method set"), {}, [](const ComparisonRow& row) { return methodSetLabel(row.set.name); }});
+    columns.push_back({tr("Method set"), {}, [](const ComparisonRow& row) { return methodSetText(row.set.name); }});
     columns.push_back({tr("End to start\n(m)"), "end_to_start_m", figure(&ComparisonRow::endToStart_m, 2)});
     columns.push_back({tr("End to start\n(%)"), "end_to_start_pct", figure(&ComparisonRow::endToStartPct, 2)});
     columns.push_back({tr("Path length\n(m)"), {}, figure(&ComparisonRow::pathLength_m, 2)});

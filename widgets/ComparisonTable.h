@@ -10,8 +10,8 @@
 
 namespace footpath {
 
-/// "ZUPT+ZARU+HDR" for the set "zupt,zaru,hdr": how the panel, the legends and the report name a set.
-QString methodSetLabel(const std::string& setName);
+/// methodSetLabel (core) as a QString: how the panel, the legends and the report name a set.
+QString methodSetText(const std::string& setName);
 
 /// A colour per set, distinct from each other and from the main path's blue.
 QColor comparisonColour(std::size_t index);

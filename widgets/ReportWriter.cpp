@@ -8,6 +8,7 @@
 #include "TrajectoryView2D.h"
 #include "TrajectoryView3D.h"
 #include "WarningOverlay.h"
+#include "nav/MethodSets.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -496,12 +497,8 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
 
 QString methodSetName(const Parameters& params)
 {
-    QStringList methods;
-    if (params.use_zupt)
-        methods << QStringLiteral("ZUPT");
-    if (params.use_zaru)
-        methods << QStringLiteral("ZARU");
-    return methods.isEmpty() ? tr("none") : methods.join(QLatin1Char('+'));
+    const std::string spec = methodSetSpec(params);
+    return spec.empty() ? tr("none") : methodSetText(spec);
 }
 
 QString writePdfReport(const ReportContent& content, const QString& path, QPageSize::PageSizeId pageSize)

@@ -3,6 +3,7 @@
 #include "io/ImportPresets.h"
 #include "io/ParameterIo.h"
 #include "io/ResultWriters.h"
+#include "nav/MethodSets.h"
 #include "nav/Pipeline.h"
 
 #include <cstdio>
@@ -143,10 +144,8 @@ void printPlausibilityWarnings(const std::string& path, const std::vector<Plausi
 
 std::string methodSet(const Parameters& params)
 {
-    std::string text = params.use_zupt ? "ZUPT" : "";
-    if (params.use_zaru)
-        text += text.empty() ? "ZARU" : "+ZARU";
-    return text.empty() ? "none" : text;
+    const std::string spec = methodSetSpec(params);
+    return spec.empty() ? "none" : methodSetLabel(spec);
 }
 
 }  // namespace footpath::cli

@@ -3,6 +3,7 @@
 #include "metrics/Evaluation.h"
 
 #include <algorithm>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -144,6 +145,43 @@ std::optional<MethodSet> parseMethodSet(const std::string& spec, const Parameter
     for (std::size_t i = 0; i < names.size(); ++i)
         set.name += (i ? "," : "") + names[i];
     return set;
+}
+
+std::string methodSetSpec(const Parameters& params)
+{
+    std::vector<std::string> tokens;
+    if (params.estimatorKind() == EstimatorKind::Feliz) {
+        tokens.push_back("feliz");
+    } else {
+        const std::pair<bool, const char*> switches[] = {
+            {params.use_zupt, "zupt"}, {params.use_zaru, "zaru"}, {params.use_hdr, "hdr"},
+            {params.use_iper, "iper"}, {params.use_zuna, "zuna"}, {params.use_baro, "baro"},
+            {params.use_mag_heading, "mag"}};
+        for (const auto& [on, token] : switches)
+            if (on)
+                tokens.push_back(token);
+        if (!tokens.empty() && params.filter_states != Parameters().filter_states)
+            tokens.push_back(params.filterStates() == FilterStates::Fifteen ? "15state" : "9state");
+    }
+    std::string spec;
+    for (std::size_t i = 0; i < tokens.size(); ++i)
+        spec += (i ? "," : "") + tokens[i];
+    return spec;
+}
+
+std::string methodSetLabel(const std::string& spec)
+{
+    static const std::map<std::string, std::string> labels{
+        {"zupt", "ZUPT"}, {"zaru", "ZARU"}, {"hdr", "HDR"}, {"iper", "IPER"}, {"zuna", "ZUNA"},
+        {"baro", "barometer"}, {"mag", "magnetometer"}, {"feliz", "Feliz"}, {"9state", "9-state"},
+        {"15state", "15-state"}, {"9", "9-state"}, {"15", "15-state"}};
+    std::string label;
+    std::istringstream in(spec);
+    for (std::string token; std::getline(in, token, ',');) {
+        const auto known = labels.find(token);
+        label += (label.empty() ? "" : "+") + (known != labels.end() ? known->second : token);
+    }
+    return label;
 }
 
 std::vector<MethodSet> parseMethodSets(const std::string& specs, const Parameters& base, std::string& error)

@@ -26,6 +26,13 @@ const std::vector<std::string>& methodTokens();
 /// either, the filter size is base's. "feliz" replaces the filter by Feliz 2009's de-drift. An
 /// unknown token gives an error naming it and the nearest known token, and an empty optional.
 std::optional<MethodSet> parseMethodSet(const std::string& spec, const Parameters& base, std::string& error);
+/// The set params runs, written as parseMethodSet reads it ("zupt,hdr,baro"; "feliz" for Feliz's
+/// estimator; the filter size is named only when it is not the default's): what a report's
+/// "method set" line and the CLI's "methods" line show. Empty when no method is on.
+std::string methodSetSpec(const Parameters& params);
+/// How people write a set: "ZUPT+ZARU+HDR" for "zupt,zaru,hdr" (barometer, magnetometer, Feliz,
+/// 9-state and 15-state spelled out).
+std::string methodSetLabel(const std::string& spec);
 /// Several sets separated by ';' ("zupt;zupt,zaru;feliz"); empty with error on the first bad one.
 std::vector<MethodSet> parseMethodSets(const std::string& specs, const Parameters& base, std::string& error);
 
