@@ -3,6 +3,7 @@
 // and folders at once), presets and --set, and the exit code 2 with a precise message for every
 // kind of bad input. Inputs and outputs live in a QTemporaryDir.
 
+#include "CliRunner.h"
 #include "TestData.h"
 #include "io/ParameterIo.h"
 #include "nav/Parameters.h"
@@ -24,14 +25,9 @@
 #include <cstdio>
 #include <vector>
 
-#ifndef FOOTPATH_CLI
-#error "FOOTPATH_CLI must name the footpath-cli binary"
-#endif
-
 namespace {
 
-constexpr int kTimeoutMs = 120000;
-constexpr int kExitBadInput = 2;
+using namespace clitest;
 
 // The foundation issue fixes these first columns; the bias estimates follow them.
 const QString kTrajectoryHeader =
@@ -42,42 +38,6 @@ const QString kStepsHeader =
     QStringLiteral("step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,motion,"
                    "baro_height_m");
 const QByteArray kImuHeader = "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
-
-struct Run {
-    bool finished = false;
-    QProcess::ExitStatus status = QProcess::CrashExit;
-    int exitCode = -1;
-    QString out;
-    QString err;
-
-    QByteArray describe() const
-    {
-        return QStringLiteral("exit %1 (%2)\nstdout: %3\nstderr: %4")
-            .arg(exitCode)
-            .arg(QLatin1String(finished ? (status == QProcess::NormalExit ? "normal" : "crashed") : "timed out"))
-            .arg(out, err)
-            .toLocal8Bit();
-    }
-};
-
-Run runCli(const QStringList& args, const QString& workingDirectory = {})
-{
-    QProcess process;
-    process.setProgram(QString::fromUtf8(FOOTPATH_CLI));
-    process.setArguments(args);
-    if (!workingDirectory.isEmpty())
-        process.setWorkingDirectory(workingDirectory);
-    process.start();
-    Run run;
-    run.finished = process.waitForStarted(kTimeoutMs) && process.waitForFinished(kTimeoutMs);
-    if (!run.finished)
-        process.kill();
-    run.status = process.exitStatus();
-    run.exitCode = process.exitCode();
-    run.out = QString::fromLocal8Bit(process.readAllStandardOutput());
-    run.err = QString::fromLocal8Bit(process.readAllStandardError());
-    return run;
-}
 
 bool writeFile(const QString& path, const QByteArray& content)
 {
@@ -105,27 +65,6 @@ QJsonObject readJsonObject(const QByteArray& text, QString* error)
         return {};
     }
     return document.object();
-}
-
-QByteArray number(double value)
-{
-    char buffer[40];
-    const int length = std::snprintf(buffer, sizeof buffer, "%.10g", value);
-    return QByteArray(buffer, length);
-}
-
-QByteArray imuCsv(const std::vector<footpath::ImuSample>& samples)
-{
-    QByteArray text = kImuHeader;
-    for (const footpath::ImuSample& s : samples) {
-        text += number(s.time_s);
-        for (int axis = 0; axis < 3; ++axis)
-            text += ',' + number(s.acc_mps2[axis]);
-        for (int axis = 0; axis < 3; ++axis)
-            text += ',' + number(s.gyr_radps[axis]);
-        text += '\n';
-    }
-    return text;
 }
 
 /// Stance phases in a per-sample 0/1 sequence (runs of ones).
@@ -164,12 +103,6 @@ QString substitute(QString text, const QString& dir, const QString& walk)
 {
     return text.replace(QStringLiteral("{dir}"), dir).replace(QStringLiteral("{walk}"), walk);
 }
-
-#define VERIFY_EXIT(run, code)                                                                          \
-    do {                                                                                                \
-        QVERIFY2((run).finished && (run).status == QProcess::NormalExit && (run).exitCode == (code), \
-                 (run).describe().constData());                                                         \
-    } while (false)
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 // inputs, the suggested sets without --sets, and exit code 2 naming the nearest method for an
 // unknown one. Whether a method helps is the methods' own tests' business; here only the report.
 
+#include "CliRunner.h"
 #include "TestData.h"
 #include "nav/MethodSets.h"
 #include "sim/WalkSimulator.h"
@@ -22,74 +23,15 @@
 #include <cstdio>
 #include <vector>
 
-#ifndef FOOTPATH_CLI
-#error "FOOTPATH_CLI must name the footpath-cli binary"
-#endif
-
 namespace {
 
-constexpr int kTimeoutMs = 300000;
-constexpr int kExitBadInput = 2;
+using namespace clitest;
+
 const QString kEcgColumns = QStringLiteral("time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z");
-
-struct Run {
-    bool finished = false;
-    QProcess::ExitStatus status = QProcess::CrashExit;
-    int exitCode = -1;
-    QString out;
-    QString err;
-
-    QByteArray describe() const
-    {
-        return QStringLiteral("exit %1 (%2)\nstdout: %3\nstderr: %4")
-            .arg(exitCode)
-            .arg(QLatin1String(finished ? (status == QProcess::NormalExit ? "normal" : "crashed") : "timed out"))
-            .arg(out, err)
-            .toLocal8Bit();
-    }
-};
-
-Run runCli(const QStringList& args)
-{
-    QProcess process;
-    process.setProgram(QString::fromUtf8(FOOTPATH_CLI));
-    process.setArguments(args);
-    process.start();
-    Run run;
-    run.finished = process.waitForStarted(kTimeoutMs) && process.waitForFinished(kTimeoutMs);
-    if (!run.finished)
-        process.kill();
-    run.status = process.exitStatus();
-    run.exitCode = process.exitCode();
-    run.out = QString::fromLocal8Bit(process.readAllStandardOutput());
-    run.err = QString::fromLocal8Bit(process.readAllStandardError());
-    return run;
-}
-
-#define VERIFY_EXIT(run, code)                                                                          \
-    do {                                                                                                \
-        QVERIFY2((run).finished && (run).status == QProcess::NormalExit && (run).exitCode == (code), \
-                 (run).describe().constData());                                                         \
-    } while (false)
-
-QByteArray number(double value)
-{
-    char buffer[40];
-    const int length = std::snprintf(buffer, sizeof buffer, "%.10g", value);
-    return QByteArray(buffer, length);
-}
 
 bool writeImuCsv(const QString& path, const std::vector<footpath::ImuSample>& samples)
 {
-    QByteArray text = "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
-    for (const footpath::ImuSample& s : samples) {
-        text += number(s.time_s);
-        for (int axis = 0; axis < 3; ++axis)
-            text += ',' + number(s.acc_mps2[axis]);
-        for (int axis = 0; axis < 3; ++axis)
-            text += ',' + number(s.gyr_radps[axis]);
-        text += '\n';
-    }
+    const QByteArray text = imuCsv(samples);
     QFile file(path);
     return file.open(QIODevice::WriteOnly) && file.write(text) == text.size();
 }

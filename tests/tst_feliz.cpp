@@ -31,19 +31,6 @@ Result runFeliz(const Recording& recording)
     return std::move(output.result);
 }
 
-/// An Xsens MTi-class IMU at 100 Hz (as tst_pipeline_synthetic): data-sheet white noise and the
-/// constant biases left after factory calibration.
-WalkSimulatorConfig realisticSensor(std::uint32_t seed = 1)
-{
-    WalkSimulatorConfig config;
-    config.accNoiseStd_mps2 = 0.01;
-    config.gyrNoiseStd_radps = 0.0015;
-    config.accBias_mps2 = Eigen::Vector3d(0.0075, -0.005, 0.01);
-    config.gyrBias_radps = Eigen::Vector3d(0.0016, -0.0012, 0.002);
-    config.seed = seed;
-    return config;
-}
-
 /// What the de-drift is compared with: the same attitudes, C f - g integrated and simply reset to
 /// zero at each stance (no linear removal over the swing). Written here, apart from the product.
 std::vector<Eigen::Vector3d> resetOnlyPath(const Recording& recording, const Result& result, double gravity_mps2)
@@ -81,7 +68,7 @@ class TestFeliz : public QObject {
 private slots:
     void straightWalkLengthWithinTwoPercent()
     {
-        const SimulatedWalk walk = simulateWalk(straightLinePath(30.0), realisticSensor());
+        const SimulatedWalk walk = simulateWalk(straightLinePath(30.0), mtiClassSensor());
         const Result result = runFeliz(walk.recording);
         const double errorPct = 100.0 * (result.summary.pathLength_m / walk.truePathLength_m - 1.0);
         // The gyro's yaw bias bends the line (no filter estimates it), so the end lies to the side;
@@ -97,7 +84,7 @@ private slots:
 
     void everySampleFilledAndVelocityExactlyZeroAtStance()
     {
-        const SimulatedWalk walk = simulateWalk(closedRectanglePath(6.0, 4.0), realisticSensor());
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(6.0, 4.0), mtiClassSensor());
         const Result result = runFeliz(walk.recording);
         const std::size_t n = walk.recording.samples.size();
         QCOMPARE(result.time_s.size(), n);
@@ -189,7 +176,7 @@ private slots:
 
     void cancelStopsTheRun()
     {
-        const SimulatedWalk walk = simulateWalk(straightLinePath(200.0), realisticSensor());  // > 8192 samples
+        const SimulatedWalk walk = simulateWalk(straightLinePath(200.0), mtiClassSensor());  // > 8192 samples
         std::vector<double> fractions;
         const PipelineOutput finished = runPipeline(walk.recording, felizParameters(), [&](double fraction) {
             fractions.push_back(fraction);

@@ -29,25 +29,10 @@ Result run(const Recording& recording, const Parameters& params = Parameters())
     return std::move(output.result);
 }
 
-/// An Xsens MTi-class IMU at 100 Hz, the device the product targets: white noise of its data-sheet
-/// density over a 50 Hz bandwidth (about 120 ug/sqrt(Hz) and 0.01 deg/s/sqrt(Hz)) and constant
-/// biases of about 1 mg and 0.1 deg/s left after factory calibration.
-WalkSimulatorConfig realisticSensor(double rate_hz = 100.0, std::uint32_t seed = 1)
-{
-    WalkSimulatorConfig config;
-    config.rate_hz = rate_hz;
-    config.accNoiseStd_mps2 = 0.01;
-    config.gyrNoiseStd_radps = 0.0015;
-    config.accBias_mps2 = Eigen::Vector3d(0.0075, -0.005, 0.01);
-    config.gyrBias_radps = Eigen::Vector3d(0.0016, -0.0012, 0.002);
-    config.seed = seed;
-    return config;
-}
-
 /// A low-cost MEMS IMU: four times the MTi-class bias and twice its noise.
 WalkSimulatorConfig lowCostSensor(std::uint32_t seed)
 {
-    WalkSimulatorConfig config = realisticSensor(100.0, seed);
+    WalkSimulatorConfig config = mtiClassSensor(100.0, seed);
     config.accNoiseStd_mps2 *= 2.0;
     config.gyrNoiseStd_radps *= 2.0;
     config.accBias_mps2 *= 4.0;
@@ -83,7 +68,7 @@ private slots:
         double sum = 0.0;
         const int seeds = 8;
         for (std::uint32_t seed = 1; seed <= seeds; ++seed) {
-            const SimulatedWalk walk = simulateWalk(closedRectanglePath(30.0, 20.0), realisticSensor(100.0, seed));
+            const SimulatedWalk walk = simulateWalk(closedRectanglePath(30.0, 20.0), mtiClassSensor(100.0, seed));
             QVERIFY(std::abs(walk.truePathLength_m - 100.0) < 1e-9);
             const Result result = run(walk.recording, withBiasStates());
             const LoopClosure closure = computeLoopClosure(result.position_m, result.summary.pathLength_m, 100.0);
@@ -123,7 +108,7 @@ private slots:
 
     void detectorFindsEveryStanceOfTheSimulatedWalk()
     {
-        const SimulatedWalk walk = simulateWalk(straightLinePath(20.0), realisticSensor());
+        const SimulatedWalk walk = simulateWalk(straightLinePath(20.0), mtiClassSensor());
         const Result result = run(walk.recording);
         QCOMPARE(result.summary.stancePhases, countStancePhases(walk.trueStance));
         QCOMPARE(result.summary.steps, countStancePhases(walk.trueStance) - 1);
@@ -160,7 +145,7 @@ private slots:
         QFETCH(double, stride_m);
         QFETCH(double, still_s);
         QFETCH(int, path);
-        WalkSimulatorConfig config = realisticSensor(rate_hz);
+        WalkSimulatorConfig config = mtiClassSensor(rate_hz);
         config.gyrBias_radps.setZero();  // the default 9-state filter holds the biases at zero
         config.stanceDuration_s = stance_s;
         config.swingDuration_s = swing_s;
@@ -183,7 +168,7 @@ private slots:
 
     void standingStillIsOneStance()
     {
-        WalkSimulatorConfig config = realisticSensor(100.0);
+        WalkSimulatorConfig config = mtiClassSensor(100.0);
         config.initialStill_s = 60.0;
         const SimulatedWalk walk = simulateWalk(straightLinePath(1.4), config);
         const Result result = run(walk.recording);
@@ -198,7 +183,7 @@ private slots:
 
     void straightLineLengthWithinOnePercent()
     {
-        const SimulatedWalk walk = simulateWalk(straightLinePath(50.0), realisticSensor());
+        const SimulatedWalk walk = simulateWalk(straightLinePath(50.0), mtiClassSensor());
         const Result result = run(walk.recording);
         const DistanceError error = computeDistanceError(result.summary.pathLength_m, 50.0);
         qInfo("simulated 50 m line: path %.3f m, error %.3f %%", result.summary.pathLength_m, error.errorPct);
@@ -207,7 +192,7 @@ private slots:
 
     void stairsClimbTheirHeight()
     {
-        const SimulatedWalk walk = simulateWalk(stairsPath(10, 0.34, 0.6), realisticSensor());
+        const SimulatedWalk walk = simulateWalk(stairsPath(10, 0.34, 0.6), mtiClassSensor());
         const Result result = run(walk.recording);
         const double climbed = result.steps.back().position_m.z() - result.steps.front().position_m.z();
         qInfo("simulated stairs: climbed %.3f m of %.3f m", climbed, walk.truePosition_m.back().z());
@@ -217,15 +202,15 @@ private slots:
     void rateDoesNotChangeTheEstimate()
     {
         // Windows and noise are given per second, so 200 Hz must give the same walk as 100 Hz.
-        const Result at100 = run(simulateWalk(closedRectanglePath(10.0, 5.0), realisticSensor(100.0)).recording);
-        const Result at200 = run(simulateWalk(closedRectanglePath(10.0, 5.0), realisticSensor(200.0)).recording);
+        const Result at100 = run(simulateWalk(closedRectanglePath(10.0, 5.0), mtiClassSensor(100.0)).recording);
+        const Result at200 = run(simulateWalk(closedRectanglePath(10.0, 5.0), mtiClassSensor(200.0)).recording);
         QCOMPARE(at200.summary.steps, at100.summary.steps);
         QVERIFY(std::abs(at200.summary.pathLength_m - at100.summary.pathLength_m) < 0.1);
     }
 
     void everySampleHasEveryOutput()
     {
-        const SimulatedWalk walk = simulateWalk(straightLinePath(5.0), realisticSensor());
+        const SimulatedWalk walk = simulateWalk(straightLinePath(5.0), mtiClassSensor());
         const Result result = run(walk.recording);
         const std::size_t n = walk.recording.samples.size();
         QCOMPARE(result.summary.samples, n);
@@ -239,15 +224,15 @@ private slots:
 
     void gyroBiasIsEstimated()
     {
-        const SimulatedWalk walk = simulateWalk(closedRectanglePath(30.0, 20.0), realisticSensor());
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(30.0, 20.0), mtiClassSensor());
         const Result result = run(walk.recording, withBiasStates());
-        const Eigen::Vector3d error = result.gyroBias_radps.back() - realisticSensor().gyrBias_radps;
+        const Eigen::Vector3d error = result.gyroBias_radps.back() - mtiClassSensor().gyrBias_radps;
         QVERIFY2(error.norm() < 1e-3, qPrintable(QString::number(error.norm())));
     }
 
     void cancelStopsTheRun()
     {
-        const SimulatedWalk walk = simulateWalk(straightLinePath(200.0), realisticSensor());  // > 8192 samples
+        const SimulatedWalk walk = simulateWalk(straightLinePath(200.0), mtiClassSensor());  // > 8192 samples
         int calls = 0;
         PipelineOutput output = runPipeline(walk.recording, Parameters(), [&](double) { return ++calls < 2; });
         QVERIFY(output.result.cancelled);
@@ -257,7 +242,7 @@ private slots:
 
     void progressReachesOne()
     {
-        const SimulatedWalk walk = simulateWalk(straightLinePath(5.0), realisticSensor());
+        const SimulatedWalk walk = simulateWalk(straightLinePath(5.0), mtiClassSensor());
         double last = -1.0;
         const PipelineOutput output = runPipeline(walk.recording, Parameters(), [&](double f) {
             last = f;
@@ -271,7 +256,7 @@ private slots:
     {
         Parameters bad;
         bad.acc_min_mps2 = 12.0;
-        const SimulatedWalk walk = simulateWalk(straightLinePath(2.0), realisticSensor());
+        const SimulatedWalk walk = simulateWalk(straightLinePath(2.0), mtiClassSensor());
         QVERIFY(QString::fromStdString(runPipeline(walk.recording, bad).error).contains("acc_min_mps2"));
         QVERIFY(QString::fromStdString(runPipeline(Recording(), Parameters()).error).contains("at least 2"));
     }

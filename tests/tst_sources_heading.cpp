@@ -18,16 +18,11 @@ using namespace footpath;
 
 namespace {
 
-/// An Xsens MTi-class IMU at 100 Hz (as tst_pipeline_synthetic): noise of its data sheet and
-/// constant biases of about 1 mg and 0.1 deg/s. The default 9-state filter leaves the gyro bias in
-/// the heading, the drift HDR, IPER and the magnetometer are there to take out.
+/// The simulator's MTi-class sensor, optionally with a magnetometer. The default 9-state filter
+/// leaves its gyro bias in the heading, the drift HDR, IPER and the magnetometer are there to take out.
 WalkSimulatorConfig realisticSensor(bool withMagnetometer = false)
 {
-    WalkSimulatorConfig config;
-    config.accNoiseStd_mps2 = 0.01;
-    config.gyrNoiseStd_radps = 0.0015;
-    config.accBias_mps2 = Eigen::Vector3d(0.0075, -0.005, 0.01);
-    config.gyrBias_radps = Eigen::Vector3d(0.0016, -0.0012, 0.002);
+    WalkSimulatorConfig config = mtiClassSensor();
     config.withMagnetometer = withMagnetometer;
     return config;
 }

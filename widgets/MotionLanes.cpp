@@ -1,5 +1,7 @@
 #include "MotionLanes.h"
 
+#include "TimeBands.h"
+
 #include <QLocale>
 #include <QToolTip>
 #include <qcustomplot.h>
@@ -44,19 +46,6 @@ QString motionSpanToolTip(const Result& result, const MotionSpan& span)
     if (std::isfinite(from) && std::isfinite(last.baroHeight_m))
         text += MotionLanes::tr("<br>barometric height %1 \u2192 %2 m").arg(decimals(from, 1), decimals(last.baroHeight_m, 1));
     return text;
-}
-
-/// How many bars overlap in time at most (at least 1).
-std::size_t overlapDepth(const std::vector<LaneBar>& bars)
-{
-    std::size_t deepest = 1;
-    for (const LaneBar& bar : bars) {
-        const auto depth = std::count_if(bars.begin(), bars.end(), [&bar](const LaneBar& other) {
-            return other.start_s <= bar.start_s && bar.start_s <= other.end_s;
-        });
-        deepest = std::max(deepest, static_cast<std::size_t>(depth));
-    }
-    return deepest;
 }
 
 }  // namespace
@@ -210,13 +199,7 @@ public:
     {
     }
 
-    static QFont labelFont(const QCustomPlot* plot)
-    {
-        QFont font = plot->font();
-        font.setPointSizeF(font.pointSizeF() * 0.85);
-        return font;
-    }
-    static double levelHeight(const QCustomPlot* plot) { return QFontMetricsF(labelFont(plot)).height() + 4.0; }
+    static double levelHeight(const QCustomPlot* plot) { return QFontMetricsF(laneLabelFont(plot)).height() + 4.0; }
 
 protected:
     void applyDefaultAntialiasingHint(QCPPainter* painter) const override { painter->setAntialiasing(false); }
@@ -224,7 +207,7 @@ protected:
 
     void draw(QCPPainter* painter) override
     {
-        painter->setFont(labelFont(parentPlot()));
+        painter->setFont(laneLabelFont(parentPlot()));
         if (greyable_ && owner_->isMotionGreyed()) {
             painter->fillRect(lane_->rect(), kGreyedFill);
             painter->setPen(kGreyedText);
@@ -283,16 +266,7 @@ MotionLanes::MotionLanes(QCustomPlot* plot) : QObject(plot), plot_(plot)
 
 void MotionLanes::setUpLane(QCPAxisRect* lane, const QString& name, std::vector<LaneBar>* bars, bool greyable)
 {
-    auto ticker = QSharedPointer<QCPAxisTickerText>::create();
-    ticker->addTick(0.5, name);
-    QCPAxis* levels = lane->axis(QCPAxis::atLeft);
-    levels->setTicker(ticker);
-    levels->setRange(0.0, 1.0);
-    levels->setTickLength(0, 0);
-    levels->setSubTicks(false);
-    levels->grid()->setVisible(false);
-    lane->axis(QCPAxis::atBottom)->grid()->setVisible(false);
-    lane->axis(QCPAxis::atBottom)->setTicks(false);
+    footpath::setUpLane(lane, name);
     (new Bars(this, lane, bars, greyable))->setLayer(QStringLiteral("main"));
 }
 
@@ -342,7 +316,7 @@ void MotionLanes::fitLaneHeights()
         lane->setMaximumSize(QWIDGETSIZE_MAX, static_cast<int>(std::ceil(height)));
     };
     fix(motionLane_, levelHeight + 2.0);
-    const std::size_t levels = std::min(overlapDepth(noteBars_), kMaxNoteLevels);
+    const std::size_t levels = std::clamp<std::size_t>(overlapDepth(noteBars_), 1, kMaxNoteLevels);
     fix(notesLane_, static_cast<double>(levels) * levelHeight + 2.0);
 }
 

@@ -22,6 +22,27 @@ std::vector<QCPRange> flaggedSpans(const std::vector<double>& times, const std::
     return spans;
 }
 
+void setUpLane(QCPAxisRect* lane, const QString& name)
+{
+    auto ticker = QSharedPointer<QCPAxisTickerText>::create();
+    ticker->addTick(0.5, name);
+    QCPAxis* levels = lane->axis(QCPAxis::atLeft);
+    levels->setTicker(ticker);
+    levels->setRange(0.0, 1.0);
+    levels->setTickLength(0, 0);
+    levels->setSubTicks(false);
+    levels->grid()->setVisible(false);
+    lane->axis(QCPAxis::atBottom)->grid()->setVisible(false);
+    lane->axis(QCPAxis::atBottom)->setTicks(false);
+}
+
+QFont laneLabelFont(const QCustomPlot* plot)
+{
+    QFont font = plot->font();
+    font.setPointSizeF(font.pointSizeF() * 0.85);
+    return font;
+}
+
 TimeBands::TimeBands(QCPAxisRect* rect, const QBrush& brush)
     : QCPLayerable(rect->parentPlot(), QString(), rect), rect_(rect), brush_(brush)
 {

@@ -2,6 +2,7 @@
 
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -11,6 +12,28 @@ namespace footpath {
 /// Spans of consecutive set flags, each from its first sample to the sample after its last (as a
 /// step plot draws them), so a one-sample flag still has a width.
 std::vector<QCPRange> flaggedSpans(const std::vector<double>& times, const std::vector<std::uint8_t>& flags);
+
+/// Makes an axis rect a lane of labelled bars: its name as the one tick on the left, no grid and
+/// no time ticks (the rows above carry the time axis).
+void setUpLane(QCPAxisRect* lane, const QString& name);
+
+/// The smaller font lane labels are drawn in.
+QFont laneLabelFont(const QCustomPlot* plot);
+
+/// How many spans overlap in time at most (0 for none); Span has start_s and end_s. A lane needs
+/// that many levels for every bar to have its own.
+template <class Span>
+std::size_t overlapDepth(const std::vector<Span>& spans)
+{
+    std::size_t deepest = 0;
+    for (const Span& span : spans) {
+        const auto depth = std::count_if(spans.begin(), spans.end(), [&span](const Span& other) {
+            return other.start_s <= span.start_s && span.start_s <= other.end_s;
+        });
+        deepest = std::max(deepest, static_cast<std::size_t>(depth));
+    }
+    return deepest;
+}
 
 /// Filled bands over time spans in one axis rect: the full height of the rect, or between two
 /// levels of its left axis (a lane). Drawn as pixel rectangles, merged where they touch: as a

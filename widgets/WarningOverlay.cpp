@@ -43,20 +43,6 @@ std::vector<QCPRange> localSpans(const std::vector<PlausibilityWarning>& warning
     return merged;
 }
 
-/// How many findings overlap in time at most. The lane gets one level more, as a label may run
-/// past the end of its bar onto the next finding's start.
-std::size_t overlapDepth(const std::vector<PlausibilityWarning>& warnings)
-{
-    std::size_t deepest = 0;
-    for (const PlausibilityWarning& w : warnings) {
-        const auto depth = std::count_if(warnings.begin(), warnings.end(), [&w](const PlausibilityWarning& other) {
-            return other.start_s <= w.start_s && w.start_s <= other.end_s;
-        });
-        deepest = std::max(deepest, static_cast<std::size_t>(depth));
-    }
-    return deepest;
-}
-
 }  // namespace
 
 QString warningLabel(Kind kind)
@@ -121,13 +107,7 @@ public:
     {
     }
 
-    static QFont labelFont(const QCustomPlot* plot)
-    {
-        QFont font = plot->font();
-        font.setPointSizeF(font.pointSizeF() * 0.85);
-        return font;
-    }
-    static double levelHeight(const QCustomPlot* plot) { return QFontMetricsF(labelFont(plot)).height() + 3.0; }
+    static double levelHeight(const QCustomPlot* plot) { return QFontMetricsF(laneLabelFont(plot)).height() + 3.0; }
 
 protected:
     void applyDefaultAntialiasingHint(QCPPainter* painter) const override { painter->setAntialiasing(false); }
@@ -135,7 +115,7 @@ protected:
 
     void draw(QCPPainter* painter) override
     {
-        painter->setFont(labelFont(parentPlot()));
+        painter->setFont(laneLabelFont(parentPlot()));
         const double height = levelHeight(parentPlot());
         const auto levels = static_cast<std::size_t>(std::max(1.0, std::floor((lane_->height() - 2.0) / height)));
         std::vector<double> levelEnds(levels, -std::numeric_limits<double>::infinity());  // in pixels
@@ -220,16 +200,7 @@ void WarningOverlay::setLane(QCPAxisRect* lane)
 {
     lane_ = lane;
     rows_.push_back(lane);
-    auto ticker = QSharedPointer<QCPAxisTickerText>::create();
-    ticker->addTick(0.5, tr("Warnings"));
-    QCPAxis* levels = lane->axis(QCPAxis::atLeft);
-    levels->setTicker(ticker);
-    levels->setRange(0.0, 1.0);
-    levels->setTickLength(0, 0);
-    levels->setSubTicks(false);
-    levels->grid()->setVisible(false);
-    lane->axis(QCPAxis::atBottom)->grid()->setVisible(false);
-    lane->axis(QCPAxis::atBottom)->setTicks(false);
+    setUpLane(lane, tr("Warnings"));
     (new LaneBars(this, lane))->setLayer(QStringLiteral("main"));
 }
 
@@ -239,6 +210,7 @@ void WarningOverlay::setWarnings(std::vector<PlausibilityWarning> warnings)
     const std::vector<QCPRange> spans = localSpans(warnings_);
     for (TimeBands* bands : bands_)
         bands->setSpans(spans);
+    // One level more than the findings overlap: a label may run past its bar onto the next start.
     neededLevels_ = overlapDepth(warnings_) + 1;
     fitLaneHeight();
 }

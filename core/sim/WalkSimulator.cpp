@@ -457,6 +457,18 @@ std::vector<Eigen::Vector3d> elevatorPath(double walkBefore_m, double rise_m, do
             Vector3d(walkBefore_m + walkAfter_m, 0.0, rise_m)};
 }
 
+WalkSimulatorConfig mtiClassSensor(double rate_hz, std::uint32_t seed)
+{
+    WalkSimulatorConfig config;
+    config.rate_hz = rate_hz;
+    config.accNoiseStd_mps2 = 0.01;
+    config.gyrNoiseStd_radps = 0.0015;
+    config.accBias_mps2 = Eigen::Vector3d(0.0075, -0.005, 0.01);
+    config.gyrBias_radps = Eigen::Vector3d(0.0016, -0.0012, 0.002);
+    config.seed = seed;
+    return config;
+}
+
 WalkSimulatorConfig ecgXmuBarometer(WalkSimulatorConfig config)
 {
     config.withPressure = true;

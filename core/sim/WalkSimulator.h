@@ -50,6 +50,11 @@ struct WalkSimulatorConfig {
 /// 0.01 Pa), added to config with pressure switched on.
 WalkSimulatorConfig ecgXmuBarometer(WalkSimulatorConfig config);
 
+/// An Xsens MTi-class IMU, the device the product targets: white noise of its data-sheet density
+/// over a 50 Hz bandwidth (about 120 ug/sqrt(Hz) and 0.01 deg/s/sqrt(Hz)) and constant biases of
+/// about 1 mg and 0.1 deg/s left after factory calibration.
+WalkSimulatorConfig mtiClassSensor(double rate_hz = 100.0, std::uint32_t seed = 1);
+
 /// A simulated walk: the recording a sensor would produce plus the truth behind it.
 struct SimulatedWalk {
     Recording recording;

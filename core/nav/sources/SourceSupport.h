@@ -3,6 +3,7 @@
 // Small pieces the heading and position sources share (header only: HDR, IPER, magnetometer).
 
 #include "Result.h"
+#include "nav/Attitude.h"
 #include "nav/ErrorStateEkf.h"
 
 #include <algorithm>
@@ -19,11 +20,10 @@ inline double wrapAngle(double angle_rad)
     return wrapped <= -M_PI ? wrapped + 2.0 * M_PI : wrapped;
 }
 
-/// Yaw of the current attitude (z up, counter-clockwise from x), as rollPitchYaw() gives it.
+/// Yaw of the current attitude (z up, counter-clockwise from x).
 inline double currentYaw(const ErrorStateEkf& ekf)
 {
-    const Eigen::Matrix3d& c = ekf.state().bodyToNav;
-    return std::atan2(c(1, 0), c(0, 0));
+    return rollPitchYaw(ekf.state().bodyToNav).z();
 }
 
 /// A yaw measurement. C_est = (I + S(dphi)) C_true with C = Rz(yaw) Ry Rx: a small rotation dphi_z
