@@ -89,6 +89,15 @@ struct Summary {
     double stairsDescent_m = 0.0;       ///< ... and lost (positive)
 };
 
+/// Where each 3-block starts in Result::errorStd (the order of ErrorStateEkf's error state).
+struct ErrorStdIndex {
+    static constexpr int attitude = 0;
+    static constexpr int gyroBias = 3;
+    static constexpr int position = 6;
+    static constexpr int velocity = 9;
+    static constexpr int accBias = 12;
+};
+
 /// Everything the views, exporters and the CLI need, so none of them recomputes estimation.
 struct Result {
     std::vector<double> time_s;
@@ -97,6 +106,11 @@ struct Result {
     std::vector<Eigen::Vector3d> rollPitchYaw_rad;
     std::vector<Eigen::Vector3d> gyroBias_radps;
     std::vector<Eigen::Vector3d> accBias_mps2;
+    /// One standard deviation of the estimate per sample, from the filter's covariance (or the
+    /// smoother's), in the error-state order of ErrorStateEkf: attitude (rad, about the navigation
+    /// axes), gyro bias, position, velocity, accelerometer bias; see ErrorStdIndex. Float: it is
+    /// drawn as a band, not computed with. Empty when the estimator has no covariance (Feliz).
+    std::vector<Eigen::Matrix<float, 15, 1>> errorStd;
     StanceFlags flags;
     std::vector<Step> steps;
     Summary summary;

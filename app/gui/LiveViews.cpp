@@ -39,6 +39,7 @@ Result resultWindow(const Result& result, double from_s)
     window.rollPitchYaw_rad = tailFrom(result.rollPitchYaw_rad, first);
     window.gyroBias_radps = tailFrom(result.gyroBias_radps, first);
     window.accBias_mps2 = tailFrom(result.accBias_mps2, first);
+    window.errorStd = tailFrom(result.errorStd, first);
     window.flags.c1 = tailFrom(result.flags.c1, first);
     window.flags.c2 = tailFrom(result.flags.c2, first);
     window.flags.c3 = tailFrom(result.flags.c3, first);

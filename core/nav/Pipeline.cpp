@@ -78,6 +78,7 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
     ErrorStateEkf ekf(params, alignment.bodyToNav);
     MeasurementSources sources(params);
     reserveResult(result, samples.size());
+    result.errorStd.reserve(samples.size());
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const std::optional<double> previousTime_s =
             k > 0 ? std::optional<double>(samples[k - 1].time_s) : std::nullopt;
@@ -114,6 +115,7 @@ void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSamp
         ekf.propagate(sample.acc_mps2, sample.gyr_radps, sample.time_s - *previousTime_s);
     sources.apply(ekf, SourceContext{sample, result.time_s.size(), flags, result.methodNotes});
     recordState(result, sample.time_s, ekf.state());
+    result.errorStd.push_back(ekf.covariance().diagonal().cwiseMax(0.0).cwiseSqrt().cast<float>());
 }
 
 void appendStep(Result& result, std::size_t first, std::size_t last)
