@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,10 @@ struct Reference {
     /// Hand-labelled gait events: each range spans one swing (toe-off to heel-strike); the samples
     /// between consecutive swings are stance. Indices refer to recording.samples.
     std::vector<SampleRange> swings;
+    /// Stance by a reference, one flag per sample (1 = foot at rest), e.g. pyshoe's zv_vicon_opt
+    /// column (zero velocity from the motion capture); empty if the file has none. Shown beside
+    /// the detector's stance; gait events are in swings instead.
+    std::vector<std::uint8_t> stance;
     bool hasTrialBoundaries = false;
     SampleRange trialBoundaries;  ///< the part of the recording the gait events cover
     std::vector<std::string> notes;  ///< where each piece came from ("known length 72 m from the file name")

@@ -111,6 +111,9 @@ struct Result {
     /// axes), gyro bias, position, velocity, accelerometer bias; see ErrorStdIndex. Float: it is
     /// drawn as a band, not computed with. Empty when the estimator has no covariance (Feliz).
     std::vector<Eigen::Matrix<float, 15, 1>> errorStd;
+    /// The forward filter's speed per sample when a smoother replaced velocity_mps (empty
+    /// otherwise): a filter that ran away is flagged from it, however smooth the final path looks.
+    std::vector<float> forwardSpeed_mps;
     StanceFlags flags;
     std::vector<Step> steps;
     Summary summary;

@@ -80,8 +80,10 @@ private slots:
         qInfo("pyshoe-vicon mean 2D ARMSE %.4f m, worst %.4f m (paper detector 4.39 m; issue target <= 0.055 m, "
               "none above 0.15 m; pyshoe's per-trial oracle threshold 0.057 m)",
               armse.value("mean").toDouble(), armse.value("worst").toDouble());
-        QVERIFY2(armse.value("mean").toDouble() <= 0.065, "mean 2D ARMSE over the 12 trials");
-        QVERIFY2(armse.value("worst").toDouble() <= 0.155, "worst 2D ARMSE");
+        // The smoother's figures (0.0593 / 0.1456 m); the filter alone (--set estimator=ekf) scores
+        // 0.0615 / 0.1431 m with the same noise.
+        QVERIFY2(armse.value("mean").toDouble() <= 0.060, "mean 2D ARMSE over the 12 trials");
+        QVERIFY2(armse.value("worst").toDouble() <= 0.150, "worst 2D ARMSE (the issue's bound)");
     }
 
     void ecgXmuClosedWalks()

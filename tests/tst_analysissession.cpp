@@ -148,6 +148,9 @@ private slots:
         QCOMPARE(session.parameters().acc_std_max_mps2, 0.9);
         session.setParameter(QStringLiteral("gyr_max_radps"), 1.5);  // another field: a new step
         QCOMPARE(session.undoStack()->count(), 2);
+        // Edit > Undo names the change as the panel does, by its label.
+        QCOMPARE(session.undoStack()->undoText(),
+                 QStringLiteral("Change ") + QString::fromUtf8(findParameterField("gyr_max_radps")->label));
         session.undoStack()->undo();
         session.undoStack()->undo();
         QCOMPARE(session.parameters().acc_std_max_mps2, Parameters().acc_std_max_mps2);

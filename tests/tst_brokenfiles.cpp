@@ -59,7 +59,13 @@ private slots:
                                               << "time goes backwards";
         QTest::newRow("header only") << kHeader << "" << 1 << "no samples after the header";
         QTest::newRow("no header") << goodRows(3) << "" << 0 << "no header row: the first line has 7 numeric columns";
-        QTest::newRow("one endless line") << QByteArray(2 * 1024 * 1024, 'a') << "" << 1 << "missing column(s)";
+        QTest::newRow("one endless line") << QByteArray(2 * 1024 * 1024, 'a') << "" << 0
+                                          << "does not look like sensor data: no numeric rows";
+        QTest::newRow("plain words") << QByteArray("# Notes\n\nThe walk was recorded on the 3rd floor.\nSee the "
+                                                   "README for 2 more walks.\n")
+                                     << "" << 0 << "does not look like sensor data: no numeric rows";
+        QTest::newRow("most rows damaged") << kHeader + "0.00,0,0,9.8,0,0,0\n0.01,x,0,9.8,0,0,0\n0.02,0,y,9.8,0,0,0\n"
+                                           << "" << 3 << "2 of 3 data rows could not be read";
         QTest::newRow("unknown --format") << kHeader + goodRows(3) << "excel" << 0 << "unknown format 'excel'";
         QTest::newRow("CSV read as .mtb") << kHeader + goodRows(3) << "xsens-mtb" << 0 << "";
         QTest::newRow("random bytes after an Xbus preamble") << randomBytes(8192, 2, '\xFA') << "" << 0 << "";
@@ -91,20 +97,36 @@ private slots:
     {
         QTest::addColumn<QByteArray>("content");
         QTest::addColumn<int>("kept");
-        QTest::addColumn<QString>("where");
+        QTest::addColumn<QStringList>("warnings");  // each must be in one warning
+        QTest::addColumn<bool>("truncated");
         const QByteArray good = kHeader + goodRows(50);
-        QTest::newRow("cut off mid-line") << good + "0.50,0.1,0.2" << 50 << "line 52, column 4 (expected 7 columns";
-        QTest::newRow("cut off mid-number") << good + "0.50,0.1,0.2,9.8,0.01,0.02,0.4" << 51 << "";
-        QTest::newRow("corrupted block") << good + "\x01\x02garbage\x03\n" + goodRows(10, 0.6) << 50
-                                         << "line 52, column 2 (expected 7 columns, found 1)";
-        QTest::newRow("text in a cell") << good + "0.50,0.1,abc,9.8,0,0,0\n" + goodRows(10, 0.6) << 50
-                                        << "line 52, column 3 (expected a number in column 'acc_y', got 'abc')";
+        QTest::newRow("cut off mid-line") << good + "0.50,0.1,0.2" << 50
+                                          << QStringList{"the file ends in the middle of line 52, column 4 (expected 7 "
+                                                         "columns, found 3); the 50 samples before it were kept"}
+                                          << true;
+        QTest::newRow("cut off mid-number") << good + "0.50,0.1,0.2,9.8,0.01,0.02,0.4" << 51 << QStringList{} << false;
+        QTest::newRow("corrupted block")
+            << good + "\x01\x02garbage\x03\n" + goodRows(10, 0.6) << 60
+            << QStringList{"line 52, column 2 (expected 7 columns, found 1): the row was skipped"} << false;
+        QTest::newRow("text in a cell")
+            << good + "0.50,0.1,abc,9.8,0,0,0\n" + goodRows(10, 0.6) << 60
+            << QStringList{"line 52, column 3 (expected a number in column 'acc_y', got 'abc'): the row was skipped"}
+            << false;
+        QByteArray sprinkled = kHeader;
+        for (int block = 0; block < 10; ++block)
+            sprinkled += goodRows(5, block * 0.05) + "oops\n";
+        QTest::newRow("many bad rows: the first three, then a count")
+            << sprinkled << 50
+            << QStringList{"line 7, column 2 (expected 7 columns, found 1): the row was skipped", "line 19, column 2",
+                           "7 more damaged row(s) were skipped"}
+            << false;
     }
     void damageAfterGoodRowsKeepsWhatCameBefore()
     {
         QFETCH(QByteArray, content);
         QFETCH(int, kept);
-        QFETCH(QString, where);
+        QFETCH(QStringList, warnings);
+        QFETCH(bool, truncated);
         QTemporaryDir dir;
         const QString path = dir.filePath("broken.csv");
         QFile file(path);
@@ -112,18 +134,41 @@ private slots:
         file.write(content);
         file.close();
         const ImportResult read = importRecording(path.toStdString());
-        QVERIFY(read.ok());
+        QVERIFY2(read.ok(), read.ok() ? "" : read.error->text().c_str());
         QCOMPARE(read.recording.samples.size(), std::size_t(kept));
-        if (where.isEmpty()) {
-            // A last line cut inside its final number still parses: nothing was visibly damaged.
-            QVERIFY(!read.info.truncated);
-            return;
+        QCOMPARE(read.info.truncated, truncated);
+        std::size_t rowWarnings = 0;
+        for (const std::string& warning : read.recording.warnings)
+            rowWarnings += QString::fromStdString(warning).contains(QStringLiteral("row")) ? 1 : 0;
+        QVERIFY(rowWarnings <= 4);  // never a warning per damaged row
+        for (const QString& expected : warnings) {
+            bool warned = false;
+            for (const std::string& warning : read.recording.warnings)
+                warned = warned || QString::fromStdString(warning).contains(expected);
+            QVERIFY2(warned, qPrintable(expected));
         }
-        QVERIFY(read.info.truncated);
+    }
+
+    void xsensTextSkipsADamagedRow()
+    {
+        QByteArray text = "// Update Rate: 100.0Hz\nPacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n";
+        for (int k = 0; k < 40; ++k)
+            text += QByteArray::number(k) + (k == 20 ? "\t0.1\tabc\t9.8\t0.01\t0.02\t0.03\n" : "\t0.1\t0.2\t9.8\t0.01\t0.02\t0.03\n");
+        QTemporaryDir dir;
+        const QString path = dir.filePath("export.txt");
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(text);
+        file.close();
+        const ImportResult read = importRecording(path.toStdString());
+        QVERIFY2(read.ok(), read.ok() ? "" : read.error->text().c_str());
+        QCOMPARE(read.info.format, std::string("xsens-text"));
+        QCOMPARE(read.recording.samples.size(), std::size_t(39));
         bool warned = false;
         for (const std::string& warning : read.recording.warnings)
-            warned = warned || QString::fromStdString(warning).contains(where);
-        QVERIFY2(warned, qPrintable(where));
+            warned = warned || QString::fromStdString(warning).contains(
+                                   "line 23, column 3 (expected a number in column 'Acc_Y', got 'abc'): the row was skipped");
+        QVERIFY(warned);
     }
 
     void missingFileIsAnError()

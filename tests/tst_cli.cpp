@@ -6,6 +6,7 @@
 #include "CliRunner.h"
 #include "TestData.h"
 #include "io/ParameterIo.h"
+#include "nav/MethodSets.h"
 #include "nav/Parameters.h"
 #include "sim/WalkSimulator.h"
 
@@ -93,10 +94,15 @@ QStringList rowNamesOf(const QString& out)
     return names;
 }
 
-/// The method set eval names for the default parameters (ZARU is on or off by default).
+/// The method set eval names for the given parameters (the defaults: ZUPT, smoothed).
+QString methodSetOf(const footpath::Parameters& params = footpath::Parameters())
+{
+    return QString::fromStdString(footpath::methodSetLabel(footpath::methodSetSpec(params)));
+}
+
 QString defaultMethodSet()
 {
-    return footpath::Parameters().use_zaru ? QStringLiteral("ZUPT+ZARU") : QStringLiteral("ZUPT");
+    return methodSetOf();
 }
 
 QString substitute(QString text, const QString& dir, const QString& walk)
@@ -130,6 +136,18 @@ private slots:
     void failedWrite_leavesNoPartialFile();
     void help_exitsZeroAndPrintsUsage_data();
     void help_exitsZeroAndPrintsUsage();
+    void noArguments_printsUsageToStderrAndExitsTwo();
+    void commandHelp_printsThatCommandsOptions_data();
+    void commandHelp_printsThatCommandsOptions();
+    void mistypedNames_suggestTheNearest_data();
+    void mistypedNames_suggestTheNearest();
+    void directoryOrProse_isRefusedSayingWhat_data();
+    void directoryOrProse_isRefusedSayingWhat();
+    void writeFailure_namesTheFileAndTheReason_data();
+    void writeFailure_namesTheFileAndTheReason();
+    void badRows_areSkippedWithAWarningOrRefused();
+    void counts_printAsIntegers();
+    void screenshotOfAHeaderlessFile_finishes();
 
 private:
     /// A folder with copies of the walk under names, beside files eval must skip.
@@ -219,7 +237,7 @@ void TestCli::process_writesTrajectoryStepsAndSummary()
         // The simulated walk has no barometer: no motion class, an empty barometric height.
         QCOMPARE(cells[8], QStringLiteral("unknown"));
         QVERIFY2(cells[9].isEmpty(), qPrintable(stepRows[r]));
-        QCOMPARE(cells[0], QString::number(r - 1));
+        QCOMPARE(cells[0], QString::number(r));  // steps are numbered from 1, as in the GUI and the PDF
         QVERIFY(cells[1].toDouble() <= cells[2].toDouble());
         strideSum_m += cells[6].toDouble();
     }
@@ -327,7 +345,7 @@ void TestCli::eval_setOverridesThePresetAndBothAreApplied()
     QString error;
     QJsonObject json = readJsonObject(fromPreset.out.toUtf8(), &error);
     QVERIFY2(error.isEmpty(), qPrintable(error));
-    QCOMPARE(json.value(QStringLiteral("methods")).toString(), QStringLiteral("ZUPT"));
+    QCOMPARE(json.value(QStringLiteral("methods")).toString(), methodSetOf(preset));
     QCOMPARE(json.value(QStringLiteral("parameters")).toString(), presetPath);
 
     // ... and --set, applied after the preset, turns it back on.
@@ -336,7 +354,9 @@ void TestCli::eval_setOverridesThePresetAndBothAreApplied()
     VERIFY_EXIT(overridden, 0);
     json = readJsonObject(overridden.out.toUtf8(), &error);
     QVERIFY2(error.isEmpty(), qPrintable(error));
-    QCOMPARE(json.value(QStringLiteral("methods")).toString(), QStringLiteral("ZUPT+ZARU"));
+    footpath::Parameters withZaru = preset;
+    withZaru.use_zaru = true;
+    QCOMPARE(json.value(QStringLiteral("methods")).toString(), methodSetOf(withZaru));
     QCOMPARE(json.value(QStringLiteral("parameters")).toString(), presetPath + QStringLiteral(" use_zaru=on"));
 
     // --set alone.
@@ -346,12 +366,13 @@ void TestCli::eval_setOverridesThePresetAndBothAreApplied()
     VERIFY_EXIT(setOnly, 0);
     json = readJsonObject(setOnly.out.toUtf8(), &error);
     QVERIFY2(error.isEmpty(), qPrintable(error));
-    QCOMPARE(json.value(QStringLiteral("methods")).toString(), QStringLiteral("ZARU"));
+    QCOMPARE(json.value(QStringLiteral("methods")).toString(), QStringLiteral("ZARU+RTS smoother"));
 
     // The papers' methods are named, and Feliz's estimator replaces the filter's list.
     const std::pair<QStringList, QString> namedSets[] = {
-        {{QStringLiteral("use_hdr=1"), QStringLiteral("use_baro=1")}, QStringLiteral("ZUPT+HDR+barometer")},
-        {{QStringLiteral("filter_states=15"), QStringLiteral("use_iper=1")}, QStringLiteral("ZUPT+IPER+15-state")},
+        {{QStringLiteral("use_hdr=1"), QStringLiteral("use_baro=1")}, QStringLiteral("ZUPT+HDR+barometer+RTS smoother")},
+        {{QStringLiteral("filter_states=15"), QStringLiteral("use_iper=1")}, QStringLiteral("ZUPT+IPER+15-state+RTS smoother")},
+        {{QStringLiteral("estimator=ekf")}, QStringLiteral("ZUPT")},
         {{QStringLiteral("estimator=feliz")}, QStringLiteral("Feliz")},
     };
     for (const auto& [sets, expected] : namedSets) {
@@ -808,7 +829,6 @@ void TestCli::help_exitsZeroAndPrintsUsage_data()
     QTest::newRow("help") << QStringList{QStringLiteral("help")};
     QTest::newRow("--help") << QStringList{QStringLiteral("--help")};
     QTest::newRow("-h") << QStringList{QStringLiteral("-h")};
-    QTest::newRow("no arguments") << QStringList{};
 }
 
 void TestCli::help_exitsZeroAndPrintsUsage()
@@ -820,6 +840,248 @@ void TestCli::help_exitsZeroAndPrintsUsage()
     QVERIFY(run.out.contains(QStringLiteral("footpath-cli process INPUT")));
     QVERIFY(run.out.contains(QStringLiteral("footpath-cli eval INPUT")));
     QVERIFY2(run.err.isEmpty(), qPrintable(run.err));
+}
+
+void TestCli::noArguments_printsUsageToStderrAndExitsTwo()
+{
+    const Run run = runCli({});
+    VERIFY_EXIT(run, kExitBadInput);
+    QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
+    QVERIFY(run.err.contains(QStringLiteral("no command given")));
+    QVERIFY(run.err.contains(QStringLiteral("process, eval, compare, info, report, record")));
+}
+
+void TestCli::commandHelp_printsThatCommandsOptions_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QStringList>("expected");  // in stdout
+    QTest::addColumn<QString>("absent");        // another command's synopsis
+    const QString eval = QStringLiteral("footpath-cli eval INPUT");
+    QTest::newRow("process") << QStringList{"process", "--help"}
+                             << QStringList{"footpath-cli process INPUT", "--trajectory out.csv", "--set name=value"}
+                             << eval;
+    QTest::newRow("process -h after other options")
+        << QStringList{"process", "in.csv", "--set", "x=1", "-h"} << QStringList{"footpath-cli process INPUT"} << eval;
+    QTest::newRow("eval") << QStringList{"eval", "--help"} << QStringList{eval, "--closed-loop", "--jobs N"}
+                          << QStringLiteral("footpath-cli record");
+    QTest::newRow("compare") << QStringList{"compare", "--help"}
+                             << QStringList{"footpath-cli compare INPUT", "--sets", "zupt"} << eval;
+    QTest::newRow("info") << QStringList{"info", "--help"} << QStringList{"footpath-cli info INPUT", "--columns"}
+                          << eval;
+    QTest::newRow("report") << QStringList{"report", "--help"}
+                            << QStringList{"footpath-cli report INPUT --pdf", "--page-size"} << eval;
+    QTest::newRow("record without its required options")
+        << QStringList{"record", "--help"} << QStringList{"footpath-cli record --port PATH", "--duration"} << eval;
+    QTest::newRow("help COMMAND") << QStringList{"help", "info"} << QStringList{"footpath-cli info INPUT"} << eval;
+}
+
+void TestCli::commandHelp_printsThatCommandsOptions()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QStringList, expected);
+    QFETCH(QString, absent);
+    const Run run = runCli(args);
+    VERIFY_EXIT(run, 0);
+    QVERIFY2(run.out.startsWith(QStringLiteral("Usage:")), qPrintable(run.out));
+    for (const QString& text : expected)
+        QVERIFY2(run.out.contains(text), qPrintable(text));
+    QVERIFY2(!run.out.contains(absent), qPrintable(absent));
+    QVERIFY(run.out.contains(QStringLiteral("Exit codes")));
+    QVERIFY2(run.err.isEmpty(), qPrintable(run.err));
+}
+
+void TestCli::mistypedNames_suggestTheNearest_data()
+{
+    QTest::addColumn<QStringList>("args");  // {walk}: the valid walk
+    QTest::addColumn<QString>("expected");
+    QTest::addColumn<QString>("notSuggested");
+    QTest::newRow("option") << QStringList{"eval", "{walk}", "--closed-lop"}
+                            << QStringLiteral("unknown option '--closed-lop'; did you mean --closed-loop?")
+                            << QStringLiteral("--json");
+    QTest::newRow("command") << QStringList{"proces", "{walk}"}
+                             << QStringLiteral("unknown command 'proces'; did you mean process?")
+                             << QStringLiteral("record?");
+    QTest::newRow("--set name") << QStringList{"process", "{walk}", "--set", "gyr_max=1"}
+                                << QStringLiteral("unknown parameter 'gyr_max'; did you mean gyr_max_radps")
+                                << QStringLiteral("acc_std_max");
+    QTest::newRow("--set name, a typo") << QStringList{"process", "{walk}", "--set", "acc_std_max_mps=0.5"}
+                                        << QStringLiteral("did you mean acc_std_max_mps2")
+                                        << QStringLiteral("gyr_max_radps");
+    QTest::newRow("nothing near: no guess") << QStringList{"process", "{walk}", "--set", "zzzzzzzzzzzz=1"}
+                                            << QStringLiteral("unknown parameter 'zzzzzzzzzzzz'")
+                                            << QStringLiteral("did you mean");
+}
+
+void TestCli::mistypedNames_suggestTheNearest()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, expected);
+    QFETCH(QString, notSuggested);
+    for (QString& arg : args)
+        arg = substitute(arg, dir_.path(), walkCsv_);
+    const Run run = runCli(args);
+    VERIFY_EXIT(run, kExitBadInput);
+    QVERIFY2(run.err.contains(expected), qPrintable(run.err));
+    const QString firstLine = run.err.section(QLatin1Char('\n'), 0, 0);
+    QVERIFY2(!firstLine.contains(notSuggested), qPrintable(firstLine));
+}
+
+void TestCli::directoryOrProse_isRefusedSayingWhat_data()
+{
+    QTest::addColumn<QStringList>("args");  // {dir}: a folder holding a README.md of prose
+    QTest::addColumn<QString>("expected");
+    const QString directory = QStringLiteral("{dir}: is a directory, not a recording file");
+    QTest::newRow("process") << QStringList{"process", "{dir}"} << directory;
+    QTest::newRow("info") << QStringList{"info", "{dir}"} << directory;
+    QTest::newRow("report") << QStringList{"report", "{dir}", "--pdf", "{dir}/out.pdf"} << directory;
+    QTest::newRow("eval of an empty folder") << QStringList{"eval", "{dir}/empty"}
+                                             << QStringLiteral("{dir}/empty holds no recording");
+    QTest::newRow("compare of an empty folder") << QStringList{"compare", "{dir}/empty"}
+                                                << QStringLiteral("{dir}/empty holds no recording");
+    QTest::newRow("prose") << QStringList{"info", "{dir}/README.md"}
+                           << QStringLiteral("{dir}/README.md: does not look like sensor data: no numeric rows");
+}
+
+void TestCli::directoryOrProse_isRefusedSayingWhat()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, expected);
+    QTemporaryDir work;
+    QVERIFY(QDir(work.path()).mkdir(QStringLiteral("empty")));
+    QVERIFY(writeFile(QDir(work.path()).filePath(QStringLiteral("README.md")),
+                      "# Walks\n\nThese walks were recorded on the 2nd and 3rd floor.\nOpen them in Footpath.\n"));
+    for (QString& arg : args)
+        arg = substitute(arg, work.path(), walkCsv_);
+    const Run run = runCli(args);
+    VERIFY_EXIT(run, kExitBadInput);
+    QVERIFY2(run.err.contains(substitute(expected, work.path(), walkCsv_)), qPrintable(run.err));
+    QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
+}
+
+void TestCli::writeFailure_namesTheFileAndTheReason_data()
+{
+    QTest::addColumn<QString>("option");
+    QTest::addColumn<QString>("target");  // {dir}: a fresh folder
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("missing folder") << "--trajectory" << "{dir}/absent/out.csv" << "No such file or directory";
+    QTest::newRow("a folder as the file") << "--summary" << "{dir}" << "Is a directory";
+}
+
+void TestCli::writeFailure_namesTheFileAndTheReason()
+{
+    QFETCH(QString, option);
+    QFETCH(QString, target);
+    QFETCH(QString, reason);
+    QTemporaryDir work;
+    target = substitute(target, work.path(), walkCsv_);
+    const Run run = runCli({QStringLiteral("process"), walkCsv_, option, target});
+    QVERIFY2(run.finished && run.exitCode != 0, run.describe().constData());
+    QVERIFY2(run.err.contains(target + QStringLiteral(": ")), qPrintable(run.err));
+    QVERIFY2(run.err.contains(reason), qPrintable(run.err));
+}
+
+void TestCli::badRows_areSkippedWithAWarningOrRefused()
+{
+    QTemporaryDir work;
+    QStringList lines = readLines(walkCsv_);
+    QVERIFY(lines.size() > 500);
+    // One bad cell in the middle: that row is skipped and named, the rest of the walk is read.
+    QStringList oneBad = lines;
+    QStringList cells = oneBad[300].split(QLatin1Char(','));
+    cells[4] = QStringLiteral("abc");
+    oneBad[300] = cells.join(QLatin1Char(','));
+    const QString oneBadPath = work.filePath(QStringLiteral("one-bad.csv"));
+    QVERIFY(writeFile(oneBadPath, oneBad.join(QLatin1Char('\n')).toUtf8() + "\n"));
+    const Run info = runCli({QStringLiteral("info"), oneBadPath, QStringLiteral("--json")});
+    VERIFY_EXIT(info, 0);
+    const QJsonObject object = QJsonDocument::fromJson(info.out.toUtf8()).object();
+    QCOMPARE(object.value(QStringLiteral("samples")).toInteger(), qint64(sampleCount_ - 1));
+    QVERIFY2(info.out.contains(QStringLiteral("line 301, column 5 (expected a number in column 'gyr_x', got 'abc')")),
+             qPrintable(info.out));
+    const Run process = runCli({QStringLiteral("process"), oneBadPath});
+    VERIFY_EXIT(process, 0);
+    QVERIFY2(process.err.contains(QStringLiteral("line 301, column 5")), qPrintable(process.err));
+
+    // Most rows damaged: refused with exit 2, naming the first bad place and the count.
+    QStringList mostBad = lines;
+    for (int i = 1; i < mostBad.size(); ++i)
+        if (i % 4 != 0)
+            mostBad[i].replace(0, 1, QStringLiteral("x"));
+    const QString mostBadPath = work.filePath(QStringLiteral("most-bad.csv"));
+    QVERIFY(writeFile(mostBadPath, mostBad.join(QLatin1Char('\n')).toUtf8() + "\n"));
+    const Run refused = runCli({QStringLiteral("info"), mostBadPath});
+    VERIFY_EXIT(refused, kExitBadInput);
+    QVERIFY2(refused.err.contains(mostBadPath + QStringLiteral(":2:1: expected a number in column 'time_s'")),
+             qPrintable(refused.err));
+    QVERIFY2(refused.err.contains(QStringLiteral("data rows could not be read")), qPrintable(refused.err));
+
+    // One good row after the header and the rest damaged: never a recording of one sample.
+    QStringList oneGood = lines.mid(0, 2);
+    oneGood << QStringLiteral("garbage") << QStringLiteral("more garbage");
+    const QString oneGoodPath = work.filePath(QStringLiteral("one-good.csv"));
+    QVERIFY(writeFile(oneGoodPath, oneGood.join(QLatin1Char('\n')).toUtf8() + "\n"));
+    VERIFY_EXIT(runCli({QStringLiteral("info"), oneGoodPath}), kExitBadInput);
+}
+
+void TestCli::counts_printAsIntegers()
+{
+    const Run text = runCli({QStringLiteral("eval"), walkCsv_, QStringLiteral("--length"), QStringLiteral("10")});
+    VERIFY_EXIT(text, 0);
+    const QRegularExpression stepsLine(QStringLiteral("^steps +(\\S+)$"), QRegularExpression::MultilineOption);
+    const QRegularExpressionMatch steps = stepsLine.match(text.out);
+    QVERIFY2(steps.hasMatch(), qPrintable(text.out));
+    QVERIFY2(!steps.captured(1).contains(QLatin1Char('.')), qPrintable(steps.captured(0)));
+    const QRegularExpression warningsLine(QStringLiteral("^plausibility warnings +(\\S+)$"),
+                                          QRegularExpression::MultilineOption);
+    QVERIFY2(!warningsLine.match(text.out).captured(1).contains(QLatin1Char('.')), qPrintable(text.out));
+
+    const Run json = runCli({QStringLiteral("eval"), walkCsv_, QStringLiteral("--json")});
+    VERIFY_EXIT(json, 0);
+    QVERIFY2(QRegularExpression(QStringLiteral("\"steps\": ?\\d+[,}]")).match(json.out).hasMatch(), qPrintable(json.out));
+    const Run process = runCli({QStringLiteral("process"), walkCsv_});
+    VERIFY_EXIT(process, 0);
+    QVERIFY2(QRegularExpression(QStringLiteral(": \\d+ samples, [0-9.]+ s, \\d+ steps,")).match(process.out).hasMatch(),
+             qPrintable(process.out));
+}
+
+void TestCli::screenshotOfAHeaderlessFile_finishes()
+{
+    // The workspace beside footpath-cli: a screenshot run needs no user even when the file needs
+    // import settings (a confident guess is taken) and ends with exit 2 when it cannot guess.
+    const QString gui = QFileInfo(QString::fromUtf8(FOOTPATH_CLI)).dir().filePath(QStringLiteral("footpath"));
+    if (!QFileInfo(gui).isExecutable())
+        QSKIP("the footpath binary is not built");
+    QTemporaryDir work;
+    QStringList lines = readLines(walkCsv_).mid(1);  // headerless, time in s: read as time_ms, so no
+    for (QString& line : lines) {                     // rate of an IMU: make it milliseconds
+        QStringList cells = line.split(QLatin1Char(','));
+        cells[0] = QString::number(std::lround(cells[0].toDouble() * 1000.0));
+        line = cells.join(QLatin1Char(','));
+    }
+    const QString headerless = work.filePath(QStringLiteral("headerless.txt"));
+    QVERIFY(writeFile(headerless, lines.join(QLatin1Char('\n')).toUtf8() + "\n"));
+    const QString prose = work.filePath(QStringLiteral("notes.txt"));
+    QVERIFY(writeFile(prose, "A walk around the block.\nNothing else to say.\n"));
+    const auto screenshot = [&](const QString& file, const QString& png) {
+        QProcess process;
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+        environment.insert(QStringLiteral("XDG_CONFIG_HOME"), work.filePath(QStringLiteral("config")));
+        environment.insert(QStringLiteral("FOOTPATH_IMPORT_PRESETS"), work.filePath(QStringLiteral("presets")));
+        process.setProcessEnvironment(environment);
+        process.start(gui, {file, QStringLiteral("--screenshot"), png});
+        const bool finished = process.waitForFinished(60000);
+        if (!finished)
+            process.kill();
+        return std::make_pair(finished ? process.exitCode() : -1, QString::fromLocal8Bit(process.readAllStandardError()));
+    };
+    const QString png = work.filePath(QStringLiteral("shot.png"));
+    const auto [guessed, guessedErr] = screenshot(headerless, png);
+    QVERIFY2(guessed == 0, qPrintable(guessedErr));
+    QVERIFY(QFileInfo(png).size() > 0);
+    const auto [refused, refusedErr] = screenshot(prose, work.filePath(QStringLiteral("prose.png")));
+    QVERIFY2(refused == kExitBadInput, qPrintable(refusedErr));
+    QVERIFY2(refusedErr.contains(QStringLiteral("does not look like sensor data")), qPrintable(refusedErr));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

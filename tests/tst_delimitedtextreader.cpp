@@ -333,17 +333,16 @@ void TestDelimitedTextReader::headerlessFile_columnMapScalesTimeAndSkipsColumns(
 
 void TestDelimitedTextReader::headerlessFile_lineNumbersCountBlankLines()
 {
-    // Two blank lines, a good row on line 3, a bad cell on line 5 (after another blank line): the
-    // good row is kept and the warning names line 5.
+    // Two blank lines, a good row on line 3, a bad cell on line 5 (after another blank line): with
+    // half the rows damaged the file is refused, and the error names line 5.
     const QByteArray text = "\n\n0,1,2,3,4,5,6\n\n10,1,2,oops,4,5,6\n";
     const ImportResult result = parse(
         text, QStringList{"time_ms", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"}, {});
-    QVERIFY(result.ok());
-    QVERIFY(result.info.truncated);
-    QCOMPARE(result.recording.samples.size(), std::size_t(1));
-    QCOMPARE(result.recording.warnings.size(), std::size_t(1));
-    QVERIFY(QString::fromStdString(result.recording.warnings[0])
-                .contains(QStringLiteral("line 5, column 4 (expected a number in column 'acc_z', got 'oops')")));
+    QVERIFY(!result.ok());
+    QCOMPARE(result.error->line, std::size_t(5));
+    QCOMPARE(result.error->column, std::size_t(4));
+    QVERIFY(QString::fromStdString(result.error->message)
+                .contains(QStringLiteral("expected a number in column 'acc_z', got 'oops'; 1 of 2 data rows")));
 }
 
 void TestDelimitedTextReader::errors_reportMessageLineAndColumn_data()
@@ -481,16 +480,13 @@ void TestDelimitedTextReader::readFromFile_sourceAndErrorsCarryThePath()
     VERIFY_VECTOR(read.recording.samples[1].acc_mps2, 7.0, 8.0, 9.0);
     VERIFY_VECTOR(read.recording.samples[1].gyr_radps, 10.0, 11.0, 12.0);
 
-    // Damage after a good row: the row before it is kept, and the warning says where it stopped.
+    // Damage in one of two rows: too much to trust the file, so it is refused naming the place.
     const ImportResult damaged = footpath::importRecording(bad.toStdString());
-    QVERIFY(damaged.ok());
-    QVERIFY(damaged.info.truncated);
-    QCOMPARE(damaged.recording.samples.size(), std::size_t(1));
-    bool warned = false;
-    for (const std::string& warning : damaged.recording.warnings)
-        warned = warned || QString::fromStdString(warning).contains(
-                               QStringLiteral("line 3, column 3 (expected a number in column 'acc_y', got 'x8')"));
-    QVERIFY(warned);
+    QVERIFY(!damaged.ok());
+    QCOMPARE(damaged.error->file, bad.toStdString());
+    QCOMPARE(damaged.error->line, std::size_t(3));
+    QVERIFY(QString::fromStdString(damaged.error->text())
+                .contains(QStringLiteral(":3:3: expected a number in column 'acc_y', got 'x8'")));
 }
 
 void TestDelimitedTextReader::readErrorText_formatsFileLineColumnMessage_data()

@@ -5,6 +5,8 @@
 #include "io/ColumnNames.h"
 #include "io/Import.h"
 #include "io/ImportPresets.h"
+#include "io/NearestNames.h"
+#include "io/ParameterIo.h"
 #include "io/ReferenceSidecar.h"
 #include "nav/Pipeline.h"
 
@@ -406,6 +408,53 @@ private slots:
         const ImportResult read = importOrFail(path);
         QVERIFY(read.recording.hasPressure());
         QCOMPARE(read.recording.samples[0].pressure_pa, 101325.0);
+    }
+
+    void headerlessGuess_isConfidentOnlyWhenTheDataAgree()
+    {
+        // 2 s of a foot at rest at 100 Hz: time in ms, acc in m/s^2, gyr, then pressure.
+        QByteArray usual;
+        QByteArray swapped;  // gyroscope first: read as the usual layout, |a| is no gravity
+        for (int k = 0; k < 200; ++k) {
+            const QByteArray time = QByteArray::number(1000 + 10 * k);
+            usual += time + ",0.3,-0.2,9.79,0.01,-0.02,0.005,101325\n";
+            swapped += time + ",0.01,-0.02,0.005,0.3,-0.2,9.79,101325\n";
+        }
+        QTemporaryDir dir;
+        const ColumnMapGuess good = guessColumnMap(writeFile(dir, "usual.txt", usual).toStdString(), {});
+        QCOMPARE(good.columnMap, (std::vector<std::string>{"time_ms", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y",
+                                                           "gyr_z", "pressure_pa"}));
+        QVERIFY2(good.confident, good.doubt.c_str());
+        const ColumnMapGuess bad = guessColumnMap(writeFile(dir, "swapped.txt", swapped).toStdString(), {});
+        QVERIFY(!bad.confident);
+        QVERIFY2(QString::fromStdString(bad.doubt).contains("not gravity"), bad.doubt.c_str());
+        const ColumnMapGuess prose = guessColumnMap(writeFile(dir, "prose.txt", "Hello there.\nNo data.\n").toStdString(), {});
+        QVERIFY(!prose.confident);
+        QVERIFY2(QString::fromStdString(prose.doubt).contains("does not look like sensor data"), prose.doubt.c_str());
+    }
+
+    void nearestNames_suggestCloseNamesOnly()
+    {
+        const std::vector<std::string> names = {"acc_std_max_mps2", "acc_min_mps2", "gyr_max_radps", "window_s"};
+        QCOMPARE(nearestNames("gyr_max", names), std::vector<std::string>{"gyr_max_radps"});
+        QCOMPARE(nearestNames("acc_std_max_mps", names).front(), std::string("acc_std_max_mps2"));
+        QCOMPARE(nearestNames("windwo_s", names), std::vector<std::string>{"window_s"});  // a swap is one edit
+        QVERIFY(nearestNames("zzzzzzzz", names).empty());
+        QVERIFY(nearestNames("acc", names, 3).size() <= 3);
+        QCOMPARE(editDistance("kitten", "sitting"), std::size_t(3));
+        QCOMPARE(didYouMean("--closed-lop", {"--closed-loop", "--json"}), std::string("; did you mean --closed-loop?"));
+        QVERIFY(didYouMean("--xyz", {"--closed-loop", "--json"}).empty());
+    }
+
+    void unknownPresetKey_suggestsTheNearestParameter()
+    {
+        Parameters params;
+        const std::string problem = parametersFromJson(
+            R"({"format": "footpath-parameters", "version": 1, "parameters": {"gyr_max_radp": 1.0}})", "p.json", params);
+        QVERIFY2(QString::fromStdString(problem).contains("unknown parameter 'gyr_max_radp'; did you mean gyr_max_radps"),
+                 problem.c_str());
+        QVERIFY2(QString::fromStdString(setParameterByName(params, "gyr_max", "1")).contains("did you mean gyr_max_radps"),
+                 "setParameterByName");
     }
 };
 

@@ -10,11 +10,14 @@
 #include "ReconnectOffer.h"
 #include "SignalPlots.h"
 #include "StanceFlagsPlot.h"
+#include "TrajectoryView2D.h"
 #include "io/Import.h"
 #include "nav/Pipeline.h"
 #include "nav/StreamingEstimator.h"
 
 #include <QFileInfo>
+#include <QLabel>
+#include <QStandardPaths>
 #include <qcustomplot.h>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -35,6 +38,10 @@ private slots:
     void receivesRecordsAndEstimatesCausally();
     void recordsFromFirstSample();
     void offersReconnectWhenPortVanishes();
+    void viewsSayNotConnected();
+    void badPortSaysNotConnectedAndShowsTheError();
+    void defaultRecordingNameHasDeviceAndTime();
+    void unrecordedSessionCanBeSavedAfterDisconnect();
 };
 
 namespace {
@@ -111,6 +118,7 @@ Recording asRecording(const std::vector<LiveSample>& received)
 
 void TestLivePanel::initTestCase()
 {
+    QStandardPaths::setTestModeEnabled(true);  // the remembered recording folder stays out of the user's settings
     if (!QFileInfo::exists(QStringLiteral("/dev/ptmx")))
         QSKIP("no pseudo-terminals on this system (/dev/ptmx)");
 }
@@ -195,7 +203,9 @@ void TestLivePanel::receivesRecordsAndEstimatesCausally()
     checkRecordingIsReceivedTail(mtb, received);
 
     // At the end the live estimate is the offline analysis of what was received.
-    const PipelineOutput offline = runPipeline(asRecording(received), Parameters{});
+    Parameters filterOnly;  // live runs the filter: the offline smoother's backward pass needs the whole walk
+    filterOnly.estimator = static_cast<int>(EstimatorKind::Ekf);
+    const PipelineOutput offline = runPipeline(asRecording(received), filterOnly);
     QVERIFY(offline.error.empty());
     const Result& live = estimator.result();
     QCOMPARE(live.time_s.size(), received.size());
@@ -276,6 +286,121 @@ void TestLivePanel::offersReconnectWhenPortVanishes()
     QCOMPARE(importRecording(continued.toStdString()).recording.samples.size(), panel.sampleCount());
     checkRecordingIsReceivedTail(continued, panel.receivedSamples());
     QVERIFY(offer->isVisible());
+}
+
+void TestLivePanel::viewsSayNotConnected()
+{
+    LivePanel panel;
+    panel.resize(900, 1200);
+    panel.show();
+    QVERIFY(panel.views()->notice().startsWith(QStringLiteral("Not connected: choose a port and Connect")));
+    for (QWidget* view : {static_cast<QWidget*>(panel.views()->trajectory2D()), static_cast<QWidget*>(panel.views()->signalPlots())}) {
+        QLabel* notice = panel.views()->noticeLabel(view);
+        QVERIFY(notice);
+        QVERIFY(notice->isVisible());
+        QCOMPARE(notice->text(), panel.views()->notice());
+        // Centred in the view, inside it.
+        QVERIFY(view->rect().contains(notice->geometry()));
+        QVERIFY(std::abs(notice->geometry().center().x() - view->rect().center().x()) <= 2);
+    }
+    QCOMPARE(panel.statusText(), QStringLiteral("Not connected"));
+    QVERIFY(panel.errorText().isEmpty());
+    // For looking at it: FOOTPATH_SCREENSHOT_DIR=/tmp/shots tst_livepanel viewsSayNotConnected
+    if (const QString shots = qEnvironmentVariable("FOOTPATH_SCREENSHOT_DIR"); !shots.isEmpty())
+        for (const QSize size : {QSize(1920, 1080), QSize(1280, 800)}) {
+            panel.resize(size);
+            QVERIFY(panel.grab().save(QDir(shots).filePath(QStringLiteral("live-not-connected-%1.png").arg(size.width()))));
+        }
+}
+
+void TestLivePanel::badPortSaysNotConnectedAndShowsTheError()
+{
+    QTemporaryDir dir;
+    LivePanel panel;
+    panel.resize(600, 1000);
+    panel.show();
+    QSignalSpy ended(panel.session(), &DeviceSession::ended);
+    panel.connectTo(dir.filePath(QStringLiteral("ttyNoSuchPort")));
+    QTRY_VERIFY_WITH_TIMEOUT(ended.count() == 1, 15000);
+    QCOMPARE(ended.at(0).at(0).value<SessionEnd>(), SessionEnd::Failed);
+    const QString why = ended.at(0).at(1).toString();
+    QVERIFY(!why.isEmpty());
+    // The state line says so; the reason is in a visible banner, and in the empty views.
+    QCOMPARE(panel.statusText(), QStringLiteral("Not connected"));
+    QCOMPARE(panel.errorText(), why);
+    auto* banner = panel.findChild<QLabel*>(QStringLiteral("liveError"));
+    QVERIFY(banner && banner->isVisible());
+    QVERIFY(banner->height() >= banner->fontMetrics().height());
+    QVERIFY(panel.views()->notice().startsWith(QStringLiteral("Not connected")));
+    QVERIFY(panel.views()->notice().contains(why));
+    QVERIFY(!panel.findChild<QPushButton*>(QStringLiteral("liveSave"))->isEnabled());  // nothing to save
+}
+
+void TestLivePanel::defaultRecordingNameHasDeviceAndTime()
+{
+    QCOMPARE(defaultRecordingName(QStringLiteral("037003F1"), QDateTime(QDate(2026, 11, 25), QTime(14, 32, 10))),
+             QStringLiteral("MTi-037003F1-2026-11-25-1432.mtb"));
+    QCOMPARE(defaultRecordingName(QString(), QDateTime(QDate(2026, 1, 2), QTime(3, 4))), QStringLiteral("MTi-2026-01-02-0304.mtb"));
+    LivePanel panel;
+    const QFileInfo suggested(panel.suggestedRecordingPath());
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    QCOMPARE(suggested.absolutePath(), QFileInfo(documents.isEmpty() ? QDir::homePath() : documents).absoluteFilePath());
+    QVERIFY(suggested.fileName().startsWith(QStringLiteral("MTi-") + QDate::currentDate().toString(QStringLiteral("yyyy-MM-dd"))));
+}
+
+void TestLivePanel::unrecordedSessionCanBeSavedAfterDisconnect()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString link = dir.filePath(QStringLiteral("ttyMTi3"));
+    Emulator emulator;
+    const QString problem = emulator.start(link, QString(), kFaults + QStringList{QStringLiteral("--once")});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+
+    LivePanel panel;
+    panel.resize(600, 1200);
+    panel.show();
+    QSignalSpy identified(panel.session(), &DeviceSession::deviceIdentified);
+    QSignalSpy ended(panel.session(), &DeviceSession::ended);
+    QSignalSpy finished(&panel, &LivePanel::recordingFinished);
+    panel.connectTo(link);
+    QTRY_VERIFY_WITH_TIMEOUT(identified.count() == 1, 15000);
+    // Once the device is known, its id names the proposed recording.
+    const QString deviceId = panel.session()->deviceInfo().deviceIdText();
+    QVERIFY(QFileInfo(panel.suggestedRecordingPath()).fileName().startsWith(QStringLiteral("MTi-%1-").arg(deviceId)));
+    QTRY_VERIFY_WITH_TIMEOUT(panel.sampleCount() >= 800, 30000);
+    QVERIFY(panel.views()->notice().isEmpty());  // the views show data now
+    QTRY_VERIFY_WITH_TIMEOUT(panel.findChild<QLabel*>(QStringLiteral("liveDuration"))->text() != QStringLiteral("-"), 5000);
+    panel.disconnectDevice();
+    QTRY_VERIFY_WITH_TIMEOUT(ended.count() == 1, 15000);
+    emulator.stop();
+
+    // The live summary is this session's.
+    const Summary& summary = panel.estimator()->result().summary;
+    QCOMPARE(panel.findChild<QLabel*>(QStringLiteral("liveSteps"))->text(), QString::number(summary.steps));
+    QVERIFY(panel.findChild<QLabel*>(QStringLiteral("liveEndToStart"))->text().endsWith(QStringLiteral(" m")));
+    // ... and in a line over the live path, where the user looks while walking.
+    QVERIFY2(panel.views()->summaryLine().startsWith(QStringLiteral("Live: %1 steps, ").arg(summary.steps)),
+             qPrintable(panel.views()->summaryLine()));
+
+    QVERIFY(panel.hasUnsavedSamples());
+    QVERIFY(panel.findChild<QPushButton*>(QStringLiteral("liveSave"))->isEnabled());
+    const QString csv = dir.filePath(QStringLiteral("kept.csv"));
+    QCOMPARE(panel.saveSamplesTo(csv), QString());
+    QVERIFY(!panel.hasUnsavedSamples());
+    QCOMPARE(finished.count(), 1);  // the workspace opens it
+    QCOMPARE(finished.at(0).at(0).toString(), csv);
+    const ImportResult saved = importRecording(csv.toStdString());
+    QVERIFY2(saved.ok(), saved.ok() ? "" : saved.error->message.c_str());
+    const std::vector<LiveSample>& received = panel.receivedSamples();
+    QCOMPARE(saved.recording.samples.size(), received.size());
+    for (std::size_t k = 0; k < received.size(); ++k) {
+        QVERIFY(sameValues(saved.recording.samples[k], received[k].imu));
+        QCOMPARE(saved.recording.samples[k].time_s, received[k].imu.time_s);
+    }
+    // A bad destination says so and keeps the samples.
+    QVERIFY(!panel.saveSamplesTo(dir.filePath(QStringLiteral("no/such/folder/x.csv"))).isEmpty());
+    QCOMPARE(panel.receivedSamples().size(), received.size());
 }
 
 QTEST_MAIN(TestLivePanel)

@@ -1,10 +1,12 @@
 // The workspace as a user drives it: open a file, tune a slider, toggle ZARU, undo, switch language.
 #include "AnalysisSession.h"
 #include "AppSettings.h"
+#include "HelpDialog.h"
 #include "LivePanel.h"
 #include "LiveViews.h"
 #include "MainWindow.h"
 #include "ParameterPanel.h"
+#include "RunHistory.h"
 #include "SignalPlots.h"
 #include "StanceFlagsPlot.h"
 #include "SummaryPanel.h"
@@ -14,6 +16,12 @@
 #include "sim/WalkSimulator.h"
 
 #include <QCheckBox>
+#include <QDockWidget>
+#include <QPushButton>
+#include <QScreen>
+#include <QStatusBar>
+#include <QTableWidget>
+#include <QTextBrowser>
 #include <QComboBox>
 #include <QGroupBox>
 #include <QLabel>
@@ -249,6 +257,129 @@ private slots:
             QVERIFY(status->styleSheet().isEmpty());
             QVERIFY(!summary->findChild<QGroupBox*>(QStringLiteral("warnings"))->isVisibleTo(summary));
         }
+    }
+
+    void aChangeLeavesAGhostAndItsBeforeAndAfter()
+    {
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));
+        MainWindow window(settings);
+        window.session()->setParameters(paperDetector(), QStringLiteral("C1/C2/C3"));
+        QSignalSpy shown(&window, &MainWindow::resultShown);
+        window.openRecording(path_);
+        QVERIFY(shown.wait(30000));
+        const std::shared_ptr<const Result> before = window.session()->result();
+        auto* view2D = window.findChild<TrajectoryView2D*>(QStringLiteral("trajectory2D"));
+        auto* view3D = window.findChild<TrajectoryView3D*>(QStringLiteral("trajectory3D"));
+        auto* change = window.findChild<QGroupBox*>(QStringLiteral("lastChange"));
+        QVERIFY(view3D->ghostPath().empty());  // nothing to compare with yet
+        QVERIFY(!change->isVisibleTo(window.findChild<SummaryPanel*>()));
+
+        window.session()->setParameter(QStringLiteral("acc_std_max_mps2"), 0.2);
+        QTRY_VERIFY_WITH_TIMEOUT(window.session()->result() != before && !window.session()->isEstimating(), 30000);
+        const std::shared_ptr<const Result> after = window.session()->result();
+        QCOMPARE(view3D->ghostPath().size(), before->position_m.size());
+        QVERIFY(view3D->ghostPath().back().isApprox(before->position_m.back()));
+        QVERIFY(view2D->ghostCurve());
+        QCOMPARE(view2D->ghostCurve()->dataCount(), static_cast<int>(before->position_m.size()));
+        QVERIFY(change->isVisibleTo(window.findChild<SummaryPanel*>()));
+        auto* path = window.findChild<QLabel*>(QStringLiteral("change_pathLength"));
+        QVERIFY2(path->text().contains(QLocale().toString(before->summary.pathLength_m, 'f', 2))
+                     && path->text().contains(QLocale().toString(after->summary.pathLength_m, 'f', 2)),
+                 qPrintable(path->text()));
+        auto* endToStart = window.findChild<QLabel*>(QStringLiteral("change_endToStart"));
+        const Judgement judgement = judgeLowerIsBetter(before->summary.endToStart_m, after->summary.endToStart_m);
+        QVERIFY(judgement != Judgement::Neither);  // a stricter C2 moves the end
+        const QColor expected = judgement == Judgement::Better ? QColor(27, 127, 59) : QColor(176, 0, 32);
+        QCOMPARE(endToStart->palette().color(QPalette::WindowText), expected);
+        QCOMPARE(endToStart->property("judgement").toString(),
+                 judgement == Judgement::Better ? QStringLiteral("better") : QStringLiteral("worse"));
+        auto* steps = window.findChild<QLabel*>(QStringLiteral("change_steps"));
+        QCOMPARE(steps->text(), QStringLiteral("%1 \u2192 %2").arg(before->summary.steps).arg(after->summary.steps));
+        QVERIFY(!window.findChild<QLabel*>(QStringLiteral("change_armse2d"))->isVisibleTo(change));  // no reference
+
+        // A new recording starts afresh: no ghost of another walk.
+        window.openRecording(path_);
+        QTRY_VERIFY_WITH_TIMEOUT(window.runHistory()->rowCount() == 1 && !window.session()->isEstimating(), 30000);
+        QVERIFY(view3D->ghostPath().empty());
+        QVERIFY(!change->isVisibleTo(window.findChild<SummaryPanel*>()));
+    }
+
+    void goingBackInTheHistoryRestoresParametersAndResult()
+    {
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));
+        MainWindow window(settings);
+        window.session()->setParameters(paperDetector(), QStringLiteral("C1/C2/C3"));
+        QSignalSpy shown(&window, &MainWindow::resultShown);
+        window.openRecording(path_);
+        QVERIFY(shown.wait(30000));
+        const std::shared_ptr<const Result> first = window.session()->result();
+        const Parameters firstParameters = window.session()->parameters();
+        window.session()->setParameter(QStringLiteral("acc_std_max_mps2"), 0.2);
+        QTRY_VERIFY_WITH_TIMEOUT(window.session()->result() != first && !window.session()->isEstimating(), 30000);
+        window.session()->setParameter(QStringLiteral("gyr_max_radps"), 2.0);
+        QTRY_VERIFY_WITH_TIMEOUT(window.runHistory()->rowCount() == 3 && !window.session()->isEstimating(), 30000);
+        const Parameters lastParameters = window.session()->parameters();
+
+        auto* panel = window.findChild<RunHistoryPanel*>();
+        QVERIFY(panel);
+        panel->table()->selectRow(0);
+        window.findChild<QPushButton*>(QStringLiteral("goBackToRun"))->click();
+        QVERIFY(window.session()->parameters() == firstParameters);
+        QTRY_VERIFY_WITH_TIMEOUT(window.runHistory()->currentRow() == 0 && !window.session()->isEstimating(), 30000);
+        QCOMPARE(window.runHistory()->rowCount(), 3);  // the run again, not a new one
+        QCOMPARE(window.session()->result()->summary.pathLength_m, first->summary.pathLength_m);
+        QCOMPARE(window.session()->result()->position_m.back(), first->position_m.back());
+        QCOMPARE(window.runHistory()->previous()->number, 3);  // the ghost is where the user came from
+        // Going back is one undo step like any change.
+        window.session()->undoStack()->undo();
+        QVERIFY(window.session()->parameters() == lastParameters);
+    }
+
+    void selectingAStepMovesTheTimeCursor()
+    {
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));
+        MainWindow window(settings);
+        QSignalSpy shown(&window, &MainWindow::resultShown);
+        window.openRecording(path_);
+        QVERIFY(shown.wait(30000));
+        const std::shared_ptr<const Result> result = window.session()->result();
+        QVERIFY(result->steps.size() > 5);
+        QTableView* table = window.findChild<SummaryPanel*>()->stepTable();
+        QCOMPARE(table->model()->index(0, 0).data().toString(), QStringLiteral("1"));  // steps count from 1
+        table->setCurrentIndex(table->model()->index(3, 2));
+        QCOMPARE(window.session()->timeCursor(), result->steps[3].stanceStart_s);
+        QTest::keyClick(table, Qt::Key_Down);
+        QCOMPARE(window.session()->timeCursor(), result->steps[4].stanceStart_s);
+        const auto* flags = window.findChild<StanceFlagsPlot*>(QStringLiteral("stanceFlags"));
+        QCOMPARE(flags->timeCursor(), result->steps[4].stanceStart_s);
+        QVERIFY(flags->timeRange().contains(result->steps[4].stanceStart_s));
+    }
+
+    void theHelpMenuOpensTheGuideAndTheShortcuts()
+    {
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));
+        MainWindow window(settings);
+        auto* guideAction = window.findChild<QAction*>(QStringLiteral("userGuide"));
+        QVERIFY(guideAction);
+        QCOMPARE(guideAction->shortcut(), QKeySequence(QKeySequence::HelpContents));
+        guideAction->trigger();
+        auto* dialog = window.findChild<HelpDialog*>();
+        QVERIFY(dialog && dialog->isVisible());
+        const QString guide = dialog->guide()->toPlainText();
+        for (const char* topic : {"Opening a recording", "What the views show", "Tuning", "Live input"})
+            QVERIFY2(guide.contains(QLatin1String(topic)), topic);
+        window.findChild<QAction*>(QStringLiteral("keyboardShortcuts"))->trigger();
+        QCOMPARE(window.findChildren<HelpDialog*>().size(), 1);
+        QTableWidget* keys = dialog->shortcuts();
+        QVERIFY(keys->isVisible());
+        const QString open = QKeySequence(QKeySequence::Open).toString(QKeySequence::NativeText);
+        const QString compare = QKeySequence(Qt::CTRL | Qt::Key_M).toString(QKeySequence::NativeText);
+        QStringList listed;
+        for (int row = 0; row < keys->rowCount(); ++row)
+            listed << keys->item(row, 0)->text() + QLatin1Char('=') + keys->item(row, 1)->text();
+        QVERIFY2(listed.filter(open + QStringLiteral("=File > Open recording")).size() == 1, qPrintable(listed.join('\n')));
+        QVERIFY2(listed.filter(compare + QStringLiteral("=Analysis > Compare methods")).size() == 1,
+                 qPrintable(listed.join('\n')));
     }
 
     void germanTranslationIsUsed()

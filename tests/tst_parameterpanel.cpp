@@ -129,6 +129,66 @@ private slots:
         QVERIFY(choices >= 2);  // detector, filter_states
     }
 
+    void everyFieldShowsItsLabelAndUnitWithTheIdentifierInTheToolTip()
+    {
+        ParameterPanel panel;
+        for (const ParameterField& f : parameterFields()) {
+            const QString name = QString::fromUtf8(f.name);
+            QWidget* nameWidget = f.kind == ParameterField::Kind::Flag
+                                      ? static_cast<QWidget*>(panel.findChild<QCheckBox*>(QStringLiteral("check_") + name))
+                                      : panel.findChild<QLabel*>(QStringLiteral("label_") + name);
+            QVERIFY2(nameWidget, qPrintable(name));
+            const QString text = f.kind == ParameterField::Kind::Flag ? static_cast<QCheckBox*>(nameWidget)->text()
+                                                                      : static_cast<QLabel*>(nameWidget)->text();
+            QCOMPARE(text, QString::fromStdString(labelWithUnit(f)));
+            QVERIFY2(text != name && !text.contains(QLatin1Char('_')), qPrintable(name));  // words, not the identifier
+            QVERIFY2(nameWidget->toolTip().contains(name), qPrintable(name + ": " + nameWidget->toolTip()));
+            QVERIFY2(nameWidget->toolTip().contains(QString::fromUtf8(f.description).toHtmlEscaped()), qPrintable(name));
+        }
+    }
+
+    void everySliderStepIsFine()
+    {
+        // One position moves a logarithmic value by a few per cent and a linear one by a thousandth
+        // of its range, so no field jumps (a 1 -> 3.16 step over a few pixels was the complaint).
+        const Parameters defaults;
+        for (const ParameterField& f : parameterFields()) {
+            if (f.kind != ParameterField::Kind::Real)
+                continue;
+            const SliderScale scale = SliderScale::forField(f, parameterValue(defaults, f));
+            const int from = scale.hasZeroStop() ? 2 : 1;
+            for (int position = from; position <= scale.maximumPosition(); ++position) {
+                const double low = scale.toValue(position - 1), high = scale.toValue(position);
+                QVERIFY2(high > low, qPrintable(QString::fromUtf8(f.name)));
+                if (scale.isLogarithmic())
+                    QVERIFY2(high / low < 1.04, qPrintable(QStringLiteral("%1 at %2").arg(f.name).arg(position)));
+                else
+                    QVERIFY2(high - low <= 1.5e-3 * (f.maximum - f.minimum), qPrintable(QString::fromUtf8(f.name)));
+            }
+        }
+    }
+
+    void upAndDownInTheValueFieldStepOnePosition()
+    {
+        ParameterPanel panel;
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QSignalSpy edited(&panel, &ParameterPanel::parameterEdited);
+        auto* edit = panel.findChild<QLineEdit*>("value_zv_window_s");
+        const SliderScale scale = scaleOf("zv_window_s");
+        const int start = scale.toPosition(Parameters().zv_window_s);
+        QVERIFY(edit->isEnabled());
+        edit->setFocus();
+        QTest::keyClick(edit, Qt::Key_Up);
+        QTRY_VERIFY(!edited.isEmpty());
+        QCOMPARE(edited.last().at(0).toString(), QStringLiteral("zv_window_s"));
+        QCOMPARE(edited.last().at(1).toDouble(), scale.toValue(start + 1));
+        QCOMPARE(panel.parameters().zv_window_s, scale.toValue(start + 1));
+        QCOMPARE(edit->text(), QLocale().toString(scale.toValue(start + 1), 'g', 6));
+        QTest::keyClick(edit, Qt::Key_PageDown);
+        QCOMPARE(panel.parameters().zv_window_s, scale.toValue(start + 1 - scale.pageStep()));
+    }
+
     void showsTheGivenValuesWithoutEmitting()
     {
         ParameterPanel panel;

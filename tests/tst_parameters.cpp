@@ -82,6 +82,7 @@ class TestParameters : public QObject {
     Q_OBJECT
 
 private slots:
+    void labels_areWordsWithTheUnitAsPeopleWriteIt();
     void defaults_validateWithoutProblems();
     void defaults_areThePaperValues_data();
     void defaults_areThePaperValues();
@@ -107,6 +108,27 @@ private slots:
     void file_loadingAMissingFileNamesItAndKeepsParams();
     void file_savingIntoAMissingDirectoryFails();
 };
+
+void TestParameters::labels_areWordsWithTheUnitAsPeopleWriteIt()
+{
+    QSet<QString> labels;
+    for (const ParameterField& field : footpath::parameterFields()) {
+        const QString name = QString::fromLatin1(field.name);
+        const QString label = QString::fromUtf8(field.label);
+        QVERIFY2(label.size() > 3 && label != name && !label.contains(QLatin1Char('_')), qPrintable(name));
+        QVERIFY2(!labels.contains(label), qPrintable("two fields labelled " + label));
+        labels.insert(label);
+        const QString withUnit = QString::fromStdString(footpath::labelWithUnit(field));
+        const QString unit = QString::fromStdString(footpath::displayUnit(field));
+        QVERIFY2(!unit.contains(QLatin1Char('^')), qPrintable(unit));
+        QCOMPARE(withUnit, unit.isEmpty() ? label : label + " (" + unit + ")");
+    }
+    const ParameterField* accStd = footpath::findParameterField("acc_std_max_mps2");
+    QCOMPARE(QString::fromStdString(footpath::labelWithUnit(*accStd)), QString::fromUtf8(accStd->label) + QStringLiteral(" (m/s\u00b2)"));
+    QCOMPARE(QString::fromStdString(footpath::displayUnit(*footpath::findParameterField("motion_elevator_var_pa2"))),
+             QStringLiteral("Pa\u00b2"));
+    QCOMPARE(QString::fromStdString(footpath::displayUnit(*footpath::findParameterField("zv_adapt_fraction"))), QString());
+}
 
 void TestParameters::defaults_validateWithoutProblems()
 {

@@ -14,6 +14,7 @@
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QRegularExpression>
 #include <QtTest>
 
 #include <sstream>
@@ -112,6 +113,44 @@ private slots:
         QVERIFY(text.contains("0.7"));
         QVERIFY(text.contains("ZUPT"));
         QVERIFY(!text.contains("ZUPT+ZARU"));
+        // The mark the heading explains stands before the changed parameters, and only there.
+        QVERIFY(text.contains("(* and bold: di"));  // pdftotext gives "ff" as a ligature
+        QVERIFY2(text.contains(QRegularExpression("\\* acc_std_max_mps2\\s+0\\.7")), "acc_std_max_mps2 is not marked");
+        QVERIFY(!text.contains(QRegularExpression("\\* gyr_max_radps")));
+        // Long descriptions wrap instead of being cut with an ellipsis.
+        QVERIFY(!text.contains(QChar(0x2026)));
+    }
+
+    // The step table counts stance phases from 1, as the window's table does: the first row is
+    // step 1 and the last the number of stance phases.
+    void stepTableNumbersFromOne()
+    {
+        QTemporaryDir dir;
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), WalkSimulatorConfig());
+        ReportContent content;
+        content.recordingPath = "simulated.csv";
+        content.recording = std::make_shared<const Recording>(walk.recording);
+        content.result = std::make_shared<const Result>(runPipeline(*content.recording, content.parameters).result);
+        const QString pdf = outputDir(dir) + "/steps-report.pdf";
+        QCOMPARE(writePdfReport(content, pdf), QString());
+        const QString text = run("pdftotext", {"-layout", pdf, "-"});
+        const QString table = text.section(QStringLiteral("Stance from"), 1).section(QStringLiteral("Import notes"), 0, 0);
+        QList<int> numbers;
+        static const QRegularExpression row("^\\s*(\\d+)\\s+\\d+\\.\\d\\d\\s+\\d+\\.\\d\\d\\s");
+        for (const QString& line : table.split('\n'))
+            if (const QRegularExpressionMatch match = row.match(line); match.hasMatch())
+                numbers << match.captured(1).toInt();
+        QVERIFY2(!numbers.isEmpty(), qPrintable(table.left(500)));
+        QCOMPARE(numbers.first(), 1);
+        QCOMPARE(numbers.last(), int(content.result->steps.size()));
+        QCOMPARE(numbers.size(), int(content.result->steps.size()));
+
+        std::ostringstream csv;
+        writeStepsCsv(csv, *content.result);
+        const QStringList rows = QString::fromStdString(csv.str()).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(rows.size(), int(content.result->steps.size()) + 1);
+        QVERIFY2(rows[1].startsWith("1,"), qPrintable(rows[1]));
+        QVERIFY2(rows.last().startsWith(QString::number(content.result->steps.size()) + ","), qPrintable(rows.last()));
     }
 
     void warningsHaveTheirOwnSectionWithTheirSpans()
@@ -230,6 +269,7 @@ private slots:
         QCOMPARE(rows.size(), 3);
         QVERIFY(rows[0].endsWith(",stride_duration_s,motion,baro_height_m"));
         QVERIFY2(rows[1].endsWith(",unknown,"), qPrintable(rows[1]));  // no barometer: an empty cell
+        QVERIFY2(rows[1].startsWith("1,") && rows[2].startsWith("2,"), "steps are numbered from 1");
         QVERIFY2(rows[2].endsWith(",stairs_up,0.25"), qPrintable(rows[2]));
 
         const QJsonObject json =

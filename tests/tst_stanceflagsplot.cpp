@@ -1,7 +1,10 @@
 #include "SignalPlots.h"
+#include "PlotInteraction.h"
 #include "StanceFlagsPlot.h"
+#include "TestData.h"
 #include "WarningOverlay.h"
 #include "detect/StanceDetector.h"
+#include "io/Import.h"
 #include "nav/Pipeline.h"
 #include "sim/WalkSimulator.h"
 
@@ -523,6 +526,84 @@ private slots:
               recording->samples.size(), recording->duration_s() / 60.0, static_cast<long long>(recording_ms),
               static_cast<long long>(result_ms), static_cast<long long>(parameters_ms));
         QCOMPARE(static_cast<std::size_t>(plot.inputGraph(Input::AccStdDev)->dataCount()), recording->samples.size());
+    }
+
+    void theAxesHoldTheRunningTrialsData()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        const ImportResult imported = importRecording(datasetPath(QStringLiteral("pyshoe-vicon/2017-11-27-11-22-22.csv")).toStdString());
+        QVERIFY(imported.ok());
+        auto recording = std::make_shared<const Recording>(imported.recording);
+        auto result = std::make_shared<const Result>(runPipeline(*recording, paperDetector()).result);
+        StanceFlagsPlot plot;
+        QVERIFY(showLaidOut(plot, plot.plot()));
+        plot.setParameters(paperDetector());
+        plot.setInputsVisible(true);
+        plot.setRecording(recording);
+        plot.setResult(result);
+        plot.plot()->replot();
+        // Running swings the std of |a| far above a walking threshold: the row must show it.
+        for (const Input input : {Input::AccNorm, Input::AccStdDev, Input::GyrNorm}) {
+            const QCPRange shown = plot.inputRect(input)->axis(QCPAxis::atLeft)->range();
+            const QCPGraph* graph = plot.inputGraph(input);
+            int inside = 0;
+            for (const QCPGraphData& point : *graph->data())
+                inside += shown.contains(point.value);
+            QVERIFY2(inside >= 0.98 * graph->dataCount(),
+                     qPrintable(QStringLiteral("input %1: %2 of %3 samples within %4..%5")
+                                    .arg(static_cast<int>(input)).arg(inside).arg(graph->dataCount())
+                                    .arg(shown.lower).arg(shown.upper)));
+        }
+        // ... and the statistic row every finite statistic.
+        const QCPRange statistic = plot.statisticRect()->axis(QCPAxis::atLeft)->range();
+        for (const float value : result->flags.logStatistic)
+            if (std::isfinite(value))
+                QVERIFY(statistic.contains(std::pow(10.0, static_cast<double>(value))));
+        // pyshoe's zero-velocity labels from the motion capture are the reference stance lane.
+        QVERIFY(!recording->reference.stance.empty());
+        QVERIFY(plot.referenceLane()->layout() != nullptr);
+        QVERIFY(plot.isReferenceStance(recording->samples.front().time_s + 0.5));  // standing still at the start
+        QVERIFY(!plot.referenceSource().isEmpty());
+    }
+
+    void ipolGaitEventsAreTheReferenceLane()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        const ImportResult imported = importRecording(datasetPath(QStringLiteral("xsens-mtw-ipol/1-1_lf.txt")).toStdString());
+        QVERIFY(imported.ok());
+        auto recording = std::make_shared<const Recording>(imported.recording);
+        const std::vector<SampleRange>& swings = recording->reference.swings;
+        QVERIFY(swings.size() >= 3);
+        QVERIFY(recording->reference.stance.empty());
+        StanceFlagsPlot plot;
+        plot.setRecording(recording);
+        QVERIFY(plot.referenceLane()->layout() != nullptr);
+        const std::vector<ImuSample>& samples = recording->samples;
+        const SampleRange& swing = swings[1];
+        QVERIFY(!plot.isReferenceStance(samples[(swing.first + swing.last) / 2].time_s));  // mid-swing
+        const std::size_t between = (swings[0].last + swings[1].first) / 2;
+        QVERIFY(plot.isReferenceStance(samples[between].time_s));  // between two swings
+        QVERIFY(!plot.isReferenceStance(samples.front().time_s));  // before the first labelled event: unknown
+        // A recording without a reference has no such lane.
+        plot.setRecording(simulatedWalk().recording);
+        QVERIFY(plot.referenceLane()->layout() == nullptr);
+    }
+
+    void laneReadoutNamesTheFlags()
+    {
+        const Walk w = simulatedWalk();
+        StanceFlagsPlot plot;
+        QVERIFY(showLaidOut(plot, plot.plot()));
+        plot.setParameters(paperDetector());
+        plot.setRecording(w.recording);
+        plot.setResult(w.result);
+        plot.plot()->replot();
+        const QCPAxisRect* lanes = plot.lanesRect();
+        const QCPAxis* time = lanes->axis(QCPAxis::atBottom);
+        plot.interaction()->probeAt(QPointF(time->coordToPixel(w.result->time_s[10]), lanes->center().y()));
+        const QString readout = plot.interaction()->readoutText();
+        QVERIFY2(readout.contains(QStringLiteral("Stance (median) = 1 (set)")), qPrintable(readout));  // standing at the start
+        QVERIFY(!readout.contains(QStringLiteral("6.0")));  // not the lane's plotting level
     }
 };
 

@@ -4,10 +4,12 @@
 #include "detect/StanceDetector.h"
 #include "io/Import.h"
 #include "metrics/Evaluation.h"
+#include "nav/Alignment.h"
 #include "nav/Pipeline.h"
 #include "nav/StreamingEstimator.h"
 #include "sim/WalkSimulator.h"
 
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <algorithm>
@@ -135,8 +137,12 @@ void compareWholeResults(const Result& streamed, const Result& offline)
     QCOMPARE(streamed.cancelled, false);
 }
 
-Result runOffline(const Recording& recording, const Parameters& params)
+/// The offline pipeline with the filter alone: the live estimate is causal, so it equals the
+/// offline filter, not the smoother (whose backward pass needs the whole recording).
+Result runOffline(const Recording& recording, Parameters params)
 {
+    if (params.estimatorKind() == EstimatorKind::Smoother)
+        params.estimator = static_cast<int>(EstimatorKind::Ekf);
     PipelineOutput output = runPipeline(recording, params);
     if (!output.error.empty())
         qFatal("%s", output.error.c_str());
@@ -220,6 +226,69 @@ Parameters withDetector(double windowHalf_s, double medianWindow_s)
     return params;
 }
 
+
+/// The recording from the middle of its `swing`-th swing (true stance runs of 0 after the still
+/// start, counted from 1) on: a recording started mid-walk. Returns the index cut at.
+std::size_t cutMidSwing(const SimulatedWalk& walk, int swing, Recording& cut)
+{
+    const std::vector<std::uint8_t>& stance = walk.trueStance;
+    int seen = 0;
+    for (std::size_t k = 1; k < stance.size(); ++k) {
+        if (!(stance[k - 1] && !stance[k]) || ++seen < swing)
+            continue;
+        std::size_t end = k;
+        while (end < stance.size() && !stance[end])
+            ++end;
+        const std::size_t middle = (k + end) / 2;
+        cut.samples.assign(walk.recording.samples.begin() + static_cast<std::ptrdiff_t>(middle),
+                           walk.recording.samples.end());
+        return middle;
+    }
+    qFatal("the walk has fewer than %d swings", swing);
+}
+
+/// The largest distance of a stance position from the truth, both relative to the start (result
+/// sample `start`, which is walk sample cutAt + start).
+double worstStanceError(const Result& result, const SimulatedWalk& walk, std::size_t cutAt, std::size_t start)
+{
+    const Eigen::Vector3d origin = walk.truePosition_m[cutAt + start];
+    double worst_m = 0.0;
+    for (const Step& step : result.steps) {
+        const auto k = static_cast<std::size_t>(
+            std::lower_bound(result.time_s.begin(), result.time_s.end(), step.stanceStart_s) - result.time_s.begin());
+        worst_m = std::max(worst_m, (step.position_m - result.position_m[start] - (walk.truePosition_m[cutAt + k] - origin)).norm());
+    }
+    return worst_m;
+}
+
+const PlausibilityWarning* findWarning(const Result& result, PlausibilityWarning::Kind kind)
+{
+    const auto found = std::find_if(result.warnings.begin(), result.warnings.end(),
+                                    [kind](const PlausibilityWarning& w) { return w.kind == kind; });
+    return found == result.warnings.end() ? nullptr : &*found;
+}
+
+/// A result of a recording that starts mid-walk: the filter started at the first stance, every
+/// sample before it holds the start state, and the warning says so over exactly that span.
+std::size_t checkHeldUntilFirstStance(const Result& result)
+{
+    const std::size_t start = alignmentStart(result.flags.stance);
+    [&] {
+        QVERIFY2(start > 0, "the cut recording starts in a stance");
+        QVERIFY(result.flags.stance[start] && !result.flags.stance[start - 1]);
+        for (std::size_t k = 0; k < start; ++k) {
+            QVERIFY2(result.position_m[k] == Eigen::Vector3d::Zero(), qPrintable(QString("held sample %1 moved").arg(k)));
+            QVERIFY(result.velocity_mps[k] == Eigen::Vector3d::Zero());
+            QVERIFY(result.rollPitchYaw_rad[k] == result.rollPitchYaw_rad[start]);
+        }
+        const PlausibilityWarning* warning = findWarning(result, PlausibilityWarning::Kind::NoInitialRest);
+        QVERIFY2(warning, "no warning about the mid-walk start");
+        QCOMPARE(warning->start_s, result.time_s.front());
+        QCOMPARE(warning->end_s, result.time_s[start]);
+        QVERIFY2(warning->message.find("mid-walk") != std::string::npos, warning->message.c_str());
+    }();
+    return start;
+}
 }  // namespace
 
 class TestStreamingEstimator : public QObject {
@@ -300,6 +369,81 @@ private slots:
         const Result offline = runOffline(recording, params);
         QVERIFY2(offline.steps.size() > 3, qPrintable(QString("%1 steps").arg(offline.steps.size())));
         compareWholeResults(runStreaming(recording.samples, params), offline);
+    }
+
+    // A recording that starts mid-swing: the filter waits for the first stance, aligns on it, and
+    // the path from there on follows the truth as a walk started at rest does.
+    void midWalkStartAlignsAtTheFirstStance()
+    {
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(12.0, 8.0), noisySensor(100.0, 6));
+        Recording cut;
+        const std::size_t cutAt = cutMidSwing(walk, 3, cut);  // still on the first side, along +x
+        const Result result = runOffline(cut, Parameters());
+        const std::size_t start = checkHeldUntilFirstStance(result);
+        QVERIFY2(result.time_s[start] - result.time_s.front() < 0.5,
+                 qPrintable(QString("first stance found %1 s after the cut").arg(result.time_s[start] - result.time_s.front())));
+        // Level at the first stance (the simulated foot rests flat), not tilted by the swing.
+        QVERIFY(std::abs(result.rollPitchYaw_rad[start].x()) < 0.02 && std::abs(result.rollPitchYaw_rad[start].y()) < 0.02);
+        // Every later stance as near the truth (relative to the first one) as when the same walk
+        // is recorded from its still start.
+        const double cutError_m = worstStanceError(result, walk, cutAt, start);
+        const double wholeError_m = worstStanceError(runOffline(walk.recording, Parameters()), walk, 0, 0);
+        QVERIFY2(result.steps.size() > 20, qPrintable(QString("%1 stance phases").arg(result.steps.size())));
+        QVERIFY2(cutError_m < 1.5 * wholeError_m + 0.1,
+                 qPrintable(QString("a stance %1 m off the truth, %2 m from a still start").arg(cutError_m).arg(wholeError_m)));
+        // Live does the same, value for value.
+        compareWholeResults(runStreaming(cut.samples, Parameters()), result);
+    }
+
+    // A real walk cut to start mid-walk (the file written again from a swing on): the path from the
+    // first stance on is as close to the reference as the whole file's.
+    void midWalkStartOfARealRecording()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        const QString file = datasetPath("pyshoe-vicon/2017-11-22-11-22-03.csv");
+        const Recording whole = readRecording("pyshoe-vicon/2017-11-22-11-22-03.csv");
+        const Result wholeResult = runOffline(whole, Parameters());
+        QVERIFY(findWarning(wholeResult, PlausibilityWarning::Kind::NoInitialRest) == nullptr);
+        // The middle of the fifth swing of the whole file.
+        const std::vector<std::uint8_t>& stance = wholeResult.flags.stance;
+        std::size_t swingStart = 0;
+        for (int seen = 0, k = 1; k < int(stance.size()) && seen < 5; ++k)
+            if (stance[std::size_t(k) - 1] && !stance[std::size_t(k)] && ++seen == 5)
+                swingStart = std::size_t(k);
+        QVERIFY(swingStart > 0);
+        std::size_t swingEnd = swingStart;
+        while (!stance[swingEnd])
+            ++swingEnd;
+        const std::size_t cutAt = (swingStart + swingEnd) / 2;
+
+        QFile in(file);
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        QList<QByteArray> lines = in.readAll().split('\n');
+        QTemporaryDir dir;
+        const QString cutPath = dir.filePath("midwalk.csv");
+        QFile out(cutPath);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(lines.front() + '\n');  // the header, then the rows from the cut on
+        for (int line = int(cutAt) + 1; line < lines.size(); ++line)
+            out.write(lines[line] + '\n');
+        out.close();
+        ImportResult read = importRecording(cutPath.toStdString());
+        QVERIFY(read.ok());
+        QCOMPARE(read.recording.samples.size(), whole.samples.size() - cutAt);
+        QCOMPARE(read.recording.samples.front().acc_mps2, whole.samples[cutAt].acc_mps2);
+
+        const Result result = runOffline(read.recording, Parameters());
+        const std::size_t start = checkHeldUntilFirstStance(result);
+        QVERIFY(result.time_s[start] - result.time_s.front() < 1.0);
+        const auto tail = [](const std::vector<Eigen::Vector3d>& v, std::size_t from) {
+            return std::vector<Eigen::Vector3d>(v.begin() + static_cast<std::ptrdiff_t>(from), v.end());
+        };
+        const ArmseResult cutError = computeArmse(tail(result.position_m, start),
+                                                  tail(read.recording.reference.positions_m, start));
+        const ArmseResult wholeError = computeArmse(wholeResult.position_m, whole.reference.positions_m);
+        QVERIFY2(cutError.armse2d_m < std::max(2.0 * wholeError.armse2d_m, wholeError.armse2d_m + 0.3),
+                 qPrintable(QString("ARMSE 2D %1 m cut mid-walk, %2 m whole").arg(cutError.armse2d_m).arg(wholeError.armse2d_m)));
+        compareWholeResults(runStreaming(read.recording.samples, Parameters()), result);
     }
 
     void equalsRunPipelineOnRealRecordings_data()

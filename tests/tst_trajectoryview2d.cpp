@@ -1,3 +1,4 @@
+#include "PlotInteraction.h"
 #include "TrajectoryView2D.h"
 #include "metrics/Evaluation.h"
 #include "nav/Pipeline.h"
@@ -251,6 +252,65 @@ private slots:
         QTest::mousePress(view.plot(), Qt::LeftButton, Qt::NoModifier, pixel);
         QTest::mouseRelease(view.plot(), Qt::LeftButton, Qt::NoModifier, pixel + QPoint(40, 0));
         QCOMPARE(moved.count(), 1);  // a drag pans, it does not move the cursor
+    }
+
+    void hoverReadsTheNearestSampleAndShiftClickMeasuresFromIt()
+    {
+        const Result& result = rectangleResult();
+        TrajectoryView2D view;
+        view.resize(700, 450);
+        view.showResult(result);
+        (void)view.grab();
+        PlotInteraction& interaction = *view.interaction();
+        const auto nearestTo = [&](const QPoint& pixel) {
+            const Eigen::Vector2d at(view.plot()->xAxis->pixelToCoord(pixel.x()), view.plot()->yAxis->pixelToCoord(pixel.y()));
+            const auto nearest = std::min_element(result.position_m.cbegin(), result.position_m.cend(),
+                                                  [&at](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+                                                      return (a.head<2>() - at).norm() < (b.head<2>() - at).norm();
+                                                  });
+            return static_cast<std::size_t>(nearest - result.position_m.cbegin());
+        };
+        const std::size_t k = fastestSample(result);
+        const QPoint first = toPixel(view.plot(), result.position_m[k]);
+        interaction.probeAt(first);
+        const std::size_t a = nearestTo(first);
+        const QString readout = interaction.readoutText();
+        QVERIFY2(readout.contains(QStringLiteral("x = %1 m").arg(formatPlotNumber(result.position_m[a].x(), 2))), qPrintable(readout));
+        QVERIFY2(readout.contains(QStringLiteral("y = %1 m").arg(formatPlotNumber(result.position_m[a].y(), 2))), qPrintable(readout));
+        QVERIFY2(readout.contains(QStringLiteral("t = %1 s").arg(formatPlotNumber(result.time_s[a], 3))), qPrintable(readout));
+
+        QSignalSpy moved(&view, &TrajectoryView2D::timeCursorMoved);
+        QTest::mouseClick(view.plot(), Qt::LeftButton, Qt::ShiftModifier, first);
+        QVERIFY(interaction.hasMarker());
+        QCOMPARE(moved.count(), 0);  // Shift+click measures; the time cursor stays
+        const QPoint second = toPixel(view.plot(), result.position_m[k / 2]);
+        interaction.probeAt(second);
+        const std::size_t b = nearestTo(second);
+        const QString measured = interaction.readoutText();
+        QVERIFY2(measured.contains(QStringLiteral("Δt = %1 s").arg(formatPlotNumber(result.time_s[b] - result.time_s[a], 3))),
+                 qPrintable(measured));
+        const double distance = (result.position_m[b] - result.position_m[a]).head<2>().norm();
+        QVERIFY2(measured.contains(QStringLiteral("distance %1 m").arg(formatPlotNumber(distance, 2))), qPrintable(measured));
+
+        interaction.probeAt(QPointF(view.width() - 3, 3));  // far from the path
+        QVERIFY(interaction.readoutText().isEmpty());
+    }
+
+    void csvExportHoldsThePathInView()
+    {
+        const Result& result = rectangleResult();
+        TrajectoryView2D view;
+        view.resize(700, 450);
+        view.showResult(result);
+        (void)view.grab();
+        const QStringList all = view.interaction()->visibleDataCsv().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(all.front(), QStringLiteral("time_s,x_m,y_m,z_m"));
+        QCOMPARE(static_cast<std::size_t>(all.size() - 1), result.position_m.size());  // fitted: every sample in view
+        view.plot()->xAxis->setRange(-1.0, 1.0);  // the start corner only
+        const QStringList corner = view.interaction()->visibleDataCsv().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QVERIFY(corner.size() > 1 && corner.size() < all.size());
+        for (qsizetype l = 1; l < corner.size(); ++l)
+            QVERIFY(std::abs(corner[l].split(QLatin1Char(','))[1].toDouble()) <= 1.0);
     }
 
     void referenceOverlayIsPresentOnlyWhenGiven()

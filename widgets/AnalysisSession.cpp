@@ -3,6 +3,7 @@
 #include "ParameterFieldValue.h"
 #include "PipelineRunner.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 #include <QUndoCommand>
 #include <QUndoStack>
@@ -85,7 +86,9 @@ void AnalysisSession::setParameter(const QString& name, double value)
     setParameterValue(after, *field, value);
     if (parameterValue(after, *field) == parameterValue(params_, *field))
         return;
-    undoStack_->push(new ParameterChange(this, params_, after, tr("Change %1").arg(name), name));
+    // Named as the panel names it ("Undo Change C2 bound on the std of |a|"), not by its identifier.
+    const QString label = QCoreApplication::translate("footpath::ParameterFields", field->label);
+    undoStack_->push(new ParameterChange(this, params_, after, tr("Change %1").arg(label), name));
 }
 
 void AnalysisSession::setParameters(const Parameters& params, const QString& description)

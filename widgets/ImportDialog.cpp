@@ -34,14 +34,10 @@ QComboBox* unitBox(const QStringList& labels, const QStringList& values, QWidget
     return box;
 }
 
-/// The usual layout of a headerless IMU log: time, accelerometer, gyroscope, then pressure or
-/// whatever else; the user corrects what does not fit.
-QString suggestedRole(int column, int columns)
+std::function<void(const QString&)>& unattendedHandler()
 {
-    static const QStringList first{"time_ms", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"};
-    if (column < first.size())
-        return first[column];
-    return column == first.size() && columns > first.size() ? QStringLiteral("pressure_pa") : QStringLiteral("skip");
+    static std::function<void(const QString&)> handler;
+    return handler;
 }
 
 }  // namespace
@@ -77,7 +73,7 @@ ImportDialog::ImportDialog(const QString& path, const QString& problem, const Im
         presets_->addItem(QString::fromStdString(preset.name));
     form->addRow(tr("Import preset:"), presets_);
     accUnit_ = unitBox({tr("detect"), tr("m/s²"), tr("g")}, {"", "mps2", "g"}, this);
-    gyrUnit_ = unitBox({tr("detect"), tr("rad/s"), tr("deg/s")}, {"", "radps", "degps"}, this);
+    gyrUnit_ = unitBox({tr("detect"), tr("rad/s"), tr("°/s")}, {"", "radps", "degps"}, this);
     timeUnit_ = unitBox({tr("detect"), tr("s"), tr("ms"), tr("µs")}, {"", "s", "ms", "us"}, this);
     form->addRow(tr("Accelerometer unit:"), accUnit_);
     form->addRow(tr("Gyroscope unit:"), gyrUnit_);
@@ -88,6 +84,7 @@ ImportDialog::ImportDialog(const QString& path, const QString& problem, const Im
     rate_->setSpecialValueText(tr("from the time column"));
     rate_->setValue(start.rate_hz);
     form->addRow(tr("Sample rate:"), rate_);
+    showUnits(start.accUnit, start.gyrUnit, start.timeUnit);
     layout->addLayout(form);
 
     table_ = new QTableWidget(this);
@@ -97,8 +94,14 @@ ImportDialog::ImportDialog(const QString& path, const QString& problem, const Im
     for (const QStringList& row : preview_)
         columns = std::max(columns, int(row.size()));
     buildColumnEditors(columns);
-    for (int i = 0; i < roleBoxes_.size() && i < int(start.columnMap.size()); ++i)
-        roleBoxes_[i]->setCurrentText(QString::fromStdString(start.columnMap[std::size_t(i)]));
+    // The same guess footpath-cli users get told about: given roles, else the usual layout.
+    const ColumnMapGuess guess = guessColumnMap(path.toStdString(), start);
+    guessConfident_ = guess.confident;
+    guessDoubt_ = QString::fromStdString(guess.doubt);
+    for (int i = 0; i < roleBoxes_.size(); ++i)
+        roleBoxes_[i]->setCurrentText(i < int(guess.columnMap.size())
+                                          ? QString::fromStdString(guess.columnMap[std::size_t(i)])
+                                          : QStringLiteral("skip"));
 
     auto* saveRow = new QHBoxLayout;
     save_ = new QCheckBox(tr("Save as import preset named"), this);
@@ -129,7 +132,6 @@ void ImportDialog::buildColumnEditors(int columns)
     for (int c = 0; c < columns; ++c) {
         auto* box = new QComboBox(table_);
         box->addItems(roles);
-        box->setCurrentText(suggestedRole(c, columns));
         table_->setCellWidget(0, c, box);
         roleBoxes_ << box;
         for (int r = 0; r < preview_.size(); ++r)
@@ -138,6 +140,25 @@ void ImportDialog::buildColumnEditors(int columns)
     }
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+}
+
+void ImportDialog::setUnattended(std::function<void(const QString&)> onNoAnswer)
+{
+    unattendedHandler() = std::move(onNoAnswer);
+}
+
+int ImportDialog::exec()
+{
+    if (!unattendedHandler())
+        return QDialog::exec();
+    if (guessConfident_) {
+        setResult(QDialog::Accepted);
+        return QDialog::Accepted;
+    }
+    unattendedHandler()(tr("%1 needs import settings and no one is there to give them: %2")
+                            .arg(QFileInfo(path_).fileName(), guessDoubt_.isEmpty() ? problem_->text() : guessDoubt_));
+    setResult(QDialog::Rejected);
+    return QDialog::Rejected;
 }
 
 void ImportDialog::applyPreset(int index)
@@ -153,12 +174,19 @@ void ImportDialog::applyPreset(int index)
         roleBoxes_[i]->setCurrentText(i < int(preset.columnMap.size())
                                           ? QString::fromStdString(preset.columnMap[std::size_t(i)])
                                           : QStringLiteral("skip"));
-    const auto select = [](QComboBox* box, const char* name) { box->setCurrentIndex(std::max(0, box->findData(name))); };
-    select(accUnit_, preset.accUnit == AccUnit::StandardGravity ? "g" : preset.accUnit == AccUnit::MetresPerSecond2 ? "mps2" : "");
-    select(gyrUnit_, preset.gyrUnit == GyrUnit::DegreesPerSecond ? "degps" : preset.gyrUnit == GyrUnit::RadiansPerSecond ? "radps" : "");
-    select(timeUnit_, preset.timeUnit == TimeUnit::Milliseconds ? "ms" : preset.timeUnit == TimeUnit::Microseconds ? "us"
-                      : preset.timeUnit == TimeUnit::Seconds ? "s" : "");
+    showUnits(preset.accUnit, preset.gyrUnit, preset.timeUnit);
     rate_->setValue(preset.rate_hz);
+}
+
+void ImportDialog::showUnits(AccUnit acc, GyrUnit gyr, TimeUnit time)
+{
+    const auto select = [](QComboBox* box, const char* name) { box->setCurrentIndex(std::max(0, box->findData(name))); };
+    select(accUnit_, acc == AccUnit::StandardGravity ? "g" : acc == AccUnit::MetresPerSecond2 ? "mps2" : "");
+    select(gyrUnit_, gyr == GyrUnit::DegreesPerSecond ? "degps" : gyr == GyrUnit::RadiansPerSecond ? "radps" : "");
+    select(timeUnit_, time == TimeUnit::Milliseconds   ? "ms"
+                      : time == TimeUnit::Microseconds ? "us"
+                      : time == TimeUnit::Seconds      ? "s"
+                                                       : "");
 }
 
 ImportOptions ImportDialog::options() const

@@ -5,6 +5,8 @@
 #include <QDialog>
 #include <QStringList>
 
+#include <functional>
+
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
@@ -30,9 +32,16 @@ public:
     /// The first non-empty lines of a text file, split into cells as the reader splits them.
     static QList<QStringList> previewRows(const QString& path, int maxRows);
 
+    /// A run without a user (a screenshot under xvfb): exec() then shows nothing; it accepts the
+    /// settings the dialog starts with when reading the file with them looks right, and otherwise
+    /// rejects and calls onNoAnswer with the reason, so the run can end instead of waiting forever.
+    static void setUnattended(std::function<void(const QString& reason)> onNoAnswer);
+    int exec() override;
+
 private:
     void buildColumnEditors(int columns);
     void applyPreset(int index);
+    void showUnits(AccUnit acc, GyrUnit gyr, TimeUnit time);
     void accept() override;
 
     QString path_;
@@ -48,6 +57,8 @@ private:
     QLineEdit* presetName_;
     QLabel* problem_;
     QString savedPreset_;
+    QString guessDoubt_;  ///< why the starting column map may be wrong; empty when it reads well
+    bool guessConfident_ = false;
 };
 
 }  // namespace footpath

@@ -14,6 +14,7 @@
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QKeyEvent>
+#include <QWheelEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
@@ -91,9 +92,26 @@ QString fieldText(const char* text)
     return QCoreApplication::translate("footpath::ParameterFields", text);
 }
 
-QString displayUnit(const char* unit)
+QString unitText(const ParameterField& field)
 {
-    return QString::fromUtf8(unit).replace(QStringLiteral("^2"), QStringLiteral("\u00b2"));
+    return QString::fromStdString(displayUnit(field));
+}
+
+/// "C2 bound on the std of |a| (m/s²)": the label translated, the unit as written everywhere.
+QString fieldLabel(const ParameterField& field)
+{
+    const QString unit = unitText(field);
+    const QString label = fieldText(field.label);
+    return unit.isEmpty() ? label : QStringLiteral("%1 (%2)").arg(label, unit);
+}
+
+/// A name label above its controls; it wraps rather than widening the panel.
+QLabel* createNameLabel(const ParameterField& field)
+{
+    auto* label = new QLabel(fieldLabel(field));
+    label->setObjectName(QStringLiteral("label_") + QString::fromUtf8(field.name));
+    label->setWordWrap(true);
+    return label;
 }
 
 }  // namespace
@@ -240,7 +258,7 @@ QWidget* ParameterPanel::createButtonBar()
 QWidget* ParameterPanel::createFieldSections()
 {
     for (const FieldRow& row : rows_)
-        unitColumnWidth_ = std::max(unitColumnWidth_, fontMetrics().horizontalAdvance(displayUnit(row.field->unit)));
+        unitColumnWidth_ = std::max(unitColumnWidth_, fontMetrics().horizontalAdvance(unitText(*row.field)));
     // Groups appear in the order of their first field; each gets one grid.
     QStringList groupOrder;
     QMap<QString, QGridLayout*> grids;
@@ -315,18 +333,20 @@ QString choiceNames(const ParameterField& field)
     return names.join(QStringLiteral(", "));
 }
 
+/// The label, then the identifier presets and the command line use, then what the field does.
 QString fieldToolTip(const ParameterField& field, double defaultValue)
 {
-    const QString unit = displayUnit(field.unit);
+    const QString head = QStringLiteral("<b>%1</b><br><code>%2</code><br>%3")
+                             .arg(fieldLabel(field).toHtmlEscaped(), QString::fromUtf8(field.name),
+                                  fieldText(field.description).toHtmlEscaped());
     if (field.kind == ParameterField::Kind::Flag)
-        return QStringLiteral("<b>%1</b><br>%2").arg(QString::fromUtf8(field.name), fieldText(field.description));
+        return head;
     if (field.kind == ParameterField::Kind::Choice)
-        return ParameterPanel::tr("<b>%1</b><br>%2<br>In presets and --set: %3<br>Default: %4")
-            .arg(QString::fromUtf8(field.name), fieldText(field.description), choiceNames(field),
-                 QString::fromUtf8(field.choiceNames.at(static_cast<std::size_t>(defaultValue))));
-    return ParameterPanel::tr("<b>%1</b><br>%2<br>Range: %3 to %4 %5<br>Default: %6 %5")
-        .arg(QString::fromUtf8(field.name), fieldText(field.description), formatValue(field.minimum),
-             formatValue(field.maximum), unit, formatValue(defaultValue));
+        return ParameterPanel::tr("%1<br>Choices in presets: %2<br>Default: %3")
+            .arg(head, choiceNames(field), QString::fromUtf8(field.choiceNames.at(static_cast<std::size_t>(defaultValue))));
+    return ParameterPanel::tr("%1<br>Range: %2 to %3 %4<br>Default: %5 %4<br>Up/Down in the value field: one slider "
+                              "step; Page Up/Down: ten")
+        .arg(head, formatValue(field.minimum), formatValue(field.maximum), unitText(field), formatValue(defaultValue));
 }
 
 }  // namespace
@@ -338,8 +358,7 @@ void ParameterPanel::addRealRow(QGridLayout* grid, std::size_t rowIndex)
     const QString name = QString::fromUtf8(field.name);
     const QString toolTip = fieldToolTip(field, parameterValue(defaults_, field));
 
-    row.label = new QLabel(name);
-    row.label->setObjectName(QStringLiteral("label_") + name);
+    row.label = createNameLabel(field);
     row.label->setToolTip(toolTip);
     row.edit = new QLineEdit;
     row.edit->setObjectName(QStringLiteral("value_") + name);
@@ -350,7 +369,8 @@ void ParameterPanel::addRealRow(QGridLayout* grid, std::size_t rowIndex)
     validator->setLocale(numberLocale());
     row.edit->setValidator(validator);
     row.edit->setFixedWidth(row.edit->fontMetrics().horizontalAdvance(QStringLiteral("-0.000000e-00")));
-    auto* unit = new QLabel(displayUnit(field.unit));
+    row.edit->installEventFilter(this);  // Up/Down step the value finely
+    auto* unit = new QLabel(unitText(field));
     unit->setMinimumWidth(unitColumnWidth_);  // the same in every section, so the fields line up
     row.slider = new QSlider(Qt::Horizontal);
     row.slider->setObjectName(QStringLiteral("slider_") + name);
@@ -363,12 +383,13 @@ void ParameterPanel::addRealRow(QGridLayout* grid, std::size_t rowIndex)
     row.toolTip = toolTip;
     row.parts = {row.label, row.edit, unit, row.slider, row.reset};
 
+    // The label on a line of its own: a readable label beside the value would widen the panel.
     const int gridRow = grid->rowCount();
-    grid->addWidget(row.label, gridRow, 0);
-    grid->addWidget(row.edit, gridRow, 1);
-    grid->addWidget(unit, gridRow, 2);
+    grid->addWidget(row.label, gridRow, 0, 1, 3);
     grid->addWidget(row.reset, gridRow, 3);
-    grid->addWidget(row.slider, gridRow + 1, 0, 1, 3);
+    grid->addWidget(row.slider, gridRow + 1, 0);
+    grid->addWidget(row.edit, gridRow + 1, 1);
+    grid->addWidget(unit, gridRow + 1, 2);
     grid->setRowMinimumHeight(gridRow + 2, 6);  // air between fields
 
     connect(row.slider, &QSlider::valueChanged, this, [this, rowIndex](int position) { onSliderMoved(rowIndex, position); });
@@ -381,7 +402,7 @@ void ParameterPanel::addFlagRow(QGridLayout* grid, std::size_t rowIndex)
     FieldRow& row = rows_[rowIndex];
     const ParameterField& field = *row.field;
     const QString name = QString::fromUtf8(field.name);
-    row.check = new QCheckBox(name);
+    row.check = new QCheckBox(fieldLabel(field));
     row.check->setObjectName(QStringLiteral("check_") + name);
     row.toolTip = fieldToolTip(field, parameterValue(defaults_, field));
     row.check->setToolTip(row.toolTip);
@@ -406,8 +427,7 @@ void ParameterPanel::addChoiceRow(QGridLayout* grid, std::size_t rowIndex)
     const ParameterField& field = *row.field;
     const QString name = QString::fromUtf8(field.name);
     row.toolTip = fieldToolTip(field, parameterValue(defaults_, field));
-    row.label = new QLabel(name);
-    row.label->setObjectName(QStringLiteral("label_") + name);
+    row.label = createNameLabel(field);
     row.label->setToolTip(row.toolTip);
     row.combo = new QComboBox;
     row.combo->setObjectName(QStringLiteral("choice_") + name);
@@ -423,7 +443,7 @@ void ParameterPanel::addChoiceRow(QGridLayout* grid, std::size_t rowIndex)
     row.reset = createResetButton(rowIndex);
     row.parts = {row.label, row.combo, row.reset};
     const int gridRow = grid->rowCount();
-    grid->addWidget(row.label, gridRow, 0);
+    grid->addWidget(row.label, gridRow, 0, 1, 3);
     grid->addWidget(row.combo, gridRow + 1, 0, 1, 3);
     grid->addWidget(row.reset, gridRow, 3);
     grid->setRowMinimumHeight(gridRow + 2, 6);
@@ -778,8 +798,33 @@ void ParameterPanel::keyPressEvent(QKeyEvent* event)
     event->accept();
 }
 
+bool ParameterPanel::stepValueField(QObject* watched, QEvent* event)
+{
+    const auto row = std::find_if(rows_.begin(), rows_.end(), [watched](const FieldRow& r) { return r.edit == watched; });
+    if (row == rows_.end() || !row->edit->isEnabled())
+        return false;
+    int positions = 0;
+    if (event->type() == QEvent::KeyPress) {
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        positions = key == Qt::Key_Up ? 1 : key == Qt::Key_Down ? -1 : key == Qt::Key_PageUp ? row->slider->pageStep()
+                  : key == Qt::Key_PageDown ? -row->slider->pageStep() : 0;
+    } else if (event->type() == QEvent::Wheel && row->edit->hasFocus()) {
+        const int delta = static_cast<QWheelEvent*>(event)->angleDelta().y();
+        positions = delta > 0 ? 1 : delta < 0 ? -1 : 0;
+    }
+    if (positions == 0)
+        return false;
+    // A value typed but not yet confirmed is the one to step from.
+    onValueTyped(static_cast<std::size_t>(row - rows_.begin()));
+    row->slider->setValue(row->slider->value() + positions);  // reports through onSliderMoved
+    row->edit->selectAll();
+    return true;
+}
+
 bool ParameterPanel::eventFilter(QObject* watched, QEvent* event)
 {
+    if (stepValueField(watched, event))
+        return true;
     // A wheel over a slider or combo box the user has not clicked scrolls the panel instead:
     // otherwise scrolling through the list silently changes whichever parameter passes under the
     // pointer.

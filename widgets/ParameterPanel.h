@@ -131,6 +131,8 @@ private:
     void showProblems();
     void showApplicability();
     void onSliderMoved(std::size_t rowIndex, int position);
+    /// Up/Down (one slider position), Page Up/Down and the wheel in a value field; true if handled.
+    bool stepValueField(QObject* watched, QEvent* event);
     void onValueTyped(std::size_t rowIndex);
     void onFlagToggled(std::size_t rowIndex, bool checked);
     void onChoiceChosen(std::size_t rowIndex, int index);

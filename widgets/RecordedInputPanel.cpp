@@ -98,7 +98,11 @@ QString RecordedInputPanel::describe(const QString& path, const ImportResult& re
     row(tr("Duration"), tr("%1 s").arg(recording.duration_s(), 0, 'f', 1));
     row(tr("Time"), QString::fromStdString(info.timeSource));
     row(tr("Channels"), channels.join(QStringLiteral(", ")));
-    row(tr("Units in file"), QStringLiteral("%1, %2").arg(unitName(info.accUnitAsRead), unitName(info.gyrUnitAsRead)));
+    // core names units in ASCII for the command line; the window writes them as everywhere else in it.
+    const auto shownUnit = [](const char* name) {
+        return QString::fromUtf8(name).replace(QStringLiteral("m/s^2"), QStringLiteral("m/s²")).replace(QStringLiteral("deg/s"), QStringLiteral("°/s"));
+    };
+    row(tr("Units in file"), QStringLiteral("%1, %2").arg(shownUnit(unitName(info.accUnitAsRead)), shownUnit(unitName(info.gyrUnitAsRead))));
     row(tr("Gaps"), info.gaps.count == 0 ? tr("none")
                                          : tr("%1 (about %2 samples lost), longest %3 s")
                                                .arg(info.gaps.count)

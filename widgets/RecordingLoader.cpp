@@ -34,6 +34,7 @@ void RecordingLoader::load(const QString& path, const ImportOptions& options)
     cancel_ = std::make_shared<std::atomic_bool>(false);
     path_ = path;
     options_ = options;
+    ++requests_;
     ImportOptions withProgress = options;
     withProgress.progress = [this, cancel = cancel_](double fraction) {
         emit progress(fraction);
@@ -47,6 +48,7 @@ void RecordingLoader::load(const QString& path, const ImportOptions& options)
 void RecordingLoader::onFinished()
 {
     const std::shared_ptr<const ImportResult> result = watcher_.result();
+    reported_ = requests_;
     if (cancel_ && cancel_->load()) {
         emit cancelled(path_);
         return;

@@ -21,6 +21,9 @@ public:
     void load(const QString& path, const ImportOptions& options);
     void cancel();
     bool isLoading() const;
+    /// True when a newer read was asked for after the one now reporting (or last reported): a
+    /// handler of failed() can tell that another handler already opened the file again.
+    bool superseded() const { return requests_ != reported_; }
 
 signals:
     void progress(double fraction);  ///< emitted from the worker; delivered queued
@@ -35,6 +38,8 @@ private:
     std::shared_ptr<std::atomic_bool> cancel_;
     QString path_;
     ImportOptions options_;
+    quint64 requests_ = 0;  ///< load() calls so far
+    quint64 reported_ = 0;  ///< the request whose result was last reported
 };
 
 }  // namespace footpath

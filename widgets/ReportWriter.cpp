@@ -80,12 +80,13 @@ public:
     {
         QFont font = painter_.font();
         font.setPointSizeF(sizePt);
-        const double rowHeight = QFontMetricsF(font, &writer_).height() * 1.35;
+        const double lineHeight = QFontMetricsF(font, &writer_).height() * 1.35;
         for (int r = 0; r < rows.size(); ++r) {
+            const double rowHeight = rowHeightFor(rows[r], widths, font, lineHeight, header && r == 0);
             if (y_ + rowHeight > page_.height()) {
                 newPage();
                 if (header && r > 0)
-                    drawRow(rows.first(), widths, font, rowHeight, true);
+                    drawRow(rows.first(), widths, font, rowHeightFor(rows.first(), widths, font, lineHeight, true), true);
             }
             drawRow(rows[r], widths, font, rowHeight, header && r == 0);
         }
@@ -93,10 +94,18 @@ public:
     }
 
     /// A figure of the given height with a caption; draw() paints into the rectangle it is given.
-    void figure(const QString& caption, double height, const std::function<void(const QRectF&)>& draw)
+    /// Where the page has less room left, the figure shrinks (width and height alike, so a map
+    /// keeps its scale) down to minScale rather than leave the rest of the page empty.
+    void figure(const QString& caption, double height, const std::function<void(const QRectF&)>& draw,
+                double minScale = 0.65)
     {
-        ensureRoom(height + mm(8));
-        const QRectF target(0, y_, width(), height);
+        const double captionRoom = mm(8);
+        const double room = page_.height() - y_ - captionRoom;
+        const double scale = room >= height ? 1.0 : room >= minScale * height ? room / height : 1.0;
+        ensureRoom(scale * height + captionRoom);
+        const double w = scale * width();
+        const QRectF target((width() - w) / 2.0, y_, w, scale * height);
+        height *= scale;
         painter_.save();
         draw(target);
         painter_.restore();
@@ -120,6 +129,23 @@ private:
         y_ += bounds.height() + mm(1);
     }
 
+    /// Cells wrap instead of being cut: the row is as high as its tallest cell.
+    double rowHeightFor(const QStringList& cells, const QList<double>& widths, QFont font, double lineHeight,
+                        bool header)
+    {
+        double height = lineHeight;
+        for (int c = 0; c < cells.size() && c < widths.size(); ++c) {
+            font.setBold(header || cells[c].startsWith(QLatin1Char('*')));
+            painter_.setFont(font);
+            const QRectF bounds = painter_.boundingRect(QRectF(0, 0, widths[c] * width() - mm(2), page_.height()),
+                                                        Qt::TextWordWrap, cellText(cells[c]));
+            height = std::max(height, bounds.height() + lineHeight * 0.35);
+        }
+        return height;
+    }
+
+    static QString cellText(const QString& cell) { return cell.startsWith(QLatin1Char('*')) ? cell.mid(1) : cell; }
+
     void drawRow(const QStringList& cells, const QList<double>& widths, QFont font, double rowHeight, bool header)
     {
         double x = 0.0;
@@ -135,8 +161,8 @@ private:
             painter_.setFont(font);
             painter_.setPen(Qt::black);
             const double w = widths[c] * width();
-            painter_.drawText(QRectF(x + mm(1), y_, w - mm(2), rowHeight), Qt::AlignVCenter | Qt::AlignLeft,
-                              painter_.fontMetrics().elidedText(cell, Qt::ElideRight, int(w - mm(2))));
+            painter_.drawText(QRectF(x + mm(1), y_, w - mm(2), rowHeight),
+                              Qt::AlignVCenter | Qt::AlignLeft | Qt::TextWordWrap, cell);
             x += w;
         }
         painter_.setPen(QPen(QColor(190, 190, 190), mm(0.15)));
@@ -267,8 +293,11 @@ QList<QStringList> parameterRows(const Parameters& params)
             }
             return QString::number(v, 'g', 6);
         };
-        const QString mark = value != standard ? QStringLiteral("*") : QString();
-        rows << QStringList{mark + QString::fromUtf8(field.name), mark + text(value), text(standard),
+        // A leading '*' makes a cell bold (and is not drawn); "* " is the mark the heading explains.
+        const bool changed = value != standard;
+        const QString bold = changed ? QStringLiteral("*") : QString();
+        rows << QStringList{bold + (changed ? QStringLiteral("* ") : QString()) + QString::fromUtf8(field.name),
+                            bold + text(value), text(standard),
                             QString::fromUtf8(field.unit), QString::fromUtf8(field.description)};
     }
     return rows;
@@ -289,7 +318,7 @@ QList<QStringList> stepRows(const Result& result)
         rows.first() << MotionLanes::tr("Motion") << MotionLanes::tr("Baro height (m)");
     for (std::size_t i = 0; i < result.steps.size(); ++i) {
         const Step& s = result.steps[i];
-        rows << QStringList{QString::number(i), number(s.stanceStart_s, 2), number(s.stanceEnd_s, 2),
+        rows << QStringList{QString::number(i + 1), number(s.stanceStart_s, 2), number(s.stanceEnd_s, 2),
                             number(s.strideLength_m, 3), number(s.strideDuration_s, 3), number(s.position_m.x(), 3),
                             number(s.position_m.y(), 3), number(s.position_m.z(), 3)};
         if (motion)
@@ -424,18 +453,18 @@ void drawGaitFigures(PageComposer& page, QPainter& painter, const GaitStatistics
 {
     QVector<double> strideSteps, strides, stanceSteps, stances;
     for (std::size_t i = 0; i < g.strideLengths_m.size(); ++i) {
-        strideSteps << double(i + 1);
+        strideSteps << double(i + 2);  // the stride that ends at stance phase i + 2 (the first has none)
         strides << g.strideLengths_m[i];
     }
     for (std::size_t i = 0; i < g.stanceDurations_s.size(); ++i) {
-        stanceSteps << double(i);
+        stanceSteps << double(i + 1);
         stances << g.stanceDurations_s[i];
     }
     page.figure(tr("Figure 6. Stride length per step."), page.mm(50), [&](const QRectF& r) {
         drawBars(painter, r, strideSteps, strides, tr("step"), tr("stride length (m)"), 0.7);
     });
     page.figure(tr("Figure 7. Stance duration per step."), page.mm(50), [&](const QRectF& r) {
-        drawBars(painter, r, stanceSteps, stances, tr("stance phase"), tr("stance duration (s)"), 0.7);
+        drawBars(painter, r, stanceSteps, stances, tr("step"), tr("stance duration (s)"), 0.7);
     });
     double strideWidth = 0.0, stanceWidth = 0.0;
     const auto [strideBins, strideCounts] = histogramBars(g.strideLengths_m, 0.01, strideWidth);
@@ -467,7 +496,8 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
     TrajectoryView3D view3D;
     view3D.resize(900, 600);
     view3D.setResult(c.result);
-    page.figure(tr("Figure 3. The path in 3D."), page.mm(100), [&](const QRectF& r) {
+    view3D.setReference(alignReferenceToEstimate(c.recording->reference.positions_m, result.position_m));
+    page.figure(tr("Figure 3. The path in 3D (reference dashed when present)."), page.mm(100), [&](const QRectF& r) {
         drawScaled(painter, r, 760, [&view3D](QPainter& recorder, QSize size) {
             view3D.render(recorder, QRectF(QPointF(0, 0), QSizeF(size)));
         });
@@ -528,10 +558,11 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
     writeWarnings(page, *content.result);
     writeMethodNotes(page, *content.result);
     writeComparison(page, content.comparison);
-    page.ensureRoom(page.mm(130));  // the heading with its first figure, not alone at the foot of a page
+    // The heading with its first figure (at its smallest), not alone at the foot of a page.
+    page.ensureRoom(page.mm(12 + 0.65 * 110 + 8));
     page.heading(tr("Figures"));
     drawFigures(page, painter, content);
-    page.heading(tr("Parameters (* differs from the default)"));
+    page.heading(tr("Parameters (* and bold: differs from the default)"));
     page.table(parameterRows(content.parameters), {0.2, 0.12, 0.12, 0.1, 0.46}, 7.5);
     page.heading(tr("Steps"));
     page.table(stepRows(*content.result), stepColumnWidths(*content.result), 7.5);

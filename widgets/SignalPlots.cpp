@@ -1,5 +1,6 @@
 #include "SignalPlots.h"
 
+#include "PlotInteraction.h"
 #include "TimeAxisNavigation.h"
 #include "TimeBands.h"
 #include "WarningOverlay.h"
@@ -29,7 +30,6 @@ constexpr double kValueMargin = 1.1;   // value axes get 5 % air above and below
 const QString kStanceLayer = QStringLiteral("stance");
 const QString kCursorLayer = QStringLiteral("cursor");
 const QColor kStanceBrush(250, 200, 110, 90);  // light amber: a pale grey band on paper
-const QColor kCursorColour(170, 0, 0);
 
 struct ChannelInfo {
     Row row;
@@ -109,38 +109,6 @@ QCPAxis* timeAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atBottom
 /// the row's full height.
 QCPAxis* unitAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atRight); }
 
-QCPLegend* addRowLegend(QCPAxisRect* rect)
-{
-    auto* legend = new QCPLegend;
-    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
-    legend->setLayer(QStringLiteral("legend"));
-    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);  // one line: rows are short
-    legend->setIconSize(26, 10);
-    legend->setColumnSpacing(6);
-    legend->setBrush(QColor(255, 255, 255, 210));
-    legend->setBorderPen(QPen(QColor(180, 180, 180)));
-    QFont font = legend->font();
-    font.setPointSizeF(font.pointSizeF() * 0.85);
-    legend->setFont(font);
-    return legend;
-}
-
-QCPItemStraightLine* addCursorLine(QCustomPlot* plot, QCPAxisRect* rect)
-{
-    auto* line = new QCPItemStraightLine(plot);
-    line->setLayer(kCursorLayer);
-    line->setClipToAxisRect(true);  // the default only when the plot had an axis rect already
-    line->setClipAxisRect(rect);
-    line->setSelectable(false);
-    line->setPen(QPen(kCursorColour, 1.5));
-    line->point1->setAxes(timeAxis(rect), unitAxis(rect));
-    line->point2->setAxes(timeAxis(rect), unitAxis(rect));
-    line->point1->setCoords(0.0, 0.0);
-    line->point2->setCoords(0.0, 1.0);
-    line->setVisible(false);
-    return line;
-}
-
 }  // namespace
 
 SignalPlots::SignalPlots(QWidget* parent)
@@ -167,6 +135,11 @@ SignalPlots::SignalPlots(QWidget* parent)
     createToolBar();
     wireInteractions();
     arrangeRows();
+    interaction_ = new PlotInteraction(plot_);
+    interaction_->setResetAction([this] {
+        showAll();
+        rescaleValueAxes();
+    });
 }
 
 SignalPlots::~SignalPlots()
@@ -197,10 +170,9 @@ void SignalPlots::createRows()
         plot_->plotLayout()->addElement(static_cast<int>(r), 0, rect);  // arrangeRows() sorts
         rect->setMarginGroup(QCP::msLeft | QCP::msRight, alignedMargins);
         rect->axis(QCPAxis::atLeft)->setLabel(tr(kRowInfos[r].axisLabel));
-        unitAxis(rect)->setRange(0.0, 1.0);
         rows_[r].rect = rect;
         rows_[r].legend = addRowLegend(rect);
-        rows_[r].cursor = addCursorLine(plot_, rect);
+        rows_[r].cursor = addCursorLine(plot_, rect, kCursorLayer);
         rows_[r].stance = new TimeBands(rect, kStanceBrush);
         rows_[r].stance->setLayer(kStanceLayer);
     }
@@ -216,8 +188,7 @@ void SignalPlots::createWarningLane(QCPMarginGroup* alignedMargins)
     warningLane_.rect = new QCPAxisRect(plot_);
     plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, warningLane_.rect);  // arrangeRows() sorts
     warningLane_.rect->setMarginGroup(QCP::msLeft | QCP::msRight, alignedMargins);
-    unitAxis(warningLane_.rect)->setRange(0.0, 1.0);
-    warningLane_.cursor = addCursorLine(plot_, warningLane_.rect);
+    warningLane_.cursor = addCursorLine(plot_, warningLane_.rect, kCursorLayer);
     warnings_ = new WarningOverlay(plot_);
     for (const RowParts& row : rows_)
         warnings_->addRow(row.rect);

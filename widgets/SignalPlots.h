@@ -25,6 +25,7 @@ class QToolBar;
 namespace footpath {
 
 class LinkedTimeRows;
+class PlotInteraction;
 class TimeBands;
 class WarningOverlay;
 
@@ -80,6 +81,8 @@ public:
     QCPItemStraightLine* cursorLine(Row row) const;
     /// The lane of labelled warning bars above the rows; in the layout while there are warnings.
     QCPAxisRect* warningLane() const { return warningLane_.rect; }
+    /// Hover readout, marker, Y zoom, context menu and export.
+    PlotInteraction* interaction() const { return interaction_; }
     /// Draws the plots (without the channel toolbar) into target as vector commands, so a PDF
     /// painter keeps them sharp.
     void renderTo(QPainter& painter, const QRect& target);
@@ -129,6 +132,7 @@ private:
     double timeCursor_s_ = 0.0;
     bool cursorPlaced_ = false;  ///< the cursor stays hidden until someone places it
     LinkedTimeRows* timeRows_ = nullptr;  ///< made with the rows
+    PlotInteraction* interaction_ = nullptr;
 };
 
 }  // namespace footpath

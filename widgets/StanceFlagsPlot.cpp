@@ -1,6 +1,7 @@
 #include "StanceFlagsPlot.h"
 
 #include "MotionLanes.h"
+#include "PlotInteraction.h"
 #include "TimeAxisNavigation.h"
 #include "TimeBands.h"
 #include "WarningOverlay.h"
@@ -31,12 +32,14 @@ constexpr double kLaneSpacing = 1.5;   // a lane is 1 high; the rest is the gap 
 constexpr double kLaneMargin = 0.3;    // air above the top lane and below the bottom one
 constexpr double kBandHeadroom = 1.5;  // |a| row: this many band widths above and below the band
 constexpr double kMinimumAccBand_mps2 = 0.5;  // framing for (invalid) parameters with no band
-constexpr double kThresholdHeadroom = 3.0;    // std and |w| rows: from 0 to this many thresholds
+constexpr double kThresholdHeadroom = 3.0;    // std and |w| rows: from 0 to at least this many thresholds
+constexpr double kDataShare = 0.99;  // input rows hold this share of the samples; rarer peaks run off the top
+constexpr double kReferenceLow = 0.2, kReferenceHigh = 0.8;  // the reference lane's step curve, on its 0..1 axis
 constexpr double kStatisticHeadroom_dec = 0.3;  // statistic row: air above and below the data, in decades
 constexpr double kMinimumStatisticSpan_dec = 2.0;
+constexpr double kValueMargin = 1.05;  // air above the data an input row holds
 const QString kCursorLayer = QStringLiteral("cursor");
 const QString kStanceLayer = QStringLiteral("stance");
-const QColor kCursorColour(170, 0, 0);
 const QColor kStanceBrush(250, 200, 110, 90);  // SignalPlots' light amber
 const QColor kThresholdColour(200, 40, 40);
 
@@ -112,9 +115,10 @@ std::size_t slot(Threshold threshold) { return static_cast<std::size_t>(threshol
 constexpr std::size_t kWarningRow = 0;
 constexpr std::size_t kNotesRow = 1;
 constexpr std::size_t kLanesRow = 2;
-constexpr std::size_t kMotionRow = 3;
-constexpr std::size_t kStatisticRow = 4;
-std::size_t rowOf(Input input) { return 5 + slot(input); }  // below the lanes and the statistic
+constexpr std::size_t kReferenceRow = 3;
+constexpr std::size_t kMotionRow = 4;
+constexpr std::size_t kStatisticRow = 5;
+std::size_t rowOf(Input input) { return 6 + slot(input); }  // below the lanes and the statistic
 
 const std::vector<std::uint8_t>& laneFlags(const StanceFlags& flags, Lane lane)
 {
@@ -133,36 +137,6 @@ QCPAxis* valueAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atLeft)
 /// The hidden right axis spans 0..1 whatever the row shows: the cursor uses it to fill the height.
 QCPAxis* unitAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atRight); }
 
-QCPLegend* addRowLegend(QCPAxisRect* rect)
-{
-    auto* legend = new QCPLegend;
-    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
-    legend->setLayer(QStringLiteral("legend"));
-    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);  // one line: rows are short
-    legend->setIconSize(26, 10);
-    legend->setColumnSpacing(6);
-    legend->setBrush(QColor(255, 255, 255, 210));
-    legend->setBorderPen(QPen(QColor(180, 180, 180)));
-    QFont font = legend->font();
-    font.setPointSizeF(font.pointSizeF() * 0.85);
-    legend->setFont(font);
-    return legend;
-}
-
-QCPItemStraightLine* addCursorLine(QCustomPlot* plot, QCPAxisRect* rect)
-{
-    auto* line = new QCPItemStraightLine(plot);
-    line->setLayer(kCursorLayer);
-    line->setClipToAxisRect(true);  // the default only when the plot had an axis rect already
-    line->setClipAxisRect(rect);
-    line->setSelectable(false);
-    line->setPen(QPen(kCursorColour, 1.5));
-    line->point1->setAxes(timeAxis(rect), unitAxis(rect));
-    line->point2->setAxes(timeAxis(rect), unitAxis(rect));
-    line->setVisible(false);
-    return line;
-}
-
 QVector<double> toQVector(const std::vector<double>& values) { return QVector<double>(values.begin(), values.end()); }
 
 /// The decades the finite values of both series span (log10 values), or nothing if none is finite.
@@ -178,6 +152,52 @@ std::optional<QCPRange> finiteSpan(const std::vector<float>& a, const std::vecto
     if (lowest > highest)
         return std::nullopt;
     return QCPRange(lowest, highest);
+}
+
+/// The value below which share of the graph's finite values lie (0 for none).
+double quantileOf(const QCPGraph* graph, double share)
+{
+    std::vector<double> values;
+    values.reserve(static_cast<std::size_t>(graph->data()->size()));
+    for (const QCPGraphData& point : *graph->data())
+        if (std::isfinite(point.value))
+            values.push_back(point.value);
+    if (values.empty())
+        return 0.0;
+    const auto at = values.begin() + static_cast<std::ptrdiff_t>(share * static_cast<double>(values.size() - 1));
+    std::nth_element(values.begin(), at, values.end());
+    return *at;
+}
+
+/// The recording's reference stance: the spans of stance within the time the reference covers.
+struct ReferenceStance {
+    std::vector<QCPRange> spans;
+    QCPRange covered;
+};
+
+/// From the recording's reference stance flags when it has them (pyshoe's zv_vicon_opt: the whole
+/// recording), else from the gaps between its hand-labelled swings (IPOL gait events: from the
+/// first labelled swing to the last, the window evaluation compares; outside it nothing is known).
+ReferenceStance referenceStanceOf(const Recording& recording, const std::vector<double>& times)
+{
+    const Reference& reference = recording.reference;
+    ReferenceStance out;
+    if (times.empty())
+        return out;
+    if (!reference.stance.empty()) {
+        out.spans = flaggedSpans(times, reference.stance);
+        out.covered = QCPRange(times.front(), times.back());
+        return out;
+    }
+    for (std::size_t s = 1; s < reference.swings.size(); ++s) {
+        const std::size_t from = reference.swings[s - 1].last + 1, to = reference.swings[s].first;
+        if (from < to && to < times.size())
+            out.spans.emplace_back(times[from], times[to]);
+    }
+    if (!out.spans.empty())
+        out.covered = QCPRange(times[std::min(reference.swings.front().first, times.size() - 1)],
+                               times[std::min(reference.swings.back().last, times.size() - 1)]);
+    return out;
 }
 
 /// A log10 value as the log axis plots it; -inf (a statistic of exactly 0) sits on the axis' floor
@@ -219,15 +239,15 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
         row.rect = new QCPAxisRect(plot_);
         plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, row.rect);  // arrangeRows() sorts
         row.rect->setMarginGroup(QCP::msLeft | QCP::msRight, alignedMargins);
-        unitAxis(row.rect)->setRange(0.0, 1.0);
-        row.cursor = addCursorLine(plot_, row.rect);
+        row.cursor = addCursorLine(plot_, row.rect, kCursorLayer);
     }
     createLanesRow();
+    createReferenceLane();
     createStatisticRow();
     createInputRows();
     warnings_ = new WarningOverlay(plot_);
     for (std::size_t r = 0; r < kRowCount; ++r)
-        if (r != kWarningRow && r != kNotesRow && r != kMotionRow)  // the lanes keep their own colours
+        if (r != kWarningRow && r != kNotesRow && r != kMotionRow && r != kReferenceRow)  // the lanes keep their own colours
             warnings_->addRow(rows_[r].rect);
     warnings_->setLane(rows_[kWarningRow].rect);
     motion_ = new MotionLanes(plot_);
@@ -236,6 +256,71 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
     rescaleInputAxes();
     wireInteractions();
     setParameters(params_);  // names, lanes and rows of the default detector
+    createPlotInteraction();
+}
+
+void StanceFlagsPlot::createPlotInteraction()
+{
+    interaction_ = new PlotInteraction(plot_);
+    interaction_->setResetAction([this] {
+        showAll();
+        rescaleInputAxes();
+        plotStatistic();  // frames the statistic row again
+    });
+    // The lanes' curves run between two levels: the readout names the flag instead.
+    interaction_->setValueFormatter([this](const QCPGraph* graph, double value) -> std::optional<QString> {
+        if (graph == referenceLane_)
+            return value > kReferenceLow ? tr("stance") : tr("swing");
+        for (std::size_t l = 0; l < kLaneCount; ++l)
+            if (graph == lanes_[l])
+                return value == laneLevel(static_cast<Lane>(l), true) ? tr("1 (set)") : tr("0");
+        return std::nullopt;
+    });
+}
+
+void StanceFlagsPlot::createReferenceLane()
+{
+    QCPAxisRect* rect = rows_[kReferenceRow].rect;
+    setUpLane(rect, tr("Reference\nstance"));
+    // As high as its two-line label: a lane of one flag needs no more.
+    const int height = 2 * QFontMetrics(valueAxis(rect)->tickLabelFont()).height() + 6;
+    rect->setMinimumSize(0, height);
+    rect->setMaximumSize(QWIDGETSIZE_MAX, height);
+    referenceFill_ = new TimeBands(rect, QColor(240, 170, 60, 150));
+    referenceFill_->setLevels(kReferenceLow, kReferenceHigh);
+    referenceFill_->setLayer(QStringLiteral("main"));
+    referenceLane_ = plot_->addGraph(timeAxis(rect), valueAxis(rect));
+    referenceLane_->setName(tr("Reference stance"));
+    referenceLane_->setLineStyle(QCPGraph::lsStepLeft);
+    referenceLane_->setPen(QPen(QColor(40, 40, 40), 1.0));
+    referenceLane_->setSelectable(QCP::stNone);
+}
+
+void StanceFlagsPlot::plotReferenceStance(const Recording* recording)
+{
+    const ReferenceStance reference = recording ? referenceStanceOf(*recording, times_s_) : ReferenceStance();
+    const std::vector<QCPRange>& spans = reference.spans;
+    referenceFill_->setSpans(spans);
+    QVector<double> keys, values;
+    if (!spans.empty()) {  // a step curve over the covered time: up at each span, down after it
+        keys << reference.covered.lower;
+        values << (spans.front().lower <= reference.covered.lower ? kReferenceHigh : kReferenceLow);
+        for (const QCPRange& span : spans) {
+            keys << span.lower << span.upper;
+            values << kReferenceHigh << kReferenceLow;
+        }
+        if (keys.back() < reference.covered.upper) {
+            keys << reference.covered.upper;
+            values << kReferenceLow;
+        }
+    }
+    referenceLane_->setData(keys, values, true);
+    QString source;
+    if (recording && !recording->reference.stance.empty())
+        source = tr("from the recording's reference stance column (zero velocity by motion capture)");
+    else if (!spans.empty())
+        source = tr("between the hand-labelled gait events (toe-off, heel-strike)");
+    referenceSource_ = source;
 }
 
 StanceFlagsPlot::~StanceFlagsPlot()
@@ -386,6 +471,8 @@ void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
     inputs_[slot(Input::GyrNorm)]->setData(keys, toQVector(gyrNorm), true);
     plotAccStdDev();
     plotThresholds();
+    rescaleInputAxes();
+    plotReferenceStance(recording.get());
     plotLanes();
     plotStatistic();
     arrangeRows();
@@ -407,7 +494,7 @@ void StanceFlagsPlot::setParameters(const Parameters& params)
     const bool windowChanged = params.window_half_s != params_.window_half_s;
     params_ = params;
     if (windowChanged)
-        plotAccStdDev();
+        plotAccStdDev();  // rescaled below
     plotThresholds();
     rescaleInputAxes();
     labelLanes();
@@ -516,14 +603,21 @@ void StanceFlagsPlot::plotThresholds()
 
 void StanceFlagsPlot::rescaleInputAxes()
 {
-    // Framed around the thresholds rather than the data: swing peaks of 40 m/s² or 10 rad/s would
-    // squash the band that decides stance into a line. Peaks run off the top, which reads as
-    // "far above" all the same.
+    // Each row holds its thresholds with room around them and the bulk of its data (a running
+    // trial's std of |a| is many times a walking threshold); the rarest swing peaks run off the
+    // top, which reads as "far above" all the same, rather than squashing the rest into a line.
     const double band = std::max(params_.acc_max_mps2 - params_.acc_min_mps2, kMinimumAccBand_mps2);
+    const QCPGraph* accNorm = inputs_[slot(Input::AccNorm)];
+    const double accLow = accNorm->data()->isEmpty() ? params_.acc_min_mps2 : quantileOf(accNorm, 1.0 - kDataShare);
     valueAxis(inputRect(Input::AccNorm))
-        ->setRange(std::max(0.0, params_.acc_min_mps2 - kBandHeadroom * band), params_.acc_max_mps2 + kBandHeadroom * band);
-    valueAxis(inputRect(Input::AccStdDev))->setRange(0.0, kThresholdHeadroom * params_.acc_std_max_mps2);
-    valueAxis(inputRect(Input::GyrNorm))->setRange(0.0, kThresholdHeadroom * params_.gyr_max_radps);
+        ->setRange(std::max(0.0, std::min(params_.acc_min_mps2 - kBandHeadroom * band, accLow)),
+                   std::max(params_.acc_max_mps2 + kBandHeadroom * band, quantileOf(accNorm, kDataShare) * kValueMargin));
+    valueAxis(inputRect(Input::AccStdDev))
+        ->setRange(0.0, std::max(kThresholdHeadroom * params_.acc_std_max_mps2,
+                                 quantileOf(inputs_[slot(Input::AccStdDev)], kDataShare) * kValueMargin));
+    valueAxis(inputRect(Input::GyrNorm))
+        ->setRange(0.0, std::max(kThresholdHeadroom * params_.gyr_max_radps,
+                                 quantileOf(inputs_[slot(Input::GyrNorm)], kDataShare) * kValueMargin));
 }
 
 void StanceFlagsPlot::setInputsVisible(bool visible)
@@ -552,6 +646,8 @@ void StanceFlagsPlot::arrangeRows()
         bool shown = r == kWarningRow ? warnings_->hasWarnings() : (r == kLanesRow || r == kStatisticRow || inputsShown);
         if (r == kNotesRow || r == kMotionRow)
             shown = r == kNotesRow ? motion_->hasNotes() : motion_->hasMotionLane();
+        if (r == kReferenceRow)
+            shown = !referenceFill_->isEmpty();
         // Out of the layout a row keeps its old geometry: hide it, or it would paint over the others.
         row.rect->setVisible(shown);
         row.cursor->setVisible(shown && cursorPlaced_);
@@ -578,6 +674,8 @@ QCPAxisRect* StanceFlagsPlot::lanesRect() const { return rows_[kLanesRow].rect; 
 QCPAxisRect* StanceFlagsPlot::statisticRect() const { return rows_[kStatisticRow].rect; }
 QCPAxisRect* StanceFlagsPlot::warningLane() const { return rows_[kWarningRow].rect; }
 QCPAxisRect* StanceFlagsPlot::motionLane() const { return rows_[kMotionRow].rect; }
+QCPAxisRect* StanceFlagsPlot::referenceLane() const { return rows_[kReferenceRow].rect; }
+bool StanceFlagsPlot::isReferenceStance(double time_s) const { return referenceFill_->contains(time_s); }
 QCPAxisRect* StanceFlagsPlot::methodNotesLane() const { return rows_[kNotesRow].rect; }
 QCPAxisRect* StanceFlagsPlot::inputRect(Input input) const { return rows_[rowOf(input)].rect; }
 QCPGraph* StanceFlagsPlot::laneGraph(Lane lane) const { return lanes_[slot(lane)]; }

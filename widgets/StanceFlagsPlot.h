@@ -24,6 +24,7 @@ namespace footpath {
 
 class LinkedTimeRows;
 class MotionLanes;
+class PlotInteraction;
 class TimeBands;
 class WarningOverlay;
 
@@ -103,6 +104,14 @@ public:
     /// Spans where a method skipped itself; in the layout while the result has method notes.
     QCPAxisRect* methodNotesLane() const;
     const MotionLanes& motionLanes() const { return *motion_; }
+    /// The recording's reference stance (IPOL gait events, pyshoe's zv_vicon_opt) as a lane under
+    /// the detector's; in the layout when the recording has one.
+    QCPAxisRect* referenceLane() const;
+    bool isReferenceStance(double time_s) const;
+    /// Where the reference stance comes from, for the lane's tool tip; empty without one.
+    const QString& referenceSource() const { return referenceSource_; }
+    /// Hover readout, marker, Y zoom, context menu and export.
+    PlotInteraction* interaction() const { return interaction_; }
     /// Draws the plots (without the toolbar) into target as vector commands.
     void renderTo(QPainter& painter, const QRect& target);
 
@@ -116,14 +125,17 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    /// warnings, method notes, lanes, motion, statistic, one per input
-    static constexpr std::size_t kRowCount = 5 + kInputCount;
+    /// warnings, method notes, lanes, reference stance, motion, statistic, one per input
+    static constexpr std::size_t kRowCount = 6 + kInputCount;
     struct RowParts {
         QCPAxisRect* rect = nullptr;
         QCPItemStraightLine* cursor = nullptr;
     };
 
     void createLanesRow();
+    void createReferenceLane();
+    void createPlotInteraction();
+    void plotReferenceStance(const Recording* recording);
     void labelLanes();
     void createStatisticRow();
     void createInputRows();
@@ -152,6 +164,10 @@ private:
     TimeBands* statisticStance_ = nullptr;
     WarningOverlay* warnings_ = nullptr;
     MotionLanes* motion_ = nullptr;
+    PlotInteraction* interaction_ = nullptr;
+    QCPGraph* referenceLane_ = nullptr;  ///< step curve of the reference stance
+    TimeBands* referenceFill_ = nullptr;
+    QString referenceSource_;
     std::shared_ptr<const Result> result_;
     Parameters params_;
     std::vector<double> times_s_;  ///< the recording's, kept to recompute the std on a new window

@@ -414,6 +414,7 @@ QWidget* SummaryPanel::createFigures()
     auto* content = new QWidget;
     auto* layout = new QVBoxLayout(content);
     layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(createChangeGroup());
     layout->addWidget(createWarnings());
     layout->addWidget(createMotionAndNotes());
     layout->addWidget(walk);
@@ -426,6 +427,82 @@ QWidget* SummaryPanel::createFigures()
     scroll->setWidget(content);
     scroll->setMinimumWidth(content->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
     return scroll;
+}
+
+QGroupBox* SummaryPanel::createChangeGroup()
+{
+    changeGroup_ = createFigureGroup(tr("Last change"), {});
+    changeGroup_->setObjectName(QStringLiteral("lastChange"));
+    changeText_ = new QLabel;
+    changeText_->setObjectName(QStringLiteral("changeText"));
+    changeText_->setWordWrap(true);
+    auto* grid = new QGridLayout;
+    grid->setColumnStretch(1, 1);
+    grid->setHorizontalSpacing(12);
+    const std::pair<const char*, QString> rows[] = {{"pathLength", tr("Path length")},
+                                                    {"endToStart", tr("End to start")},
+                                                    {"armse2d", tr("ARMSE 2D")},
+                                                    {"steps", tr("Steps")}};
+    for (const auto& [key, name] : rows) {
+        FigureRow row{new QLabel(name), new QLabel};
+        row.value->setObjectName(QStringLiteral("change_") + key);
+        row.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        const int gridRow = grid->rowCount();
+        grid->addWidget(row.name, gridRow, 0);
+        grid->addWidget(row.value, gridRow, 1);
+        changeFigures_[key] = row;
+    }
+    auto* layout = static_cast<QVBoxLayout*>(changeGroup_->layout());
+    layout->insertWidget(0, changeText_);
+    layout->addLayout(grid);
+    changeGroup_->setToolTip(tr("The figures before and after the last parameter change (the grey ghost path). "
+                                "Green: better, red: worse. The History lists every run."));
+    changeGroup_->hide();
+    return changeGroup_;
+}
+
+namespace {
+
+QColor judgementColour(Judgement judgement, const QPalette& palette)
+{
+    switch (judgement) {
+    case Judgement::Better: return QColor(27, 127, 59);
+    case Judgement::Worse: return QColor(176, 0, 32);
+    case Judgement::Neither: break;
+    }
+    return palette.color(QPalette::WindowText);
+}
+
+}  // namespace
+
+void SummaryPanel::showChange(const RunFigures* before, const RunFigures& after, const QString& change)
+{
+    changeGroup_->setVisible(before != nullptr);
+    if (!before)
+        return;
+    changeText_->setText(change);
+    const auto show = [this](const char* key, const QString& text, Judgement judgement) {
+        QLabel* value = changeFigures_.at(key).value;
+        value->setText(text);
+        value->setProperty("judgement", judgement == Judgement::Better  ? QStringLiteral("better")
+                                        : judgement == Judgement::Worse ? QStringLiteral("worse")
+                                                                        : QStringLiteral("neither"));
+        QPalette palette = value->palette();
+        palette.setColor(QPalette::WindowText, judgementColour(judgement, this->palette()));
+        value->setPalette(palette);
+        changeFigures_.at(key).name->setVisible(!text.isEmpty());
+        value->setVisible(!text.isEmpty());
+    };
+    const auto metres = [](double from, double to, int decimals) {
+        return tr("%1 \u2192 %2 m").arg(number(from, decimals), number(to, decimals));
+    };
+    show("pathLength", metres(before->pathLength_m, after.pathLength_m, 2), judgePathLength(*before, after));
+    show("endToStart", metres(before->endToStart_m, after.endToStart_m, 2),
+         judgeLowerIsBetter(before->endToStart_m, after.endToStart_m));
+    const bool armse = std::isfinite(before->armse2d_m) && std::isfinite(after.armse2d_m);
+    show("armse2d", armse ? metres(before->armse2d_m, after.armse2d_m, 3) : QString(),
+         judgeLowerIsBetter(before->armse2d_m, after.armse2d_m));
+    show("steps", tr("%1 \u2192 %2").arg(before->steps).arg(after.steps), Judgement::Neither);
 }
 
 QWidget* SummaryPanel::createWarnings()
@@ -510,9 +587,15 @@ QWidget* SummaryPanel::createTable()
         widestTitle = std::max(widestTitle, header->fontMetrics().horizontalAdvance(
                                                 stepModel_->headerData(column, Qt::Horizontal).toString()));
     header->setMinimumSectionSize(widestTitle + 28);  // room for the sort arrow
-    connect(table_, &QTableView::clicked, this, [this, proxy](const QModelIndex& index) {
-        emit timeCursorRequested(stepModel_->stanceStart(proxy->mapToSource(index).row()));
-    });
+    // Selecting a step, by mouse or with the arrow keys, shows its moment; a click on the step
+    // already selected shows it again (the cursor may have moved away since). A click on another
+    // step asks twice for the same moment, which changes nothing the second time.
+    const auto showStep = [this, proxy](const QModelIndex& index) {
+        if (index.isValid())
+            emit timeCursorRequested(stepModel_->stanceStart(proxy->mapToSource(index).row()));
+    };
+    connect(table_->selectionModel(), &QItemSelectionModel::currentRowChanged, this, showStep);
+    connect(table_, &QTableView::clicked, this, showStep);
     return table_;
 }
 
@@ -523,7 +606,14 @@ QWidget* SummaryPanel::createChartPair(QChartView* left, QChartView* right)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(left);
     layout->addWidget(right);
-    return pair;
+    // In a low dock the charts scroll rather than shrink until Qt Charts elides every label, and
+    // rather than holding the whole dock (and the plots above it) at their height.
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(pair);
+    scroll->setMinimumHeight(60);
+    return scroll;
 }
 
 QChartView* SummaryPanel::createChartView(const QString& objectName)

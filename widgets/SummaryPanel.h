@@ -2,6 +2,7 @@
 
 #include "Recording.h"
 #include "Result.h"
+#include "RunHistory.h"
 #include "metrics/Evaluation.h"
 
 #include <QString>
@@ -101,6 +102,12 @@ public:
 
     const GaitStatistics& statistics() const { return statistics_; }
 
+    /// The key figures before and after the last parameter change (path length, end to start,
+    /// ARMSE when there is a reference, steps), green where the change helped and red where it
+    /// hurt; null hides them (a new recording, the first run).
+    void showChange(const RunFigures* before, const RunFigures& after, const QString& change);
+    QTableView* stepTable() const { return table_; }  ///< for tests
+
 signals:
     /// The user clicked a warning's time span or a step: show this moment.
     void timeCursorRequested(double time_s);
@@ -116,6 +123,7 @@ private:
     };
 
     QWidget* createFigures();
+    QGroupBox* createChangeGroup();
     QWidget* createWarnings();
     QWidget* createMotionAndNotes();
     QGroupBox* createFigureGroup(const QString& title, const std::vector<std::pair<QString, QString>>& rows);
@@ -140,6 +148,9 @@ private:
     GaitStatistics statistics_;
 
     std::map<QString, FigureRow> figures_;  ///< by key, e.g. "armse2d"
+    QGroupBox* changeGroup_ = nullptr;
+    QLabel* changeText_ = nullptr;
+    std::map<QString, FigureRow> changeFigures_;  ///< "pathLength", "endToStart", "armse2d", "steps"
     QGroupBox* referenceGroup_ = nullptr;
     QGroupBox* warningsGroup_ = nullptr;
     QLabel* warningsTitle_ = nullptr;

@@ -44,6 +44,41 @@ void renderPlotTo(QCustomPlot* plot, QPainter& painter, const QRect& target)
     painter.drawPicture(target.topLeft(), picture);
 }
 
+QCPLegend* addRowLegend(QCPAxisRect* rect)
+{
+    auto* legend = new QCPLegend;
+    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+    legend->setLayer(QStringLiteral("legend"));
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);  // one line: rows are short
+    legend->setIconSize(26, 10);
+    legend->setColumnSpacing(6);
+    legend->setBrush(QColor(255, 255, 255, 210));
+    legend->setBorderPen(QPen(QColor(180, 180, 180)));
+    QFont font = legend->font();
+    font.setPointSizeF(font.pointSizeF() * 0.85);
+    legend->setFont(font);
+    return legend;
+}
+
+QCPItemStraightLine* addCursorLine(QCustomPlot* plot, QCPAxisRect* rect, const QString& layer)
+{
+    static const QColor cursorColour(170, 0, 0);
+    QCPAxis* unit = rect->axis(QCPAxis::atRight);
+    unit->setRange(0.0, 1.0);
+    auto* line = new QCPItemStraightLine(plot);
+    line->setLayer(layer);
+    line->setClipToAxisRect(true);  // the default only when the plot had an axis rect already
+    line->setClipAxisRect(rect);
+    line->setSelectable(false);
+    line->setPen(QPen(cursorColour, 1.5));
+    line->point1->setAxes(rect->axis(QCPAxis::atBottom), unit);
+    line->point2->setAxes(rect->axis(QCPAxis::atBottom), unit);
+    line->point1->setCoords(0.0, 0.0);
+    line->point2->setCoords(0.0, 1.0);
+    line->setVisible(false);
+    return line;
+}
+
 LinkedTimeRows::LinkedTimeRows(QCustomPlot* plot) : QObject(plot), plot_(plot)
 {
     connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* event) { pressPos_ = event->position().toPoint(); });
@@ -92,7 +127,7 @@ void LinkedTimeRows::onMouseRelease(QMouseEvent* event)
 {
     // A drag pans the time axis; only a click that stayed put places the cursor.
     const QPoint pos = event->position().toPoint();
-    if (!isClick(pressPos_, pos, event->button()))
+    if (!isClick(pressPos_, pos, event->button()) || (event->modifiers() & Qt::ShiftModifier))
         return;
     for (QCPAxisRect* row : rows_) {
         if (row->layout() != nullptr && row->rect().contains(pos)) {  // hidden rows are out of the layout

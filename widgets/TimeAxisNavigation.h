@@ -24,9 +24,17 @@ bool isClick(const QPoint& pressed, const QPoint& released, Qt::MouseButton butt
 /// QCPPainter, so the drawing is recorded in a QPicture that the caller's painter replays.
 void renderPlotTo(QCustomPlot* plot, QPainter& painter, const QRect& target);
 
+/// A one-line legend in the row's top right corner, in a smaller font (rows are short).
+QCPLegend* addRowLegend(QCPAxisRect* rect);
+
+/// The time cursor's line through one row's full height, on layer, hidden until placed. It runs on
+/// the row's hidden right axis, which this sets to 0..1 whatever the row shows.
+QCPItemStraightLine* addCursorLine(QCustomPlot* plot, QCPAxisRect* rect, const QString& layer);
+
 /// The rows of one QCustomPlot that share a time axis (SignalPlots, StanceFlagsPlot): dragging or
 /// zooming any row moves them all, navigation keys move them, and a click that stayed put (not
-/// the end of a pan) in a shown row becomes a time.
+/// the end of a pan, nor a Shift+click, which sets PlotInteraction's marker) in a shown row becomes
+/// a time.
 class LinkedTimeRows : public QObject {
     Q_OBJECT
 public:

@@ -1,6 +1,7 @@
 #include "TrajectoryView2D.h"
 
 #include "MotionLanes.h"
+#include "PlotInteraction.h"
 #include "metrics/Evaluation.h"
 
 #include <Eigen/Geometry>
@@ -288,9 +289,48 @@ TrajectoryView2D::TrajectoryView2D(QWidget* parent)
     connect(plot_, &QCustomPlot::afterLayout, this, &TrajectoryView2D::keepEqualAxisScales);
     connect(plot_, &QCustomPlot::mousePress, this, &TrajectoryView2D::onMousePress);
     connect(plot_, &QCustomPlot::mouseRelease, this, &TrajectoryView2D::onMouseRelease);
-    connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] {
-        fitViewToData();
-        plot_->replot();
+    createPlotInteraction();
+}
+
+void TrajectoryView2D::createPlotInteraction()
+{
+    interaction_ = new PlotInteraction(plot_);
+    interaction_->setResetAction([this] { fitViewToData(); });  // also what a double-click does
+    interaction_->setProber([this](const QPointF& pixel, const std::optional<QPointF>& marker)
+                                -> std::optional<PlotInteraction::Probe> {
+        std::size_t index = 0;
+        if (!nearestPathSampleToPixel(pixel, index) || index >= result_->time_s.size())
+            return std::nullopt;
+        const Eigen::Vector3d& p = result_->position_m[index];
+        const double t = result_->time_s[index];
+        QString text = tr("x = %1 m   y = %2 m   t = %3 s")
+                           .arg(formatPlotNumber(p.x(), 2), formatPlotNumber(p.y(), 2), formatPlotNumber(t, 3));
+        if (marker) {
+            // The marker is a path sample too: find its time from its position.
+            const QPointF at(plot_->xAxis->coordToPixel(marker->x()), plot_->yAxis->coordToPixel(marker->y()));
+            std::size_t from = 0;
+            if (nearestPathSampleToPixel(at, from) && from < result_->time_s.size()) {
+                const Eigen::Vector2d d = p.head<2>() - result_->position_m[from].head<2>();
+                text += tr("\nfrom the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m")
+                            .arg(formatPlotNumber(t - result_->time_s[from], 3), formatPlotNumber(d.x(), 2),
+                                 formatPlotNumber(d.y(), 2), formatPlotNumber(d.norm(), 2));
+            }
+        }
+        return PlotInteraction::Probe{text, QPointF(p.x(), p.y())};
+    });
+    interaction_->setCsvWriter([this] {
+        // The path samples in view, in time order.
+        QString csv = QStringLiteral("time_s,x_m,y_m,z_m\n");
+        if (!result_)
+            return csv;
+        const QRectF shown = visibleRegion();
+        for (std::size_t k = 0; k < result_->position_m.size() && k < result_->time_s.size(); ++k) {
+            const Eigen::Vector3d& p = result_->position_m[k];
+            if (shown.contains(QPointF(p.x(), p.y())))
+                csv += QStringLiteral("%1,%2,%3,%4\n").arg(result_->time_s[k], 0, 'g', 10).arg(p.x(), 0, 'g', 10)
+                           .arg(p.y(), 0, 'g', 10).arg(p.z(), 0, 'g', 10);
+        }
+        return csv;
     });
 }
 
@@ -458,6 +498,31 @@ void TrajectoryView2D::setOverlays(const std::vector<PathOverlay>& overlays)
     }
     overlayLegend_->setVisible(!overlayCurves_.empty());
     fitViewToData();
+    plot_->replot();
+}
+
+void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& positions_m)
+{
+    if (!ghost_) {
+        // Under everything else, so the current path, its markers and the reference stay on top.
+        plot_->addLayer(QStringLiteral("ghost"), plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
+        ghost_ = new QCPCurve(plot_->xAxis, plot_->yAxis);
+        ghost_->setLayer(QStringLiteral("ghost"));
+        ghost_->setName(tr("Before the last change"));
+        ghost_->setPen(QPen(QColor(110, 110, 110, 90), 2.5));
+    }
+    QVector<double> t, x, y;
+    for (const Eigen::Vector3d& p : positions_m) {
+        t << static_cast<double>(t.size());
+        x << p.x();
+        y << p.y();
+    }
+    ghost_->setData(t, x, y, true);
+    if (positions_m.empty())
+        ghost_->removeFromLegend();
+    else if (!plot_->legend->hasItemWithPlottable(ghost_))
+        ghost_->addToLegend();
+    wrapLegendToWidth();
     plot_->replot();
 }
 
@@ -649,7 +714,8 @@ void TrajectoryView2D::onMousePress(QMouseEvent* event)
 void TrajectoryView2D::onMouseRelease(QMouseEvent* event)
 {
     // Left-drag pans, so only a press and release in the same place counts as a click.
-    if (event->button() != Qt::LeftButton
+    // Shift+click sets the measurement marker instead (PlotInteraction).
+    if (event->button() != Qt::LeftButton || (event->modifiers() & Qt::ShiftModifier)
         || (event->position().toPoint() - pressPosition_).manhattanLength() > kClickMaxMovement_px)
         return;
     std::size_t index = 0;

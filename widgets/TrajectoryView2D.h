@@ -26,6 +26,7 @@ class QMouseEvent;
 namespace footpath {
 
 class ColouredPathPlottable;
+class PlotInteraction;
 
 /// Index of the sample whose time is closest to time_s (0 for an empty or one-sample series).
 /// Shared by the trajectory views so both put the time cursor on the same sample.
@@ -69,6 +70,8 @@ public:
     double timeCursor() const { return timeCursor_s_; }
 
     QCustomPlot* plot() const { return plot_; }  ///< for the report and for tests
+    /// Hover readout (x, y, time of the nearest path sample), Shift+click marker, context menu, export.
+    PlotInteraction* interaction() const { return interaction_; }
     /// The legend entries of the motion classes the path shows while coloured by motion (for tests).
     const std::vector<QCPGraph*>& motionLegendEntries() const { return motionLegend_; }
     /// The colour the path is drawn in at sample index (the pen colour when not coloured).
@@ -80,6 +83,11 @@ public:
     void setOverlays(const std::vector<PathOverlay>& overlays);
     const std::vector<QCPCurve*>& overlayCurves() const { return overlayCurves_; }  ///< for tests
     QCPLegend* overlayLegend() const { return overlayLegend_; }  ///< null until the first overlays
+
+    /// The path before the last parameter change, drawn faintly under the current one (with a key
+    /// entry) so the change shows; empty hides it. The view is not refitted for it.
+    void setGhostPath(const std::vector<Eigen::Vector3d>& positions_m);
+    QCPCurve* ghostCurve() const { return ghost_; }  ///< null until the first ghost; for tests
 
 signals:
     /// The user clicked near the path: time of the nearest path sample.
@@ -103,6 +111,7 @@ private:
     void keepEqualAxisScales();
     void fitViewRegionIntoAxisRect();
     QRectF visibleRegion() const;  ///< metres
+    void createPlotInteraction();
     void onMousePress(QMouseEvent* event);
     void onMouseRelease(QMouseEvent* event);
     bool nearestPathSampleToPixel(const QPointF& pixel, std::size_t& index) const;
@@ -115,6 +124,7 @@ private:
     QCPGraph* end_;
     QCPGraph* cursor_;
     QCPLayer* cursorLayer_;  ///< buffered on its own, so moving the cursor does not redraw the path
+    PlotInteraction* interaction_ = nullptr;
     QCPColorScale* colourScale_;
     QCPMarginGroup* colourScaleMargins_;
 
@@ -132,6 +142,7 @@ private:
     std::vector<QCPCurve*> overlayCurves_;
     QCPLegend* overlayLegend_ = nullptr;
     std::vector<Eigen::Vector3d> overlayPositions_m_;  ///< all overlays' points, for fitting the view
+    QCPCurve* ghost_ = nullptr;
 };
 
 }  // namespace footpath

@@ -7,7 +7,7 @@
 #include <QCheckBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPainter>
@@ -48,6 +48,7 @@ constexpr double kMaxHeightFactor = 50.0;
 
 const QColor kPathColour(40, 90, 170);
 const QColor kShadowColour(200, 205, 215);
+const QColor kGhostColour(100, 100, 100, 120);  ///< the path before the last change: there, not competing
 const QColor kReferenceColour(150, 150, 150);
 const QColor kStanceColour(230, 120, 20);
 const QColor kGridColour(222, 222, 222);
@@ -183,7 +184,7 @@ QWidget* TrajectoryView3D::createToolbar()
     QPalette palette = bar->palette();
     palette.setColor(QPalette::Window, QColor(255, 255, 255, 230));
     bar->setPalette(palette);
-    auto* layout = new QHBoxLayout(bar);
+    auto* layout = new QGridLayout(bar);
     layout->setContentsMargins(6, 3, 6, 3);
 
     heightSpin_ = new QDoubleSpinBox(bar);
@@ -198,13 +199,12 @@ QWidget* TrajectoryView3D::createToolbar()
     auto* reset = new QToolButton(bar);
     reset->setText(tr("Reset view"));
     reset->setToolTip(tr("Oblique view of the whole path (or double-click the view)"));
-    for (QWidget* widget : std::initializer_list<QWidget*>{label, heightSpin_, perspectiveCheck_, reset})
-        layout->addWidget(widget);
-
     motionCheck_ = new QCheckBox(MotionLanes::tr("Colour by motion"), bar);
     motionCheck_->setToolTip(MotionLanes::tr("Colour each stride by its step's motion class (stairs, elevator); "
                                              "needs a barometer"));
-    layout->insertWidget(layout->indexOf(reset), motionCheck_);
+    toolbarWidgets_ = {label, heightSpin_, perspectiveCheck_, motionCheck_, reset};
+    for (int column = 0; column < static_cast<int>(toolbarWidgets_.size()); ++column)
+        layout->addWidget(toolbarWidgets_[static_cast<std::size_t>(column)], 0, column);
     connect(motionCheck_, &QCheckBox::toggled, this, &TrajectoryView3D::setMotionColouring);
     connect(heightSpin_, &QDoubleSpinBox::valueChanged, this, &TrajectoryView3D::setHeightExaggeration);
     connect(perspectiveCheck_, &QCheckBox::toggled, this, [this](bool on) {
@@ -245,8 +245,24 @@ void TrajectoryView3D::clear()
 {
     result_.reset();
     reference_m_.clear();
+    ghost_m_.clear();
+    drawnGhostIndices_.clear();
     rebuildScene();
     update();
+}
+
+void TrajectoryView3D::setGhostPath(const std::vector<Eigen::Vector3d>& positions_m)
+{
+    ghost_m_ = positions_m;
+    drawnGhostIndices_ = decimatedIndices(ghost_m_.size(), {});
+    update();
+}
+
+void TrajectoryView3D::drawGhost(QPainter& painter, const ViewTransform& view) const
+{
+    constexpr double kTrueHeight = std::numeric_limits<double>::quiet_NaN();
+    painter.setPen(QPen(kGhostColour, 2.0));
+    drawInPieces(painter, projectedPolyline(view, ghost_m_, drawnGhostIndices_, kTrueHeight));
 }
 
 void TrajectoryView3D::setReference(const std::vector<Eigen::Vector3d>& positions_m)
@@ -414,6 +430,7 @@ void TrajectoryView3D::render(QPainter& painter, const QRectF& target) const
     const ViewTransform view = viewTransform(target);
     const Grid grid = groundGrid();
     drawGrid(painter, view, grid);
+    drawGhost(painter, view);
     drawOverlays(painter, view);
     drawPaths(painter, view, grid);
     drawAxisArrows(painter, view, target);
@@ -585,6 +602,8 @@ void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target) const
     }
     if (!reference_m_.empty())
         entries.emplace_back(tr("Reference"), line(QPen(kReferenceColour, 1.5, Qt::DashLine)));
+    if (!ghost_m_.empty())
+        entries.emplace_back(tr("Before the last change"), line(QPen(kGhostColour, 2.0)));
     entries.emplace_back(tr("Stance"), drawStance);
     entries.emplace_back(tr("Start"), drawStart);
     entries.emplace_back(tr("End"), drawEnd);
@@ -718,6 +737,23 @@ void TrajectoryView3D::drawMotionColouredPath(QPainter& painter, const ViewTrans
 void TrajectoryView3D::resizeEvent(QResizeEvent* event)
 {
     QWidget::resizeEvent(event);
+    layOutToolbar();
+}
+
+void TrajectoryView3D::layOutToolbar()
+{
+    // One row where it fits; in a narrow view (beside the signals on a 1280-pixel screen) two rows
+    // rather than controls cut off at the left edge.
+    auto* grid = static_cast<QGridLayout*>(toolbar_->layout());
+    int oneRow = grid->contentsMargins().left() + grid->contentsMargins().right();
+    for (QWidget* widget : toolbarWidgets_)
+        oneRow += widget->sizeHint().width() + std::max(0, grid->horizontalSpacing());
+    const auto count = static_cast<int>(toolbarWidgets_.size());
+    const int perRow = oneRow > width() - 12 ? (count + 1) / 2 : count;
+    for (QWidget* widget : toolbarWidgets_)
+        grid->removeWidget(widget);
+    for (int i = 0; i < count; ++i)
+        grid->addWidget(toolbarWidgets_[static_cast<std::size_t>(i)], i / perRow, i % perRow);
     toolbar_->adjustSize();
     toolbar_->move(width() - toolbar_->width() - 6, 6);
 }

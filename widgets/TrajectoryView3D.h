@@ -47,6 +47,10 @@ public:
     /// own; empty removes them. The camera refits to hold them all.
     void setOverlays(const std::vector<PathOverlay>& overlays);
     const std::vector<PathOverlay>& overlays() const { return overlays_; }
+    /// The path before the last parameter change, drawn faintly under the current one so the
+    /// change shows; empty hides it. It does not move the camera.
+    void setGhostPath(const std::vector<Eigen::Vector3d>& positions_m);
+    const std::vector<Eigen::Vector3d>& ghostPath() const { return ghost_m_; }
     /// Colours each stride by the motion class of the step it leads to (seed 004), with a key;
     /// a result without classified steps keeps the one path colour.
     void setMotionColouring(bool on);
@@ -93,6 +97,7 @@ private:
     struct Grid;
 
     QWidget* createToolbar();
+    void layOutToolbar();
     void rebuildScene();
     ViewTransform viewTransform(const QRectF& target) const;
     Grid groundGrid() const;
@@ -106,6 +111,7 @@ private:
     void drawLegend(QPainter& painter, const QRectF& target) const;
     void drawMotionColouredPath(QPainter& painter, const ViewTransform& view) const;
     void drawOverlays(QPainter& painter, const ViewTransform& view) const;
+    void drawGhost(QPainter& painter, const ViewTransform& view) const;
     void drawOverlayLegend(QPainter& painter, const QRectF& target) const;
     void extendSceneByOverlays();
     const std::vector<Eigen::Vector3d>& positions() const;
@@ -116,6 +122,8 @@ private:
     std::vector<std::size_t> drawnReferenceIndices_;
     std::vector<PathOverlay> overlays_;
     std::vector<std::vector<std::size_t>> drawnOverlayIndices_;
+    std::vector<Eigen::Vector3d> ghost_m_;
+    std::vector<std::size_t> drawnGhostIndices_;
     Eigen::Vector3d sceneMin_m_ = Eigen::Vector3d::Zero();
     Eigen::Vector3d sceneMax_m_ = Eigen::Vector3d::Zero();
     double timeCursor_s_;
@@ -133,6 +141,7 @@ private:
     QPoint lastMousePosition_;
     bool cameraMovedByUser_ = false;  ///< since the last resetView(); followResult keeps the camera
     QWidget* toolbar_;
+    std::vector<QWidget*> toolbarWidgets_;  ///< in reading order; one row or two (layOutToolbar)
     QDoubleSpinBox* heightSpin_;
     QCheckBox* perspectiveCheck_;
     QCheckBox* motionCheck_ = nullptr;

@@ -57,7 +57,7 @@ Parameters loadParameterSet(const CommandLine& cmd)
             throw BadInput{problem};
     for (const std::string& assignment : cmd.sets) {
         const auto eq = assignment.find('=');
-        if (std::string problem = setParameter(params, assignment.substr(0, eq), assignment.substr(eq + 1));
+        if (std::string problem = setParameterByName(params, assignment.substr(0, eq), assignment.substr(eq + 1));
             !problem.empty())
             throw BadInput{"--set: " + problem};
     }

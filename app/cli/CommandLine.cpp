@@ -1,7 +1,9 @@
 #include "cli/CommandLine.h"
 
+#include "io/NearestNames.h"
 #include "nav/MethodSets.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -19,22 +21,31 @@ std::vector<std::string> splitList(const std::string& text, char separator)
     return items;
 }
 
-std::string usageText()
-{
-    std::string text = R"(Usage:
-  footpath-cli process INPUT [import options] [--params preset.json] [--set name=value ...]
+namespace {
+
+const char* const kProcessSynopsis =
+    R"(  footpath-cli process INPUT [import options] [--params preset.json] [--set name=value ...]
                              [--trajectory out.csv] [--steps out.csv] [--summary out.json]
                              [--summary-csv out.csv] [--parameters-csv out.csv]
-  footpath-cli report INPUT --pdf out.pdf [--page-size a4|letter] [import options]
+)";
+const char* const kReportSynopsis =
+    R"(  footpath-cli report INPUT --pdf out.pdf [--page-size a4|letter] [import options]
                             [--params preset.json] [--set name=value ...]
-  footpath-cli eval INPUT... [import options] [--params preset.json] [--set name=value ...]
+)";
+const char* const kEvalSynopsis =
+    R"(  footpath-cli eval INPUT... [import options] [--params preset.json] [--set name=value ...]
                           [--reference-columns x,y,z] [--closed-loop] [--length METRES]
                           [--jobs N] [--json]
-  footpath-cli compare INPUT... [import options] [--params preset.json] [--set name=value ...]
+)";
+const char* const kCompareSynopsis =
+    R"(  footpath-cli compare INPUT... [import options] [--params preset.json] [--set name=value ...]
                              [--sets "zupt;zupt,zaru;zupt,zaru,hdr;..."] [--jobs N] [--json]
-  footpath-cli info INPUT [import options] [--json]
-  footpath-cli record --port PATH [--baud N] [--rate HZ] [--duration S] --out FILE.mtb [--csv FILE.csv]
+)";
+const char* const kInfoSynopsis = "  footpath-cli info INPUT [import options] [--json]\n";
+const char* const kRecordSynopsis =
+    "  footpath-cli record --port PATH [--baud N] [--rate HZ] [--duration S] --out FILE.mtb [--csv FILE.csv]\n";
 
+const char* const kImportOptions = R"(
 Import options (every format is detected from the content; these override or complete it):
   --format NAME              xsens-text, xsens-mtb, delimited, pyshoe-vicon
   --columns role,role,...    a file without a header: one role per column, from time_s, time_ms,
@@ -42,22 +53,51 @@ Import options (every format is detected from the content; these override or com
   --acc-unit mps2|g  --gyr-unit radps|degps  --time-unit s|ms|us  --rate HZ
   --import-preset NAME|FILE  read with a saved column map and units
   --save-import-preset NAME  save the column map and units given here under NAME
+)";
+
+const char* const kParameterOptions = R"(
+Parameters:
+  --params preset.json       start from a parameter preset saved by the workspace (JSON)
+  --set name=value           change one parameter (repeatable); the names are those of
+                             --parameters-csv and of the presets, e.g. --set gyr_max_radps=1.2
+)";
+
+const char* const kProcessOutputs = R"(
+Outputs (each written whole or not at all):
+  --trajectory out.csv       time, position, velocity and attitude per sample
+  --steps out.csv            one row per step
+  --summary out.json         the figures printed on stdout, the warnings and method notes
+  --summary-csv out.csv      the same figures as one CSV row
+  --parameters-csv out.csv   every parameter and its value
+process prints one line on stdout: samples, duration, steps, path length and end-to-start.
+)";
+
+const char* const kReferenceText = R"(
 Reference data the file carries (VICON columns, gait events beside an Xsens export, a length in the
 file name like rectangle_72m.TXT, a <file>.reference.json sidecar) is used by eval and compare unless
 --reference-columns, --closed-loop or --length say otherwise; a leading '-' in
 --reference-columns negates an axis.
-record talks to a live Xsens MTi (or footpath-mti-sim) on a serial port: the init sequence, then
+)";
+
+const char* const kRecordText =
+    R"(record talks to a live Xsens MTi (or footpath-mti-sim) on a serial port: the init sequence, then
 the raw bytes to FILE.mtb and the decoded samples to FILE.csv as they arrive, flushed every second,
 until --duration seconds of device time (default: until Ctrl+C). Without --baud it starts at 115200
 and probes the common rates; --rate is the output rate (default 100 Hz). It prints the device and
 the counters (samples, lost packets, checksum errors, resyncs).
-eval takes any number of INPUTs, files or folders (a folder: every recording directly in it, in
+)";
+
+const char* const kEvalText =
+    R"(eval takes any number of INPUTs, files or folders (a folder: every recording directly in it, in
 name order; hidden files and *.json, *.md, *.pdf, *.png are skipped), all with the same options.
 One file prints its metrics as a table (or one JSON object); several print one row per file, then
 mean, median, worst and count of each metric per kind of reference (or one JSON object with
 "recordings" and "summary"). --jobs N evaluates N files at once (default: one per core); the
 output keeps the input order. A file that cannot be read becomes an error row, the others go on.
-compare runs every method set of --sets on each INPUT (files or folders, as for eval): sets are
+)";
+
+const char* const kCompareText =
+    R"(compare runs every method set of --sets on each INPUT (files or folders, as for eval): sets are
 separated by ';', methods within a set by ',', from zupt, zaru, hdr, iper, zuna, baro, mag, feliz,
 9state, 15state; every method a set does not name is off, the other parameters come from --params
 and --set. Without --sets it runs the suggested sets:
@@ -68,11 +108,71 @@ plausibility warnings, with '*' after the best value of each column that has one
 end-to-start and ARMSE, the largest F1); several INPUTs add the mean per set. With
 --json one object: "sets" (one object per set, in the order given) and "best"; for several INPUTs
 "inputs" (one such object per file), "sets" (the means) and "best". --jobs N runs N sets at once.
-eval, compare and process print the plausibility warnings to stderr: FILE: warning: [t0-t1 s] message.
-Exit codes: 0 success, 2 bad input or options or a device problem, 1 internal error.
 )";
+
+const char* const kInfoText =
+    "info prints what was read: format, samples, rate, duration, channels, units, gaps, the reference\n"
+    "the file carries and the import warnings (--json: one JSON object).\n";
+const char* const kReportText = "report writes the workspace's PDF report of INPUT: figures, summary, steps and "
+                                "parameters.\n";
+const char* const kWarningsText =
+    "eval, compare and process print the plausibility warnings to stderr: FILE: warning: [t0-t1 s] message.\n";
+const char* const kExitCodes = "Exit codes: 0 success, 2 bad input or options or a device problem, 1 internal error.\n";
+
+std::string withSuggestedSets(std::string text)
+{
     const std::string placeholder = "SUGGESTED";
-    return text.replace(text.find(placeholder), placeholder.size(), suggestedMethodSetsSpec());
+    if (const auto at = text.find(placeholder); at != std::string::npos)
+        text.replace(at, placeholder.size(), suggestedMethodSetsSpec());
+    return text;
+}
+
+}  // namespace
+
+const std::vector<std::string>& commandNames()
+{
+    static const std::vector<std::string> names = {"process", "eval", "compare", "info", "report", "record"};
+    return names;
+}
+
+std::string usageText()
+{
+    std::string text = std::string("Usage:\n") + kProcessSynopsis + kReportSynopsis + kEvalSynopsis + kCompareSynopsis
+                       + kInfoSynopsis + kRecordSynopsis
+                       + "  footpath-cli COMMAND --help   the options of one command\n" + kImportOptions
+                       + kReferenceText + kRecordText + kEvalText + kCompareText + kWarningsText + kExitCodes;
+    return withSuggestedSets(std::move(text));
+}
+
+std::string commandSynopsis(const std::string& command)
+{
+    const std::map<std::string, const char*> synopses = {
+        {"process", kProcessSynopsis}, {"report", kReportSynopsis}, {"eval", kEvalSynopsis},
+        {"compare", kCompareSynopsis}, {"info", kInfoSynopsis},     {"record", kRecordSynopsis}};
+    const auto found = synopses.find(command);
+    return found == synopses.end() ? std::string() : std::string("Usage:\n") + found->second;
+}
+
+std::string commandUsageText(const std::string& command)
+{
+    std::string text = "Usage:\n";
+    if (command == "process")
+        text += kProcessSynopsis + std::string(kParameterOptions) + kImportOptions + kProcessOutputs + kWarningsText;
+    else if (command == "report")
+        text += kReportSynopsis + std::string("\n") + kReportText + kParameterOptions + kImportOptions;
+    else if (command == "eval")
+        text += kEvalSynopsis + std::string("\n") + kEvalText + kParameterOptions + kImportOptions + kReferenceText
+                + kWarningsText;
+    else if (command == "compare")
+        text += kCompareSynopsis + std::string("\n") + kCompareText + kParameterOptions + kImportOptions + kReferenceText
+                + kWarningsText;
+    else if (command == "info")
+        text += kInfoSynopsis + std::string("\n") + kInfoText + kImportOptions;
+    else if (command == "record")
+        text += kRecordSynopsis + std::string("\n") + kRecordText;
+    else
+        return usageText();
+    return withSuggestedSets(text + kExitCodes);
 }
 
 namespace {
@@ -164,6 +264,43 @@ const std::map<std::string, Handler>& valueOptions()
     return options;
 }
 
+bool isHelpOption(const std::string& arg)
+{
+    return arg == "--help" || arg == "-h";
+}
+
+std::vector<std::string> optionNames()
+{
+    std::vector<std::string> names = {"--closed-loop", "--json", "--help"};
+    for (const auto& [name, handler] : valueOptions())
+        names.push_back(name);
+    return names;
+}
+
+/// Reads args[i] (and its value, moving i past it) into out; an error message or empty.
+std::string parseArgument(const std::vector<std::string>& args, std::size_t& i, CommandLine& out)
+{
+    const std::string& arg = args[i];
+    if (arg == "--closed-loop") {
+        out.closedLoop = true;
+    } else if (arg == "--json") {
+        out.json = true;
+    } else if (const auto handler = valueOptions().find(arg); handler != valueOptions().end()) {
+        if (i + 1 >= args.size())
+            return arg + " expects a value";
+        return handler->second(out, args[++i]);
+    } else if (arg.rfind("-", 0) == 0 && arg.size() > 1) {
+        return "unknown option '" + arg + "'" + didYouMean(arg, optionNames());
+    } else if (out.input.empty() || out.command == "eval" || out.command == "compare") {
+        if (out.input.empty())
+            out.input = arg;
+        out.inputs.push_back(arg);
+    } else {
+        return "unexpected argument '" + arg + "' (INPUT is already '" + out.input + "')";
+    }
+    return {};
+}
+
 std::string checkRecordCombination(const CommandLine& c)
 {
     if (!c.input.empty())
@@ -226,36 +363,25 @@ std::string checkCombination(const CommandLine& c)
 
 std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& out)
 {
-    if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+    if (args.empty())
+        return "no command given";
+    if (isHelpOption(args[0]) || args[0] == "help") {
         out.command = "help";
         return {};
     }
     out.command = args[0];
-    const bool known = out.command == "process" || out.command == "eval" || out.command == "compare"
-                       || out.command == "info" || out.command == "report" || out.command == "record";
-    if (!known)
-        return "unknown command '" + out.command + "'; expected process, eval, compare, info, report or record";
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        if (arg == "--closed-loop") {
-            out.closedLoop = true;
-        } else if (arg == "--json") {
-            out.json = true;
-        } else if (const auto handler = valueOptions().find(arg); handler != valueOptions().end()) {
-            if (i + 1 >= args.size())
-                return arg + " expects a value";
-            if (std::string problem = handler->second(out, args[++i]); !problem.empty())
-                return problem;
-        } else if (arg.rfind("--", 0) == 0) {
-            return "unknown option '" + arg + "'";
-        } else if (out.input.empty() || out.command == "eval" || out.command == "compare") {
-            if (out.input.empty())
-                out.input = arg;
-            out.inputs.push_back(arg);
-        } else {
-            return "unexpected argument '" + arg + "' (INPUT is already '" + out.input + "')";
-        }
+    const std::vector<std::string>& known = commandNames();
+    if (std::find(known.begin(), known.end(), out.command) == known.end())
+        return "unknown command '" + out.command + "'" + didYouMean(out.command, known)
+               + " (expected process, eval, compare, info, report or record)";
+    // Asking for a command's help always works, whatever else the line holds.
+    if (std::any_of(args.begin() + 1, args.end(), isHelpOption)) {
+        out.help = true;
+        return {};
     }
+    for (std::size_t i = 1; i < args.size(); ++i)
+        if (std::string problem = parseArgument(args, i, out); !problem.empty())
+            return problem;
     return checkCombination(out);
 }
 

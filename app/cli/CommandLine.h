@@ -8,6 +8,7 @@ namespace footpath::cli {
 /// What the user asked for, before any file is touched.
 struct CommandLine {
     std::string command;  ///< "process", "eval", "compare", "info", "report", "record" or "help"
+    bool help = false;    ///< COMMAND --help: print the command's usage and options
     std::string input;                ///< the first INPUT
     std::vector<std::string> inputs;  ///< every INPUT (several only for eval and compare)
     // Parameters
@@ -48,7 +49,14 @@ struct CommandLine {
 /// Parses argv; returns an error message (naming the bad option) or empty.
 std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& out);
 
+/// The commands footpath-cli knows, in the order the usage lists them.
+const std::vector<std::string>& commandNames();
+/// Every command's synopsis and the notes: what `footpath-cli --help` prints.
 std::string usageText();
+/// "Usage:" and one command's synopsis; empty for an unknown command.
+std::string commandSynopsis(const std::string& command);
+/// One command's synopsis, options and notes: what `footpath-cli COMMAND --help` prints.
+std::string commandUsageText(const std::string& command);
 
 std::vector<std::string> splitList(const std::string& text, char separator = ',');
 

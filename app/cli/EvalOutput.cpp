@@ -93,7 +93,8 @@ QJsonObject recordingJson(const CommandLine& cmd, const Parameters& params, cons
         return object;
     }
     for (const Metric& metric : evaluation.metrics)
-        object.insert(QString::fromStdString(metric.key), jsonNumber(metric.value));
+        object.insert(QString::fromStdString(metric.key),
+                      metric.isCount ? QJsonValue(static_cast<qint64>(metric.value)) : jsonNumber(metric.value));
     object.insert("warnings", warningsJson(evaluation.warnings));
     return object;
 }
@@ -267,7 +268,10 @@ void printSingleEvaluation(const CommandLine& cmd, const Parameters& params, con
         std::cout << "reference   " << note << "\n";
     for (const Metric& metric : evaluation.metrics) {
         char line[128];
-        std::snprintf(line, sizeof line, "%-34s %12.4f\n", metric.label.c_str(), metric.value);
+        if (metric.isCount)
+            std::snprintf(line, sizeof line, "%-34s %7.0f\n", metric.label.c_str(), metric.value);
+        else
+            std::snprintf(line, sizeof line, "%-34s %12.4f\n", metric.label.c_str(), metric.value);
         std::cout << line;
     }
 }

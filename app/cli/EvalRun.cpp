@@ -64,7 +64,7 @@ void addStanceMetrics(std::vector<Metric>& metrics, const Recording& recording, 
     metrics.push_back({"stance_recall", "stance recall", stance.recall});
     metrics.push_back({"stance_f1", "stance F1", stance.f1});
     metrics.push_back({"stance_phase_count_error", "stance phases detected - labelled",
-                       static_cast<double>(stance.stepCountError)});
+                       static_cast<double>(stance.stepCountError), true});
 }
 
 /// Every metric the recording's reference allows, in the order of the single-file table.
@@ -73,7 +73,7 @@ std::vector<Metric> computeMetrics(const Recording& recording, const Result& res
     std::vector<Metric> metrics{{"path_length_m", "path length (m)", result.summary.pathLength_m}};
     addTrajectoryMetrics(metrics, recording, result, ref);
     addStanceMetrics(metrics, recording, result);
-    metrics.push_back({"steps", "steps", static_cast<double>(result.summary.steps)});
+    metrics.push_back({"steps", "steps", static_cast<double>(result.summary.steps), true});
     return metrics;
 }
 
@@ -87,7 +87,7 @@ void measure(const EvalSetup& setup, RecordingEvaluation& evaluation)
     Result result = estimate(recording, setup.params);
     evaluation.metrics = computeMetrics(recording, result, referenceFor(setup, recording));
     evaluation.metrics.push_back(
-        {"warning_count", "plausibility warnings", static_cast<double>(result.warnings.size())});
+        {"warning_count", "plausibility warnings", static_cast<double>(result.warnings.size()), true});
     evaluation.warnings = std::move(result.warnings);
 }
 

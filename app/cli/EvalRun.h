@@ -15,6 +15,7 @@ struct Metric {
     std::string key;    ///< JSON name, e.g. "armse_2d_m"
     std::string label;  ///< the single-file table's row label
     double value;
+    bool isCount = false;  ///< a number of things: printed without decimals
 };
 
 /// What eval found for one input file: its metrics, or why it could not be evaluated.

@@ -5,6 +5,7 @@
 #include "cli/RecordCommand.h"
 #include "cli/ReportCommand.h"
 
+#include <algorithm>
 #include <exception>
 #include <iostream>
 
@@ -15,13 +16,28 @@ namespace {
 constexpr int kExitInternal = 1;
 constexpr int kExitBadInput = 2;
 
+/// After a mistake: the synopsis of the command (or the list of commands) and where the details
+/// are, not pages of help that push the message off the screen.
+std::string shortUsage(const std::string& command)
+{
+    const std::string synopsis = commandSynopsis(command);
+    if (synopsis.empty())
+        return "Commands: process, eval, compare, info, report, record.\n"
+               "footpath-cli --help shows them all; footpath-cli COMMAND --help explains one.";
+    return synopsis + "footpath-cli " + command + " --help lists its options.";
+}
+
 int dispatch(const std::vector<std::string>& args)
 {
     CommandLine cmd;
     if (std::string problem = parseCommandLine(args, cmd); !problem.empty())
-        throw BadInput{problem + "\n\n" + usageText()};
-    if (cmd.command == "help") {
-        std::cout << usageText();
+        throw BadInput{problem + "\n\n" + shortUsage(cmd.command)};
+    if (cmd.command == "help" && args.size() > 1) {
+        std::cout << commandUsageText(args[1]);  // "help process" as "process --help"
+        return 0;
+    }
+    if (cmd.command == "help" || cmd.help) {
+        std::cout << commandUsageText(cmd.command);
         return 0;
     }
     if (cmd.command == "info")

@@ -6,6 +6,7 @@
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
+#include <QSaveFile>
 
 #include <charconv>
 #include <unistd.h>
@@ -124,33 +125,37 @@ void Recorder::appendRows(QByteArray& out, const std::vector<MtData2Sample>& mes
         if (!sample)
             continue;
         if (!headerWritten_) {
-            out += csvHeader(*sample);
+            format_ = LiveCsvFormat::following(*sample);
+            out += format_.header();
             headerWritten_ = true;
         }
-        appendRow(out, *sample);
+        format_.appendRow(out, *sample);
     }
 }
 
-QByteArray Recorder::csvHeader(const LiveSample& first)
+LiveCsvFormat LiveCsvFormat::following(const LiveSample& first)
 {
-    withMag_ = first.imu.hasMag();
-    withPressure_ = first.imu.hasPressure();
+    return {first.imu.hasMag(), first.imu.hasPressure()};
+}
+
+QByteArray LiveCsvFormat::header() const
+{
     QByteArray header = "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z";
-    if (withMag_)
+    if (withMag)
         header += ",mag_x,mag_y,mag_z";
-    if (withPressure_)
+    if (withPressure)
         header += ",pressure_pa";
     return header + ",packet_counter\n";
 }
 
-void Recorder::appendRow(QByteArray& out, const LiveSample& sample) const
+void LiveCsvFormat::appendRow(QByteArray& out, const LiveSample& sample) const
 {
     appendNumber(out, sample.imu.time_s);
     appendVector(out, sample.imu.acc_mps2);
     appendVector(out, sample.imu.gyr_radps);
-    if (withMag_)
+    if (withMag)
         appendVector(out, sample.imu.mag);
-    if (withPressure_) {
+    if (withPressure) {
         out.append(',');
         appendNumber(out, sample.imu.pressure_pa);
     }
@@ -158,6 +163,20 @@ void Recorder::appendRow(QByteArray& out, const LiveSample& sample) const
     if (sample.packetCounter)  // readers take time from time_s; an empty counter cell is ignored
         out.append(QByteArray::number(*sample.packetCounter));
     out.append('\n');
+}
+
+QString writeSamplesCsv(const QString& path, const std::vector<LiveSample>& samples)
+{
+    if (samples.empty())
+        return tr("%1: there are no samples to save").arg(QDir::toNativeSeparators(path));
+    const LiveCsvFormat format = LiveCsvFormat::following(samples.front());
+    QByteArray text = format.header();
+    for (const LiveSample& sample : samples)
+        format.appendRow(text, sample);
+    QSaveFile file(path);  // all or nothing: a failed save leaves no truncated file
+    if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size() || !file.commit())
+        return tr("cannot save %1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
+    return {};
 }
 
 bool Recorder::writeAll(QFile& file, const QByteArray& bytes)

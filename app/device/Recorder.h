@@ -12,6 +12,21 @@
 
 namespace footpath {
 
+/// The canonical CSV of live samples: time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z[,mag_x,mag_y,mag_z]
+/// [,pressure_pa],packet_counter, the optional columns as the first sample has them. Numbers are
+/// the shortest text that reads back as the same double.
+struct LiveCsvFormat {
+    bool withMag = false;
+    bool withPressure = false;
+    static LiveCsvFormat following(const LiveSample& first);
+    QByteArray header() const;
+    void appendRow(QByteArray& out, const LiveSample& sample) const;
+};
+
+/// Saves samples kept in memory (a session that was not recorded) as that CSV, which the workspace
+/// opens as a recording. Returns an error naming the file, or empty.
+QString writeSamplesCsv(const QString& path, const std::vector<LiveSample>& samples);
+
 /// Writes a live session to disk as it arrives: the raw bytes to an .mtb file (after a
 /// Configuration message describing the device, as Xsens loggers do, so that importers and MT
 /// Manager recognise it) and the decoded samples to a CSV with the canonical columns
@@ -55,9 +70,7 @@ private:
     bool openFile(QFile& file, const QString& path);
     bool writeAll(QFile& file, const QByteArray& bytes);
     bool fail(QFile& file, const QString& what);
-    QByteArray csvHeader(const LiveSample& first);
     void appendRows(QByteArray& out, const std::vector<MtData2Sample>& messages);
-    void appendRow(QByteArray& out, const LiveSample& sample) const;
 
     RecordingPaths paths_;
     QFile mtb_;
@@ -65,8 +78,7 @@ private:
     QString error_;
     SampleAssembler assembler_;
     bool headerWritten_ = false;
-    bool withMag_ = false;
-    bool withPressure_ = false;
+    LiveCsvFormat format_;
     bool dirty_ = false;
     std::uint64_t rawBytes_ = 0;
     std::uint64_t rows_ = 0;

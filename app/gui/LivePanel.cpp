@@ -3,21 +3,31 @@
 #include "LiveViews.h"
 #include "PortDiscovery.h"
 #include "ReconnectOffer.h"
+#include "Recorder.h"
+#include "WarningOverlay.h"
+#include "nav/Plausibility.h"
 #include "nav/StreamingEstimator.h"
 
 #include <QComboBox>
+#include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QScrollArea>
+#include <QSettings>
 #include <QSpinBox>
+#include <QStyle>
+#include <QToolButton>
 #include <QSplitter>
+#include <QStandardPaths>
 #include <QTabWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -27,6 +37,32 @@ namespace footpath {
 namespace {
 
 constexpr int kViewInterval_ms = 200;  // at most 5 redraws per second
+const char* const kRecordingFolderKey = "live/recordingFolder";
+
+/// Where recordings go: the folder of the last one, else the documents folder.
+QString recordingFolder()
+{
+    const QString last = QSettings().value(QLatin1String(kRecordingFolderKey)).toString();
+    if (!last.isEmpty() && QFileInfo(last).isDir())
+        return last;
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    return documents.isEmpty() ? QDir::homePath() : documents;
+}
+
+void rememberRecordingFolder(const QString& filePath)
+{
+    QSettings().setValue(QLatin1String(kRecordingFolderKey), QFileInfo(filePath).absolutePath());
+}
+
+/// `path`, or with -2, -3, ... before the suffix when that name is taken: never overwrite a walk.
+QString freePath(const QString& path)
+{
+    const QFileInfo file(path);
+    QString candidate = path;
+    for (int number = 2; QFileInfo::exists(candidate); ++number)
+        candidate = file.dir().filePath(QStringLiteral("%1-%2.%3").arg(file.completeBaseName()).arg(number).arg(file.suffix()));
+    return candidate;
+}
 
 QLabel* valueLabel(QWidget* parent)
 {
@@ -53,6 +89,12 @@ void moveTabs(QTabWidget* from, QTabWidget* to)
 }
 
 }  // namespace
+
+QString defaultRecordingName(const QString& deviceId, const QDateTime& when)
+{
+    const QString stamp = when.toString(QStringLiteral("yyyy-MM-dd-HHmm"));
+    return deviceId.isEmpty() ? QStringLiteral("MTi-%1.mtb").arg(stamp) : QStringLiteral("MTi-%1-%2.mtb").arg(deviceId, stamp);
+}
 
 QString continuationPath(const QString& mtbPath)
 {
@@ -94,11 +136,17 @@ void LivePanel::buildUi()
     port_->setObjectName(QStringLiteral("livePort"));
     port_->setToolTip(tr("A serial port, or type a path such as the emulator's pseudo-terminal"));
     port_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    auto* refresh = new QPushButton(tr("Refresh"), this);
-    connect(refresh, &QPushButton::clicked, this, &LivePanel::refreshPorts);
+    port_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    port_->setMinimumContentsLength(8);
+    auto* refresh = new QToolButton(this);  // an icon: the dock is often narrow
+    refresh->setIcon(style()->standardIcon(QStyle::SP_BrowserReload));
+    refresh->setToolTip(tr("Refresh the list of ports"));
+    connect(refresh, &QToolButton::clicked, this, &LivePanel::refreshPorts);
 
     baud_ = new QComboBox(this);
     baud_->setObjectName(QStringLiteral("liveBaud"));
+    baud_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    baud_->setMinimumContentsLength(6);
     baud_->addItem(tr("Auto (probe)"), 0);
     for (int baud : {115200, 230400, 460800, 921600})
         baud_->addItem(QString::number(baud), baud);
@@ -115,26 +163,47 @@ void LivePanel::buildUi()
     record_ = new QPushButton(tr("Record..."), this);
     record_->setObjectName(QStringLiteral("liveRecord"));
     connect(record_, &QPushButton::clicked, this, &LivePanel::onRecordClicked);
+    save_ = new QPushButton(tr("Save..."), this);
+    save_->setObjectName(QStringLiteral("liveSave"));
+    save_->setToolTip(tr("Save the samples received in the last session (kept in memory) as a CSV file and open it "
+                         "as a recorded walk: for a session that was not recorded"));
+    connect(save_, &QPushButton::clicked, this, &LivePanel::onSaveClicked);
 
     auto* portRow = new QHBoxLayout;
     portRow->addWidget(port_, 1);
     portRow->addWidget(refresh);
     auto* settings = new QFormLayout;
+    settings->setRowWrapPolicy(QFormLayout::WrapLongRows);
     settings->addRow(tr("Port:"), portRow);
     settings->addRow(tr("Baud:"), baud_);
     settings->addRow(tr("Rate:"), rate_);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(connect_);
-    buttons->addWidget(record_);
+    // Two rows, so the panel fits a narrow dock.
+    auto* buttons = new QGridLayout;
+    buttons->addWidget(connect_, 0, 0, 1, 2);
+    buttons->addWidget(record_, 1, 0);
+    buttons->addWidget(save_, 1, 1);
     settings->addRow(buttons);
 
     status_ = new QLabel(tr("Not connected"), this);
+    status_->setObjectName(QStringLiteral("liveStatus"));
     status_->setWordWrap(true);
+    QFont stateFont = status_->font();
+    stateFont.setBold(true);
+    status_->setFont(stateFont);
+    // Where a failed connection says why: a red banner under the state line, not small print.
+    error_ = new QLabel(this);
+    error_->setObjectName(QStringLiteral("liveError"));
+    error_->setWordWrap(true);
+    error_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    error_->setStyleSheet(QStringLiteral("QLabel { background: #fde2e1; color: #7a1010; border: 1px solid #e0a0a0; "
+                                         "border-radius: 4px; padding: 6px; }"));
+    error_->hide();
     reconnect_ = new ReconnectOffer(this);
     connect(reconnect_, &ReconnectOffer::reconnectRequested, this, &LivePanel::onReconnect);
 
     auto* device = new QGroupBox(tr("Device"), this);
     auto* deviceForm = new QFormLayout(device);
+    deviceForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
     deviceId_ = valueLabel(device);
     productCode_ = valueLabel(device);
     firmware_ = valueLabel(device);
@@ -146,6 +215,7 @@ void LivePanel::buildUi()
 
     auto* counters = new QGroupBox(tr("Counters"), this);
     auto* countersForm = new QFormLayout(counters);
+    countersForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
     samplesLabel_ = valueLabel(counters);
     lostLabel_ = valueLabel(counters);
     checksumLabel_ = valueLabel(counters);
@@ -165,6 +235,7 @@ void LivePanel::buildUi()
     auto* content = new QWidget;
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // rows wrap to the dock's width instead
     scroll->setFrameShape(QFrame::NoFrame);
     auto* outer = new QVBoxLayout(this);
     outer->setContentsMargins(0, 0, 0, 0);
@@ -173,6 +244,7 @@ void LivePanel::buildUi()
     contentLayout_ = layout;
     layout->addLayout(settings);
     layout->addWidget(status_);
+    layout->addWidget(error_);
     layout->addWidget(reconnect_);
     layout->addWidget(device);
     layout->addWidget(counters);
@@ -184,12 +256,14 @@ void LivePanel::buildUi()
     viewTimer_->setInterval(kViewInterval_ms);
     connect(viewTimer_, &QTimer::timeout, this, [this] { refreshViews(); });
     showEstimateFigures();
+    updateNotice();
 }
 
 QWidget* LivePanel::buildEstimateBox()
 {
     auto* box = new QGroupBox(tr("Estimate"), this);
     auto* form = new QFormLayout(box);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     latency_ = valueLabel(box);
     latency_->setObjectName(QStringLiteral("liveLatency"));
     latency_->setToolTip(tr("The stance detector looks this far ahead (its windows are centred on each sample, and a "
@@ -198,11 +272,24 @@ QWidget* LivePanel::buildEstimateBox()
     estimateState_ = valueLabel(box);
     estimateState_->setWordWrap(true);
     steps_ = valueLabel(box);
+    steps_->setObjectName(QStringLiteral("liveSteps"));
     distance_ = valueLabel(box);
+    distance_->setObjectName(QStringLiteral("liveDistance"));
+    duration_ = valueLabel(box);
+    duration_->setObjectName(QStringLiteral("liveDuration"));
+    endToStart_ = valueLabel(box);
+    endToStart_->setObjectName(QStringLiteral("liveEndToStart"));
+    endToStart_->setToolTip(tr("Horizontal distance from the start to where the foot is now"));
+    warnings_ = valueLabel(box);
+    warnings_->setObjectName(QStringLiteral("liveWarnings"));
+    warnings_->setWordWrap(true);
     form->addRow(tr("Latency:"), latency_);
     form->addRow(tr("State:"), estimateState_);
     form->addRow(tr("Steps:"), steps_);
     form->addRow(tr("Distance:"), distance_);
+    form->addRow(tr("Duration:"), duration_);
+    form->addRow(tr("End to start:"), endToStart_);
+    form->addRow(tr("Warnings:"), warnings_);
     return box;
 }
 
@@ -232,6 +319,7 @@ void LivePanel::wireSession()
     connect(session_, &DeviceSession::countersChanged, this, &LivePanel::onCounters);
     connect(session_, &DeviceSession::recordingStarted, this, [this](const RecordingPaths& paths) {
         recordingActive_ = true;
+        sessionRecordedFromStart_ = sessionRecordedFromStart_ || received_.empty();
         recordingPath_ = paths.mtb;
         status_->setText(tr("Recording to %1").arg(QDir::toNativeSeparators(paths.mtb)));
         updateButtons();
@@ -266,9 +354,13 @@ void LivePanel::connectTo(const QString& port)
     if (!recordingPath_.isEmpty() && !recordingActive_)
         settings.recording = recordingPathsFor(recordingPath_);  // asked before connecting: from the first sample on
     received_.clear();
+    samplesSaved_ = false;
+    sessionRecordedFromStart_ = !settings.recording.isEmpty();
+    error_->hide();
     restartEstimate();
     lastResult_.reset();
     views_->clear();
+    views_->setSummaryLine({});
     session_->start(settings);
     viewTimer_->start();
     updateButtons();
@@ -338,9 +430,12 @@ void LivePanel::onConnectClicked()
         if (index >= 0 && port_->itemData(index).isValid())
             port = port_->itemData(index).toString();
         if (port.isEmpty()) {
-            status_->setText(tr("Choose a port or type its path."));
+            status_->setText(tr("Not connected"));
+            showError(tr("Choose a port or type its path."));
             return;
         }
+        if (hasUnsavedSamples() && !confirmDiscardingSamples())
+            return;
         connectTo(port);
     } else {
         disconnectDevice();
@@ -353,12 +448,103 @@ void LivePanel::onRecordClicked()
         stopRecording();
         return;
     }
-    const QString path = QFileDialog::getSaveFileName(this, tr("Record to"), QDir::homePath(),
+    const QString path = QFileDialog::getSaveFileName(this, tr("Record to"), suggestedRecordingPath(),
                                                       tr("Xsens MT binary (*.mtb)"));
     if (path.isEmpty())
         return;
+    rememberRecordingFolder(path);
     startRecordingTo(path.endsWith(QStringLiteral(".mtb"), Qt::CaseInsensitive) ? path
                                                                                    : path + QStringLiteral(".mtb"));
+}
+
+QString LivePanel::suggestedRecordingPath() const
+{
+    const std::uint64_t id = session_->deviceInfo().deviceId;
+    const QString name = defaultRecordingName(id != 0 ? session_->deviceInfo().deviceIdText() : QString(),
+                                              QDateTime::currentDateTime());
+    return freePath(QDir(recordingFolder()).filePath(name));
+}
+
+bool LivePanel::hasUnsavedSamples() const
+{
+    return !received_.empty() && !sessionRecordedFromStart_ && !samplesSaved_;
+}
+
+QString LivePanel::errorText() const
+{
+    return error_->isHidden() ? QString() : error_->text();
+}
+
+QString LivePanel::statusText() const
+{
+    return status_->text();
+}
+
+QString LivePanel::saveSamplesTo(const QString& csvPath)
+{
+    const QString error = writeSamplesCsv(csvPath, received_);
+    if (!error.isEmpty()) {
+        showError(error);
+        return error;
+    }
+    samplesSaved_ = true;
+    status_->setText(tr("Samples saved to %1").arg(QDir::toNativeSeparators(csvPath)));
+    emit recordingFinished(csvPath);  // opened as a recorded walk, as a finished recording is
+    return {};
+}
+
+void LivePanel::onSaveClicked()
+{
+    const QString suggested = QFileInfo(suggestedRecordingPath()).completeBaseName() + QStringLiteral(".csv");
+    QString path = QFileDialog::getSaveFileName(this, tr("Save samples"), QDir(recordingFolder()).filePath(suggested),
+                                                tr("CSV (*.csv)"));
+    if (path.isEmpty())
+        return;
+    if (!path.endsWith(QStringLiteral(".csv"), Qt::CaseInsensitive))
+        path += QStringLiteral(".csv");
+    rememberRecordingFolder(path);
+    saveSamplesTo(path);
+    updateButtons();
+}
+
+/// Connecting again clears the samples in memory: the user saves them first or agrees to lose them.
+bool LivePanel::confirmDiscardingSamples()
+{
+    const QMessageBox::StandardButton answer = QMessageBox::question(
+        this, tr("Unsaved samples"),
+        tr("The last session's %1 samples were not recorded. Save them before connecting again?").arg(received_.size()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        onSaveClicked();
+    return answer == QMessageBox::Discard || (answer == QMessageBox::Save && samplesSaved_);
+}
+
+void LivePanel::showError(const QString& message)
+{
+    error_->setText(message);
+    error_->setVisible(!message.isEmpty());
+}
+
+/// What the empty live views say: why there is nothing to see yet.
+void LivePanel::updateNotice()
+{
+    if (!received_.empty()) {
+        views_->setNotice({});
+        return;
+    }
+    switch (session_->state()) {
+    case SessionState::Idle:
+        views_->setNotice(error_->isHidden() ? tr("Not connected: choose a port and Connect (Live input panel)")
+                                             : tr("Not connected: %1").arg(error_->text()));
+        break;
+    case SessionState::Initialising:
+        views_->setNotice(tr("Connecting to %1...").arg(QDir::toNativeSeparators(lastPort_)));
+        break;
+    case SessionState::Streaming:
+    case SessionState::Stopping:
+        views_->setNotice(tr("Connected: waiting for samples..."));
+        break;
+    }
 }
 
 void LivePanel::onReconnect()
@@ -383,6 +569,7 @@ void LivePanel::onStateChanged(SessionState state)
         status_->setText(tr("Stopping..."));
         break;
     }
+    updateNotice();
     updateButtons();
 }
 
@@ -391,6 +578,7 @@ void LivePanel::onSamplesAvailable()
     std::vector<LiveSample> batch = session_->takeSamples();
     if (batch.empty())
         return;
+    const bool first = received_.empty();
     received_.reserve(received_.size() + batch.size());
     for (LiveSample& sample : batch) {
         if (estimator_)
@@ -398,6 +586,8 @@ void LivePanel::onSamplesAvailable()
         received_.push_back(std::move(sample));
     }
     viewsDirty_ = true;
+    if (first)
+        updateNotice();
 }
 
 void LivePanel::onCounters(const DeviceCounters& counters)
@@ -434,7 +624,9 @@ void LivePanel::onEnded(SessionEnd how, const QString& message)
     else if (how == SessionEnd::Vanished)
         status_->setText(tr("Disconnected: the port went away."));  // the reconnect offer has the details
     else
-        status_->setText(tr("Session ended: %1").arg(message));
+        status_->setText(received_.empty() ? tr("Not connected") : tr("Disconnected: the session failed"));
+    if (how == SessionEnd::Failed)
+        showError(message.isEmpty() ? tr("The connection failed.") : message);
     const bool recordingCut = recordingActive_ || recordingCutBySessionEnd_;
     recordingCutBySessionEnd_ = false;
     if (recordingActive_) {
@@ -451,6 +643,8 @@ void LivePanel::onEnded(SessionEnd how, const QString& message)
         }
         reconnect_->offer(lastPort_, message, continuation);
     }
+    showEstimateFigures();
+    updateNotice();
     updateButtons();
 }
 
@@ -481,19 +675,47 @@ void LivePanel::showEstimateFigures()
 {
     latency_->setText(tr("%1 s").arg(latency_s(), 0, 'f', 3));
     if (!estimator_ || received_.empty()) {
-        estimateState_->setText(tr("Waiting for samples"));
+        estimateState_->setText(session_->state() == SessionState::Idle ? tr("Not connected") : tr("Waiting for samples"));
         return;
     }
     if (session_->state() == SessionState::Idle && estimator_->pendingSamples() == 0 && estimator_->aligned())
         estimateState_->setText(tr("Complete: every sample estimated, as the offline analysis does"));
     else if (!estimator_->aligned())
-        estimateState_->setText(tr("Aligning: keep the foot still for the first %1 s").arg(params_.alignment_s, 0, 'g', 3));
+        estimateState_->setText(tr("Aligning: keep the foot still for %1 s (a walk already under way is aligned at "
+                                   "its first stance)").arg(params_.alignment_s, 0, 'g', 3));
     else if (!estimator_->result().time_s.empty())
-        estimateState_->setText(tr("Estimating, %1 s behind the sensor")
+        estimateState_->setText(tr("Estimating (%1 s behind)")
                                     .arg(received_.back().imu.time_s - estimator_->result().time_s.back(), 0, 'f', 3));
-    const Summary& summary = estimator_->result().summary;
+    showLiveSummary();
+}
+
+/// The live session's own figures (the workspace's summary is of the recorded walk).
+void LivePanel::showLiveSummary()
+{
+    const Result& result = estimator_->result();
+    const Summary& summary = result.summary;
     steps_->setText(QString::number(summary.steps));
     distance_->setText(tr("%1 m").arg(summary.pathLength_m, 0, 'f', 2));
+    duration_->setText(tr("%1 s").arg(received_.back().imu.time_s - received_.front().imu.time_s, 0, 'f', 1));
+    endToStart_->setText(result.time_s.empty() ? QStringLiteral("-") : tr("%1 m").arg(summary.endToStart_m, 0, 'f', 2));
+    // While streaming the checks run on the estimate so far; at the end the estimator has them.
+    const std::vector<PlausibilityWarning> warnings =
+        session_->state() == SessionState::Idle || result.time_s.empty() ? result.warnings : checkPlausibility(result, params_);
+    QStringList kinds;
+    for (const PlausibilityWarning& warning : warnings)
+        if (!kinds.contains(warningLabel(warning.kind)))
+            kinds << warningLabel(warning.kind);
+    warnings_->setText(warnings.empty() ? tr("none") : tr("%1 (%2)").arg(warnings.size()).arg(kinds.join(QStringLiteral(", "))));
+    QStringList messages;
+    for (const PlausibilityWarning& warning : warnings)
+        messages << QString::fromStdString(warning.message);
+    warnings_->setToolTip(messages.join(QStringLiteral("\n\n")));
+    views_->setSummaryLine(tr("Live: %1 steps, %2 m, %3 s, end to start %4 m, warnings: %5")
+                               .arg(summary.steps)
+                               .arg(summary.pathLength_m, 0, 'f', 1)
+                               .arg(received_.back().imu.time_s - received_.front().imu.time_s, 0, 'f', 0)
+                               .arg(summary.endToStart_m, 0, 'f', 1)
+                               .arg(warnings_->text()));
 }
 
 void LivePanel::updateButtons()
@@ -505,6 +727,7 @@ void LivePanel::updateButtons()
     rate_->setEnabled(idle);
     const bool recording = recordingActive_ || (!recordingPath_.isEmpty() && idle);
     record_->setText(recording ? tr("Stop recording") : tr("Record..."));
+    save_->setEnabled(idle && !received_.empty());
 }
 
 }  // namespace footpath

@@ -10,6 +10,7 @@
 #include <vector>
 
 class QComboBox;
+class QDateTime;
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -60,6 +61,18 @@ public:
     std::shared_ptr<const Result> lastResult() const { return lastResult_; }
     /// How far the estimate trails the newest sample: the detector's look-ahead.
     double latency_s() const;
+    /// Where Record... proposes to write: the folder of the last recording (else the documents
+    /// folder), named after the device and the time (MTi-<device id>-2026-11-25-1432.mtb).
+    QString suggestedRecordingPath() const;
+    /// Writes the samples of this (or the last) session to `csvPath`, for a session that was not
+    /// recorded; the workspace is asked to open it. Returns an error, or empty.
+    QString saveSamplesTo(const QString& csvPath);
+    /// Samples received that are neither recorded nor saved (lost by the next Connect).
+    bool hasUnsavedSamples() const;
+    /// The error of the last session that failed (a bad port), shown in a banner; empty if none.
+    QString errorText() const;
+    /// The state line ("Not connected", "Streaming", ...).
+    QString statusText() const;
 
 signals:
     /// A recording was closed (stopped, or the session ended); `mtbPath` can be opened.
@@ -76,6 +89,10 @@ private:
     void refreshPorts();
     void onConnectClicked();
     void onRecordClicked();
+    void onSaveClicked();
+    bool confirmDiscardingSamples();
+    void showError(const QString& message);
+    void updateNotice();
     void onReconnect();
     void onStateChanged(SessionState state);
     void onSamplesAvailable();
@@ -86,6 +103,7 @@ private:
     void restartEstimate();
     void refreshViews(bool force = false);
     void showEstimateFigures();
+    void showLiveSummary();
     void updateButtons();
 
     DeviceSession* session_;
@@ -94,6 +112,8 @@ private:
     QSpinBox* rate_ = nullptr;
     QPushButton* connect_ = nullptr;
     QPushButton* record_ = nullptr;
+    QPushButton* save_ = nullptr;
+    QLabel* error_ = nullptr;
     QLabel* status_ = nullptr;
     ReconnectOffer* reconnect_ = nullptr;
     QLabel* deviceId_ = nullptr;
@@ -108,6 +128,9 @@ private:
     QLabel* estimateState_ = nullptr;
     QLabel* steps_ = nullptr;
     QLabel* distance_ = nullptr;
+    QLabel* duration_ = nullptr;
+    QLabel* endToStart_ = nullptr;
+    QLabel* warnings_ = nullptr;
     QVBoxLayout* contentLayout_ = nullptr;
     QSplitter* viewArea_ = nullptr;
     LiveViews* views_ = nullptr;
@@ -124,7 +147,12 @@ private:
     bool recordingActive_ = false;
     bool recordingStopAsked_ = false;        ///< by the user, through stopRecording()
     bool recordingCutBySessionEnd_ = false;  ///< a reconnect after a vanished port continues it
+    bool sessionRecordedFromStart_ = false;  ///< every received sample is in a recording
+    bool samplesSaved_ = false;              ///< saveSamplesTo() wrote them
 };
+
+/// "MTi-<device id>-2026-11-25-1432.mtb" ("MTi-2026-..." before a device answered).
+QString defaultRecordingName(const QString& deviceId, const QDateTime& when);
 
 /// Where a recording interrupted by a vanished port continues: "walk.mtb" -> "walk-2.mtb", or
 /// the next number whose .mtb and .csv do not exist yet.

@@ -5,6 +5,8 @@
 #include "TrajectoryView2D.h"
 #include "TrajectoryView3D.h"
 
+#include <QEvent>
+#include <QLabel>
 #include <QTabWidget>
 
 #include <algorithm>
@@ -25,6 +27,55 @@ std::vector<T> tailFrom(const std::vector<T>& values, std::size_t first)
 {
     return first < values.size() ? std::vector<T>(values.begin() + static_cast<std::ptrdiff_t>(first), values.end())
                                  : std::vector<T>();
+}
+
+/// A label centred over its parent view that follows the parent's size.
+class CentredNotice : public QLabel {
+public:
+    explicit CentredNotice(QWidget* view) : QLabel(view)
+    {
+        setObjectName(QStringLiteral("liveNotice"));
+        setAlignment(Qt::AlignCenter);
+        setWordWrap(true);
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setStyleSheet(QStringLiteral("QLabel { background: rgba(255, 255, 255, 230); color: #303030; "
+                                     "border: 1px solid #a0a0a0; border-radius: 6px; padding: 12px; }"));
+        QFont bigger = font();
+        bigger.setPointSizeF(bigger.pointSizeF() * 1.25);
+        setFont(bigger);
+        view->installEventFilter(this);
+        hide();
+    }
+
+    void place()
+    {
+        const QWidget* view = parentWidget();
+        const int width = std::min(view->width() - 20, 520);
+        const int height = heightForWidth(width) > 0 ? heightForWidth(width) : sizeHint().height();
+        setGeometry((view->width() - width) / 2, (view->height() - height) / 2, width, height);
+        raise();
+    }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (watched == parentWidget() && (event->type() == QEvent::Resize || event->type() == QEvent::Show))
+            place();
+        return false;
+    }
+};
+
+/// A one-line label in the top left corner of its parent view (over the plot's margin).
+QLabel* cornerNote(QWidget* view)
+{
+    auto* label = new QLabel(view);
+    label->setObjectName(QStringLiteral("liveSummaryLine"));
+    label->setAttribute(Qt::WA_TransparentForMouseEvents);
+    label->setStyleSheet(QStringLiteral("QLabel { background: rgba(255, 255, 255, 215); color: #202020; "
+                                        "border: 1px solid #c0c0c0; border-radius: 3px; padding: 2px 6px; }"));
+    label->move(8, 6);
+    label->hide();
+    return label;
 }
 
 }  // namespace
@@ -84,7 +135,45 @@ LiveViews::LiveViews(QWidget* parent)
     signalTabs_->addTab(signals_, tr("Live signals"));
     signalTabs_->addTab(flags_, tr("Live detector"));
     flags_->setParameters(Parameters{});
+    for (QWidget* view : {static_cast<QWidget*>(trajectory2D_), static_cast<QWidget*>(trajectory3D_),
+                          static_cast<QWidget*>(signals_), static_cast<QWidget*>(flags_)})
+        noticeLabels_.push_back(new CentredNotice(view));
+    for (QWidget* view : {static_cast<QWidget*>(trajectory2D_), static_cast<QWidget*>(trajectory3D_)})
+        summaryLabels_.push_back(cornerNote(view));
     sincePathUpdate_.start();
+}
+
+void LiveViews::setNotice(const QString& text)
+{
+    notice_ = text;
+    for (QLabel* label : noticeLabels_) {
+        label->setText(text);
+        label->setVisible(!text.isEmpty());
+        static_cast<CentredNotice*>(label)->place();
+    }
+}
+
+void LiveViews::setSummaryLine(const QString& text)
+{
+    for (QLabel* label : summaryLabels_) {
+        label->setText(text);
+        label->adjustSize();
+        label->setVisible(!text.isEmpty());
+        label->raise();
+    }
+}
+
+QString LiveViews::summaryLine() const
+{
+    return summaryLabels_.empty() ? QString() : summaryLabels_.front()->text();
+}
+
+QLabel* LiveViews::noticeLabel(QWidget* view) const
+{
+    for (QLabel* label : noticeLabels_)
+        if (label->parentWidget() == view)
+            return label;
+    return nullptr;
 }
 
 void LiveViews::clear()

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+class QLabel;
 class QTabWidget;
 class QWidget;
 
@@ -43,6 +44,16 @@ public:
 
     /// Empties every view for a new session.
     void clear();
+    /// A notice in the middle of every view saying why it is empty ("Not connected: choose a
+    /// port and Connect"); an empty text hides it.
+    void setNotice(const QString& text);
+    QString notice() const { return notice_; }
+    /// The live session's figures in a line at the top of the path views, where the user looks
+    /// while walking (the workspace's summary is of the recorded walk); empty hides it.
+    void setSummaryLine(const QString& text);
+    QString summaryLine() const;
+    /// The label showing the notice over `view` (one of the four views).
+    QLabel* noticeLabel(QWidget* view) const;
     /// Thresholds and the window of the std of |a| in the lanes' input rows.
     void setParameters(const Parameters& params);
 
@@ -60,6 +71,9 @@ private:
     StanceFlagsPlot* flags_;
     QTabWidget* trajectoryTabs_;
     QTabWidget* signalTabs_;
+    std::vector<QLabel*> noticeLabels_;  ///< one over each view
+    std::vector<QLabel*> summaryLabels_;  ///< one in each path view
+    QString notice_;
     QElapsedTimer sincePathUpdate_;
     qint64 lastPathUpdateCost_ms_ = 0;
 };

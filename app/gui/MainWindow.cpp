@@ -3,14 +3,17 @@
 #include "AnalysisSession.h"
 #include "AppSettings.h"
 #include "ComparisonPanel.h"
+#include "HelpDialog.h"
 #include "ImportDialog.h"
 #include "LivePanel.h"
 #include "LiveViews.h"
 #include "ParameterPanel.h"
 #include "RecordedInputPanel.h"
 #include "RecordingLoader.h"
+#include "RunHistory.h"
 #include "SignalPlots.h"
 #include "StanceFlagsPlot.h"
+#include "StatePlots.h"
 #include "SummaryPanel.h"
 #include "TrajectoryView2D.h"
 #include "TrajectoryView3D.h"
@@ -95,16 +98,19 @@ void MainWindow::createViews()
 {
     signalPlots_ = new SignalPlots(this);
     flags_ = new StanceFlagsPlot(this);
+    statePlots_ = new StatePlots(this);
     trajectory2D_ = new TrajectoryView2D(this);
     trajectory3D_ = new TrajectoryView3D(this);
     // Named, as the live panel's views of the same types share the tab widgets.
     signalPlots_->setObjectName(QStringLiteral("signalPlots"));
     flags_->setObjectName(QStringLiteral("stanceFlags"));
+    statePlots_->setObjectName(QStringLiteral("statePlots"));
     trajectory2D_->setObjectName(QStringLiteral("trajectory2D"));
     trajectory3D_->setObjectName(QStringLiteral("trajectory3D"));
     signalTabs_ = new QTabWidget(this);
     signalTabs_->addTab(signalPlots_, tr("Signals"));
     signalTabs_->addTab(flags_, tr("Stance detector"));
+    signalTabs_->addTab(statePlots_, tr("States"));
     trajectoryTabs_ = new QTabWidget(this);
     trajectoryTabs_->addTab(trajectory2D_, tr("Trajectory 2D"));
     trajectoryTabs_->addTab(trajectory3D_, tr("Trajectory 3D"));
@@ -139,7 +145,11 @@ void MainWindow::createDocks()
     tabifyDockWidget(inputDock, liveDock);
     inputDock->raise();
     dock(this, tr("Parameters"), "parametersDock", parameters_, Qt::RightDockWidgetArea);
-    dock(this, tr("Summary"), "summaryDock", summary_, Qt::BottomDockWidgetArea);
+    QDockWidget* summaryDock = dock(this, tr("Summary"), "summaryDock", summary_, Qt::BottomDockWidgetArea);
+    history_ = new RunHistory(this);
+    historyPanel_ = new RunHistoryPanel(history_, this);
+    tabifyDockWidget(summaryDock, dock(this, tr("History"), "historyDock", historyPanel_, Qt::BottomDockWidgetArea));
+    summaryDock->raise();
 }
 
 void MainWindow::connectLive(const QString& port)
@@ -155,7 +165,18 @@ void MainWindow::createMenus()
     createEditMenu();
     createViewMenu();
     createSettingsMenu();
+    createHelpMenu();
+}
+
+void MainWindow::createHelpMenu()
+{
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->setObjectName(QStringLiteral("helpMenu"));
+    QAction* guide = help->addAction(tr("&User guide"), QKeySequence::HelpContents, this, [this] { showHelp(false); });
+    guide->setObjectName(QStringLiteral("userGuide"));
+    QAction* keys = help->addAction(tr("&Keyboard shortcuts"), this, [this] { showHelp(true); });
+    keys->setObjectName(QStringLiteral("keyboardShortcuts"));
+    help->addSeparator();
     help->addAction(tr("&About Footpath"), this, [this] {
         QMessageBox::about(this, tr("About Footpath"),
                            tr("<b>Footpath %1</b><p>Foot-mounted inertial navigation: stance detection, "
@@ -164,6 +185,19 @@ void MainWindow::createMenus()
                               "Copyright (c) 2024 T\u0101-H\u0101.</p>")
                                .arg(QApplication::applicationVersion()));
     });
+}
+
+void MainWindow::showHelp(bool shortcuts)
+{
+    // One dialog, kept: the guide is read beside the window, not in a modal box in front of it.
+    auto* dialog = findChild<HelpDialog*>();
+    if (!dialog) {
+        dialog = new HelpDialog(menuBar()->actions(), HelpDialog::Page::Guide, this);
+        dialog->setObjectName(QStringLiteral("helpDialog"));
+    }
+    dialog->showPage(shortcuts ? HelpDialog::Page::Shortcuts : HelpDialog::Page::Guide);
+    dialog->show();
+    dialog->raise();
 }
 
 void MainWindow::createFileMenu()
@@ -190,8 +224,10 @@ void MainWindow::createEditMenu()
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = session_->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
+    undo->setProperty("helpText", tr("Undo the last change"));  // the action's own text names the change
     QAction* redo = session_->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setShortcut(QKeySequence::Redo);
+    redo->setProperty("helpText", tr("Redo"));
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
@@ -210,6 +246,8 @@ void MainWindow::createViewMenu()
                          [this] { signalTabs_->setCurrentWidget(signalPlots_); });
     viewMenu_->addAction(tr("Stance &detector"), QKeySequence(Qt::CTRL | Qt::Key_4), this,
                          [this] { signalTabs_->setCurrentWidget(flags_); });
+    viewMenu_->addAction(tr("S&tates"), QKeySequence(Qt::CTRL | Qt::Key_7), this,
+                         [this] { signalTabs_->setCurrentWidget(statePlots_); });
     viewMenu_->addAction(tr("&Live path"), QKeySequence(Qt::CTRL | Qt::Key_5), this,
                          [this] { trajectoryTabs_->setCurrentWidget(live_->views()->trajectory2D()); });
     viewMenu_->addAction(tr("Live si&gnals"), QKeySequence(Qt::CTRL | Qt::Key_6), this,
@@ -226,6 +264,8 @@ void MainWindow::showView(const QString& name)
         signalTabs_->setCurrentWidget(signalPlots_);
     else if (name == QLatin1String("detector"))
         signalTabs_->setCurrentWidget(flags_);
+    else if (name == QLatin1String("states"))
+        signalTabs_->setCurrentWidget(statePlots_);
     else if (name == QLatin1String("trajectory2d"))
         trajectoryTabs_->setCurrentWidget(trajectory2D_);
     else if (name == QLatin1String("trajectory3d"))
@@ -309,6 +349,12 @@ void MainWindow::wireSession()
         live_->setParameters(session_->parameters());  // tuning works on the live estimate too
     });
     connect(parameters_, &ParameterPanel::parameterEdited, session_, &AnalysisSession::setParameter);
+    // Runs of another recording are not comparable: the history and the ghost start afresh.
+    connect(session_, &AnalysisSession::recordingChanged, history_, &RunHistory::clear);
+    connect(history_, &RunHistory::currentChanged, this, &MainWindow::showGhost);
+    connect(historyPanel_, &RunHistoryPanel::runChosen, this, [this](const Parameters& params, int number) {
+        session_->setParameters(params, tr("Back to run %1").arg(number));  // undoable like any change
+    });
     connect(parameters_, &ParameterPanel::parametersReplaced, session_, &AnalysisSession::setParameters);
     parameters_->setUndoStack(session_->undoStack());
 }
@@ -318,17 +364,21 @@ void MainWindow::wireViews()
     // One time cursor for every view: a click anywhere moves it everywhere.
     connect(signalPlots_, &SignalPlots::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
     connect(flags_, &StanceFlagsPlot::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
+    connect(statePlots_, &StatePlots::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
     connect(trajectory2D_, &TrajectoryView2D::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
     connect(summary_, &SummaryPanel::timeCursorRequested, this, &MainWindow::showMoment);
     connect(session_, &AnalysisSession::timeCursorChanged, this, [this](double t) {
         signalPlots_->setTimeCursor(t);
         flags_->setTimeCursor(t);
+        statePlots_->setTimeCursor(t);
         trajectory2D_->setTimeCursor(t);
         trajectory3D_->setTimeCursor(t);
     });
     // The signal and detector plots share their time axis.
     connect(signalPlots_, &SignalPlots::timeRangeChanged, flags_, &StanceFlagsPlot::setTimeRange);
     connect(flags_, &StanceFlagsPlot::timeRangeChanged, signalPlots_, &SignalPlots::setTimeRange);
+    connect(signalPlots_, &SignalPlots::timeRangeChanged, statePlots_, &StatePlots::setTimeRange);
+    connect(statePlots_, &StatePlots::timeRangeChanged, signalPlots_, &SignalPlots::setTimeRange);
 }
 
 ReportContent MainWindow::reportContent() const
@@ -517,6 +567,7 @@ void MainWindow::showResult()
     const std::shared_ptr<const Result> result = session_->result();
     signalPlots_->setResult(result);
     flags_->setResult(result);
+    statePlots_->setResult(result);
     summary_->setResult(result);
     if (!result) {
         trajectory2D_->clear();
@@ -531,8 +582,32 @@ void MainWindow::showResult()
                               : std::vector<Eigen::Vector3d>();
     trajectory2D_->setReference(reference);
     trajectory3D_->setReference(reference);
+    recordRun(result);
     showResultStatus(*result);
     emit resultShown();
+}
+
+void MainWindow::recordRun(const std::shared_ptr<const Result>& result)
+{
+    // The undo step that made this result: the results of one dragged slider update one run.
+    const QUndoStack* stack = session_->undoStack();
+    const int index = stack->index();
+    const void* gesture = index > 0 ? stack->command(index - 1) : nullptr;
+    history_->record(result, session_->parameters(), runFigures(*result, session_->recording().get()), gesture, index);
+}
+
+void MainWindow::showGhost()
+{
+    const Run* before = history_->previous();
+    const Run* now = history_->current();
+    const std::vector<Eigen::Vector3d> none;
+    const std::vector<Eigen::Vector3d>& ghost = before && before->result && now ? before->result->position_m : none;
+    trajectory2D_->setGhostPath(ghost);
+    trajectory3D_->setGhostPath(ghost);
+    if (before && now)
+        summary_->showChange(&before->figures, now->figures, now->change);
+    else
+        summary_->showChange(nullptr, RunFigures(), QString());
 }
 
 void MainWindow::showResultStatus(const Result& result)
@@ -578,20 +653,44 @@ void MainWindow::showEstimating(bool running)
         showStatus(tr("Estimating..."));
 }
 
+void MainWindow::placeOnScreen(const QRect& available)
+{
+    setWindowState(windowState() & ~Qt::WindowMaximized);
+    // Once shown the frame is known and goes inside the area too (before, there is none yet).
+    const QRect frame = frameGeometry(), client = geometry();
+    const QMargins margins(client.left() - frame.left(), client.top() - frame.top(), frame.right() - client.right(),
+                           frame.bottom() - client.bottom());
+    setGeometry(available.marginsRemoved(margins));
+}
+
 void MainWindow::restoreLayout()
 {
-    if (!restoreGeometry(settings_.windowGeometry())) {
-        // Never larger than the screen: on a 1280x800 laptop the window would hang off its edges.
-        const QSize available = screen() ? screen()->availableSize() : QSize(1400, 900);
-        resize(std::min(1400, available.width()), std::min(900, available.height()));
+    // A geometry saved on a larger screen, or on one no longer attached, would hang off the screen.
+    const bool restored = restoreGeometry(settings_.windowGeometry());
+    const QScreen* restoredOn = restored ? QGuiApplication::screenAt(frameGeometry().center()) : nullptr;
+    if (!restoredOn || !restoredOn->availableGeometry().contains(frameGeometry())) {
+        const QScreen* target = screen() ? screen() : QGuiApplication::primaryScreen();
+        placeOnScreen(target ? target->availableGeometry() : QRect(0, 0, 1280, 800));
+        // The frame is not known before the window is shown: a window manager that maximizes fits
+        // it, with its title bar, into the available area (and restores to the same area).
+        setWindowState(windowState() | Qt::WindowMaximized);
     }
     if (restoreState(settings_.windowState()))
         return;
-    // First start: the plots and the path get most of the height, the summary a third of it. Once
-    // shown, as docks are sized when the window is laid out.
+    // First start: the plots and the path get three quarters of the height, the summary and the
+    // history a quarter. Once shown, as docks are sized when the window is laid out; the user's
+    // sizes are saved with the dock state.
     QTimer::singleShot(0, this, [this] {
-        if (auto* summaryDock = findChild<QDockWidget*>(QStringLiteral("summaryDock")))
-            resizeDocks({summaryDock}, {height() / 3}, Qt::Vertical);
+        if (auto* summaryDock = findChild<QDockWidget*>(QStringLiteral("summaryDock"))) {
+            summaryDock->raise();  // in front of the history and the comparison it shares the area with
+            resizeDocks({summaryDock}, {height() * 22 / 100}, Qt::Vertical);  // with its tabs a quarter
+        }
+        // The side panels as narrow as they stay readable, so a 1280-pixel screen leaves the path
+        // and the signals more than a third of its width each.
+        auto* inputDock = findChild<QDockWidget*>(QStringLiteral("inputDock"));
+        auto* parametersDock = findChild<QDockWidget*>(QStringLiteral("parametersDock"));
+        if (inputDock && parametersDock)
+            resizeDocks({inputDock, parametersDock}, {std::max(200, width() / 7), width() / 6}, Qt::Horizontal);
     });
 }
 

@@ -22,8 +22,11 @@ class LivePanel;
 class ParameterPanel;
 class RecordedInputPanel;
 class RecordingLoader;
+class RunHistory;
+class RunHistoryPanel;
 class SignalPlots;
 class StanceFlagsPlot;
+class StatePlots;
 class SummaryPanel;
 class TrajectoryView2D;
 class TrajectoryView3D;
@@ -40,7 +43,7 @@ public:
     void connectLive(const QString& port);
     void openRecording(const QString& path, const ImportOptions& options = {});
     AnalysisSession* session() const { return session_; }
-    /// Brings a view to the front: "signals", "detector", "trajectory2d" or "trajectory3d";
+    /// Brings a view to the front: "signals", "detector", "states", "trajectory2d" or "trajectory3d";
     /// "motion" shows the detector (with the motion lane) and colours the paths by motion class.
     void showView(const QString& name);
     /// Colours the 2D and 3D paths: "none", "time", "speed" or "motion" (the 3D view knows motion only).
@@ -51,6 +54,12 @@ public:
     ComparisonPanel* comparisonPanel() const { return comparison_; }
     /// Writes the PDF report (with the comparison while its panel is open); an error message or empty.
     QString writeReport(const QString& path, QPageSize::PageSizeId pageSize = QPageSize::A4) const;
+    /// Fills the available area of a screen; the constructor calls it (and maximizes) with the
+    /// window's screen when no saved geometry fits there.
+    void placeOnScreen(const QRect& available);
+    RunHistory* runHistory() const { return history_; }
+    /// Help > User guide (false) or Keyboard shortcuts (true), not modal.
+    void showHelp(bool shortcuts);
 
 signals:
     /// A result is on screen (after each estimate); screenshots and tests wait for it.
@@ -70,6 +79,11 @@ private:
     void createViewMenu();
     void addPathColouringMenu();
     void createSettingsMenu();
+    void createHelpMenu();
+    /// Adds the result on screen to the history and shows the run before the last change as the
+    /// ghost path and the summary's before -> after.
+    void recordRun(const std::shared_ptr<const Result>& result);
+    void showGhost();
     void wireSession();
     void wireViews();
     void chooseRecording();
@@ -100,6 +114,7 @@ private:
     SummaryPanel* summary_ = nullptr;
     SignalPlots* signalPlots_ = nullptr;
     StanceFlagsPlot* flags_ = nullptr;
+    StatePlots* statePlots_ = nullptr;
     TrajectoryView2D* trajectory2D_ = nullptr;
     TrajectoryView3D* trajectory3D_ = nullptr;
     QTabWidget* signalTabs_ = nullptr;
@@ -109,6 +124,8 @@ private:
     QMenu* viewMenu_ = nullptr;
     ComparisonPanel* comparison_ = nullptr;
     QDockWidget* comparisonDock_ = nullptr;
+    RunHistory* history_ = nullptr;
+    RunHistoryPanel* historyPanel_ = nullptr;
 };
 
 }  // namespace footpath

@@ -2,7 +2,9 @@
 #include "AnalysisSession.h"
 #include "AppSettings.h"
 #include "ComparisonPanel.h"
+#include "ImportDialog.h"
 #include "MainWindow.h"
+#include "RecordingLoader.h"
 #include "Result.h"
 #include "io/ParameterIo.h"
 
@@ -43,7 +45,7 @@ QString readParameters(const QString& preset, const QStringList& assignments, fo
         const qsizetype equals = assignment.indexOf(QLatin1Char('='));
         if (equals <= 0)
             return QApplication::translate("main", "--set expects name=value, got '%1'").arg(assignment);
-        const std::string error = footpath::setParameter(params, assignment.left(equals).toStdString(),
+        const std::string error = footpath::setParameterByName(params, assignment.left(equals).toStdString(),
                                                          assignment.mid(equals + 1).toStdString());
         if (!error.empty())
             return QString::fromStdString(error);
@@ -52,43 +54,111 @@ QString readParameters(const QString& preset, const QStringList& assignments, fo
     return problems.empty() ? QString() : QString::fromStdString(problems.front());
 }
 
+/// The command line's options, declared once for the help-only run and the real one.
+struct GuiOptions {
+    QCommandLineOption screenshot{"screenshot",
+                                  QCoreApplication::translate("main", "Save a PNG of the window once estimated, then quit"),
+                                  "file"};
+    QCommandLineOption language{"language", QCoreApplication::translate("main", "Language (en, de, zh_CN)"), "code"};
+    QCommandLineOption connectPort{
+        "connect", QCoreApplication::translate("main", "Connect the live input to this serial port or emulator link"),
+        "port"};
+    QCommandLineOption preset{"params",
+                              QCoreApplication::translate("main", "Start with the parameters of this preset (JSON)"),
+                              "preset.json"};
+    QCommandLineOption assignment{
+        "set", QCoreApplication::translate("main", "Set one parameter, as footpath-cli does (repeatable)"), "name=value"};
+    QCommandLineOption view{
+        "view", QCoreApplication::translate("main", "Show this view: signals, detector, states, trajectory2d or trajectory3d"),
+        "name"};
+    QCommandLineOption compare{
+        "compare",
+        QCoreApplication::translate("main", "Open the method comparison and run these sets, e.g. \"zupt;zupt,zaru;feliz\""),
+        "sets"};
+
+    void addTo(QCommandLineParser& parser) const
+    {
+        parser.setApplicationDescription(QCoreApplication::translate("main", "Foot-mounted inertial navigation"));
+        parser.addHelpOption();
+        parser.addVersionOption();
+        parser.addPositionalArgument("recording", QCoreApplication::translate("main", "Recording to open"));
+        for (const QCommandLineOption* option : {&screenshot, &preset, &assignment, &view, &compare, &language,
+                                                 &connectPort})
+            parser.addOption(*option);
+    }
+};
+
+void setApplicationNames()
+{
+    QCoreApplication::setApplicationName(QStringLiteral("Footpath"));
+    QCoreApplication::setOrganizationName(QStringLiteral("Footpath"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(FOOTPATH_VERSION));
+}
+
+/// --help and --version need no window: answered before a QApplication wants a display.
+bool asksOnlyForHelpOrVersion(int argc, char** argv)
+{
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray arg(argv[i]);
+        if (arg == "-h" || arg == "--help" || arg == "-?" || arg == "--help-all" || arg == "-v" || arg == "--version")
+            return true;
+    }
+    return false;
+}
+
+int answerHelpOrVersion(int argc, char** argv)
+{
+    QCoreApplication app(argc, argv);
+    setApplicationNames();
+    QCommandLineParser parser;
+    const GuiOptions options;
+    options.addTo(parser);
+    parser.process(app);  // prints the help or version and exits; a bad option exits too
+    return 0;
+}
+
+/// In a screenshot run nobody answers dialogs: a file that needs import settings is read with the
+/// dialog's confident guess, or the run ends with the reason; a file that cannot be read ends it too.
+void runUnattended(footpath::MainWindow& window)
+{
+    footpath::ImportDialog::setUnattended([](const QString& reason) {
+        std::fprintf(stderr, "footpath: %s\n", qPrintable(reason));
+        QCoreApplication::exit(2);
+    });
+    auto* loader = window.findChild<footpath::RecordingLoader*>();
+    if (!loader)
+        return;
+    // Connected after the window's own handler: when that opened the file again (the import
+    // guess), a newer read was asked for and this failure is not the end.
+    QObject::connect(loader, &footpath::RecordingLoader::failed, &window, [loader](const QString&, const QString& message) {
+        if (loader->superseded())
+            return;
+        std::fprintf(stderr, "footpath: %s\n", qPrintable(message));
+        QCoreApplication::exit(2);
+    });
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
 {
+    if (asksOnlyForHelpOrVersion(argc, argv))
+        return answerHelpOrVersion(argc, argv);
     QApplication app(argc, argv);
-    QApplication::setApplicationName(QStringLiteral("Footpath"));
-    QApplication::setOrganizationName(QStringLiteral("Footpath"));
-    QApplication::setApplicationVersion(QStringLiteral(FOOTPATH_VERSION));
+    setApplicationNames();
     qRegisterMetaType<std::shared_ptr<const footpath::Result>>();
 
     footpath::AppSettings settings;
     QCommandLineParser parser;
-    parser.setApplicationDescription(QApplication::translate("main", "Foot-mounted inertial navigation"));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    parser.addPositionalArgument("recording", QApplication::translate("main", "Recording to open"));
-    const QCommandLineOption screenshot(
-        "screenshot", QApplication::translate("main", "Save a PNG of the window once estimated, then quit"), "file");
-    const QCommandLineOption language("language", QApplication::translate("main", "Language (en, de, zh_CN)"), "code");
-    const QCommandLineOption connectPort(
-        "connect", QApplication::translate("main", "Connect the live input to this serial port or emulator link"), "port");
-    const QCommandLineOption preset(
-        "params", QApplication::translate("main", "Start with the parameters of this preset (JSON)"), "preset.json");
-    const QCommandLineOption assignment(
-        "set", QApplication::translate("main", "Set one parameter, as footpath-cli does (repeatable)"), "name=value");
-    const QCommandLineOption view(
-        "view", QApplication::translate("main", "Show this view: signals, detector, trajectory2d or trajectory3d"), "name");
-    parser.addOption(screenshot);
-    parser.addOption(preset);
-    parser.addOption(assignment);
-    parser.addOption(view);
-    const QCommandLineOption compare(
-        "compare", QApplication::translate("main", "Open the method comparison and run these sets, e.g. \"zupt;zupt,zaru;feliz\""),
-        "sets");
-    parser.addOption(compare);
-    parser.addOption(language);
-    parser.addOption(connectPort);
+    const GuiOptions options;
+    options.addTo(parser);
+    const QCommandLineOption& screenshot = options.screenshot;
+    const QCommandLineOption& language = options.language;
+    const QCommandLineOption& connectPort = options.connectPort;
+    const QCommandLineOption& preset = options.preset;
+    const QCommandLineOption& assignment = options.assignment;
+    const QCommandLineOption& view = options.view;
+    const QCommandLineOption& compare = options.compare;
     parser.process(app);
     installTranslations(app, parser.isSet(language) ? parser.value(language) : settings.language());
 
@@ -108,6 +178,8 @@ int main(int argc, char** argv)
             std::fprintf(stderr, "footpath: %s\n", qPrintable(error));
             return 2;
         }
+    if (parser.isSet(screenshot) && !parser.isSet(connectPort))
+        runUnattended(window);
     window.show();
     const QStringList files = parser.positionalArguments();
     window.openRecording(files.isEmpty() ? QString::fromUtf8(kSampleWalk) : files.first());

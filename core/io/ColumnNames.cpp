@@ -125,6 +125,10 @@ std::optional<ColumnMeaning> withUnit(ColumnMeaning meaning, const std::string& 
 
 std::optional<ColumnMeaning> recogniseHeaderName(const std::string& name)
 {
+    // pyshoe's zero-velocity labels from the motion capture; its zv_shoe_opt etc. are detector
+    // outputs, not a reference, and stay skipped.
+    if (name == "zv_vicon_opt")
+        return ColumnMeaning{ColumnRole::RefStance};
     const SplitName split = splitName(name);
     const std::string& letters = split.letters;
     for (const Quantity& quantity : kQuantities) {

@@ -9,7 +9,8 @@ namespace footpath {
 
 /// What a column holds, recognised from a header name or a column-map role.
 enum class ColumnRole {
-    Skip, Time, Counter, AccX, AccY, AccZ, GyrX, GyrY, GyrZ, MagX, MagY, MagZ, Pressure, RefX, RefY, RefZ
+    Skip, Time, Counter, AccX, AccY, AccZ, GyrX, GyrY, GyrZ, MagX, MagY, MagZ, Pressure, RefX, RefY, RefZ,
+    RefStance  ///< a reference stance flag (pyshoe's zv_vicon_opt), for display beside the detector's
 };
 
 /// A recognised column and the unit its name states (Unknown where it states none).

@@ -4,6 +4,7 @@
 #include "io/Import.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -81,6 +82,35 @@ int axisOf(ColumnRole role, ColumnRole x)
     return static_cast<int>(role) - static_cast<int>(x);
 }
 
+/// How a data row ended: kept, skipped as damaged (the rest of the file is still good), or fatal
+/// (time going backwards makes the earlier samples wrong too; a cancel stops everything).
+enum class RowOutcome { Kept, Skipped, Fatal };
+
+/// Rows skipped because a cell could not be read: the first few in full, the rest as a count.
+struct SkippedRows {
+    static constexpr std::size_t kShown = 3;
+    std::vector<ReadError> shown;
+    ReadError last;
+    std::size_t count = 0;
+
+    void add(ReadError problem)
+    {
+        ++count;
+        last = problem;
+        if (shown.size() < kShown)
+            shown.push_back(std::move(problem));
+    }
+};
+
+/// "line 12, column 4 (message)", as the warnings about skipped rows name the place.
+std::string placeOf(const ReadError& problem)
+{
+    std::string where = "line " + std::to_string(problem.line);
+    if (problem.column > 0)
+        where += ", column " + std::to_string(problem.column);
+    return where + " (" + problem.message + ")";
+}
+
 class TextParser {
 public:
     TextParser(std::istream& in, std::string source, const ImportOptions& options, std::size_t totalBytes)
@@ -99,16 +129,24 @@ private:
         result_.error = ReadError{result_.recording.source, lineNumber_, column, std::move(message)};
         return false;
     }
+    RowOutcome skip(std::size_t column, std::string message)
+    {
+        skipped_.add(ReadError{result_.recording.source, lineNumber_, column, std::move(message)});
+        return RowOutcome::Skipped;
+    }
     bool nextContentLine(std::string& line);
     bool layoutFromMap();
     bool layoutFromHeader(const std::string& header);
     bool addReferenceColumns();
     bool checkRequiredRoles();
     bool resolveUnits();
-    bool parseRow(const std::string& line);
+    RowOutcome parseRow(const std::string& line);
+    bool readNumbers(ImuSample& sample, Eigen::Vector3d& reference, double& counter, std::size_t& badColumn);
     bool reportProgress();
     void reserveSamples(std::size_t firstLineLength);
-    bool keepWhatCameBefore();
+    void readRows(std::string& line, bool more);
+    void judgeSkippedRows();
+    void warnAboutSkippedRows();
 
     std::istream& in_;
     const ImportOptions& options_;
@@ -120,10 +158,13 @@ private:
     bool decimalComma_ = false;
     bool hasMag_ = false;
     bool hasPressure_ = false;
+    bool hasReferenceStance_ = false;
+    bool referenceStance_ = false;  ///< the row's reference stance flag, read with its numbers
     bool hasReference_ = false;
     double timeScale_ = 1.0;
     double counterPeriod_s_ = 0.0;
-    bool fatal_ = false;  ///< a problem that makes the earlier samples wrong too (time going backwards)
+    SkippedRows skipped_;
+    bool lineTerminated_ = true;  ///< the last line read ended with a newline (not cut off)
     std::size_t lineNumber_ = 0;
     std::size_t bytesRead_ = 0;
     std::vector<std::string> cells_;
@@ -134,6 +175,7 @@ bool TextParser::nextContentLine(std::string& line)
     while (std::getline(in_, line)) {
         ++lineNumber_;
         bytesRead_ += line.size() + 1;
+        lineTerminated_ = !in_.eof();
         if (!isBlank(line))
             return true;
     }
@@ -195,7 +237,7 @@ bool TextParser::addReferenceColumns()
 
 bool TextParser::checkRequiredRoles()
 {
-    std::vector<int> counts(static_cast<std::size_t>(ColumnRole::RefZ) + 1, 0);
+    std::vector<int> counts(static_cast<std::size_t>(ColumnRole::RefStance) + 1, 0);
     for (const Column& column : columns_)
         ++counts[static_cast<std::size_t>(column.meaning.role)];
     const auto count = [&counts](ColumnRole role) { return counts[static_cast<std::size_t>(role)]; };
@@ -224,10 +266,12 @@ bool TextParser::checkRequiredRoles()
     }
     hasMag_ = count(ColumnRole::MagX) == 1 && count(ColumnRole::MagY) == 1 && count(ColumnRole::MagZ) == 1;
     hasPressure_ = count(ColumnRole::Pressure) == 1;
+    hasReferenceStance_ = count(ColumnRole::RefStance) == 1;
     for (Column& column : columns_) {
         const ColumnRole role = column.meaning.role;
         column.needed = role != ColumnRole::Skip && !(role >= ColumnRole::MagX && role <= ColumnRole::MagZ && !hasMag_)
                         && !(role == ColumnRole::Pressure && !hasPressure_)
+                        && !(role == ColumnRole::RefStance && !hasReferenceStance_)
                         && !(role == ColumnRole::Counter && count(ColumnRole::Time) == 1);
     }
     return resolveUnits();
@@ -264,22 +308,19 @@ bool TextParser::resolveUnits()
     return true;
 }
 
-bool TextParser::parseRow(const std::string& line)
+/// The needed cells of cells_ into a sample; false with the 1-based column of the first cell
+/// that is not a number.
+bool TextParser::readNumbers(ImuSample& sample, Eigen::Vector3d& reference, double& counter, std::size_t& badColumn)
 {
-    splitLine(line, delimiter_, cells_);
-    if (cells_.size() < columns_.size())
-        return fail(cells_.size() + 1, "expected " + std::to_string(columns_.size()) + " columns, found "
-                                           + std::to_string(cells_.size()));
-    ImuSample sample;
-    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-    double counter = 0.0;
     for (std::size_t c = 0; c < columns_.size(); ++c) {
         const Column& column = columns_[c];
         if (!column.needed)
             continue;
         double value = 0.0;
-        if (!parseNumber(cells_[c], decimalComma_, value))
-            return fail(c + 1, "expected a number in column '" + names_[c] + "', got '" + trim(cells_[c]) + "'");
+        if (!parseNumber(cells_[c], decimalComma_, value)) {
+            badColumn = c + 1;
+            return false;
+        }
         const ColumnRole role = column.meaning.role;
         if (role == ColumnRole::Time)
             sample.time_s = value * timeScale_;
@@ -293,9 +334,25 @@ bool TextParser::parseRow(const std::string& line)
             sample.mag[axisOf(role, ColumnRole::MagX)] = value;
         else if (role == ColumnRole::Pressure)
             sample.pressure_pa = value * column.meaning.pressureToPa;
+        else if (role == ColumnRole::RefStance)
+            referenceStance_ = value != 0.0;
         else
             reference[axisOf(role, ColumnRole::RefX)] = value * column.sign;
     }
+    return true;
+}
+
+RowOutcome TextParser::parseRow(const std::string& line)
+{
+    splitLine(line, delimiter_, cells_);
+    if (cells_.size() < columns_.size())
+        return skip(cells_.size() + 1, "expected " + std::to_string(columns_.size()) + " columns, found "
+                                           + std::to_string(cells_.size()));
+    ImuSample sample;
+    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+    double counter = 0.0;
+    if (std::size_t c = 0; !readNumbers(sample, reference, counter, c))
+        return skip(c, "expected a number in column '" + names_[c - 1] + "', got '" + trim(cells_[c - 1]) + "'");
     if (counterPeriod_s_ > 0.0)
         sample.time_s = counter * counterPeriod_s_;
     std::vector<ImuSample>& samples = result_.recording.samples;
@@ -303,13 +360,15 @@ bool TextParser::parseRow(const std::string& line)
         std::ostringstream message;
         message.precision(12);
         message << "time goes backwards: " << sample.time_s << " after " << samples.back().time_s;
-        fatal_ = true;
-        return fail(0, message.str());
+        fail(0, message.str());
+        return RowOutcome::Fatal;
     }
     samples.push_back(sample);
     if (hasReference_)
         result_.recording.reference.positions_m.push_back(reference);
-    return true;
+    if (hasReferenceStance_)
+        result_.recording.reference.stance.push_back(referenceStance_ ? 1 : 0);
+    return RowOutcome::Kept;
 }
 
 bool TextParser::reportProgress()
@@ -321,22 +380,40 @@ bool TextParser::reportProgress()
     return fail(0, "reading cancelled");
 }
 
-/// A damaged row after good ones (a file cut off mid-line, a corrupted block): keep the samples
-/// before it and say where reading stopped, instead of losing the whole recording.
-bool TextParser::keepWhatCameBefore()
+/// Damaged rows (a corrupted block, a stray word, a file cut off mid-line) are skipped so one bad
+/// cell does not cost the rest of the recording; but when at least half the rows are damaged the
+/// file is not what the columns say, and reading it is refused with the first problem.
+void TextParser::judgeSkippedRows()
 {
-    if (fatal_ || result_.recording.samples.empty() || !result_.error)
-        return false;
-    const ReadError& damage = *result_.error;
-    std::string where = "line " + std::to_string(damage.line);
-    if (damage.column > 0)
-        where += ", column " + std::to_string(damage.column);
-    result_.recording.warnings.push_back("reading stopped at " + where + " (" + damage.message + "); the "
-                                         + std::to_string(result_.recording.samples.size())
-                                         + " samples before it were kept");
-    result_.info.truncated = true;
-    result_.error.reset();
-    return true;
+    const std::size_t kept = result_.recording.samples.size();
+    if (skipped_.count == 0 || result_.error)
+        return;
+    if (skipped_.count >= kept) {
+        ReadError first = skipped_.shown.front();
+        if (skipped_.count + kept > 1)
+            first.message += "; " + std::to_string(skipped_.count) + " of " + std::to_string(skipped_.count + kept)
+                             + " data rows could not be read";
+        result_.error = std::move(first);
+        return;
+    }
+    warnAboutSkippedRows();
+}
+
+void TextParser::warnAboutSkippedRows()
+{
+    std::vector<std::string>& warnings = result_.recording.warnings;
+    const bool cutOff = !lineTerminated_ && skipped_.last.line == lineNumber_;
+    const std::size_t damaged = skipped_.count - (cutOff ? 1 : 0);  // the cut line is said apart
+    std::size_t listed = 0;
+    for (; listed < std::min(damaged, skipped_.shown.size()); ++listed)
+        warnings.push_back(placeOf(skipped_.shown[listed]) + ": the row was skipped");
+    if (damaged > listed)
+        warnings.push_back(std::to_string(damaged - listed) + " more damaged row(s) were skipped");
+    if (cutOff) {
+        result_.info.truncated = true;
+        warnings.push_back("the file ends in the middle of " + placeOf(skipped_.last) + "; the "
+                           + std::to_string(result_.recording.samples.size()) + " samples before it were kept");
+    }
 }
 
 void TextParser::reserveSamples(std::size_t firstLineLength)
@@ -347,6 +424,13 @@ void TextParser::reserveSamples(std::size_t firstLineLength)
         const std::size_t estimate = totalBytes_ / (firstLineLength + 1) + 16;
         result_.recording.samples.reserve(std::min(estimate + estimate / 8, totalBytes_ / 8 + 16));
     }
+}
+
+void TextParser::readRows(std::string& line, bool more)
+{
+    for (; more; more = nextContentLine(line))
+        if (parseRow(line) == RowOutcome::Fatal || !reportProgress())
+            return;
 }
 
 ImportResult TextParser::run()
@@ -374,17 +458,14 @@ ImportResult TextParser::run()
         decimalComma_ = delimiter_ != ',' && line.find(',') != std::string::npos;
         reserveSamples(line.size());
     }
-    for (; more; more = nextContentLine(line)) {
-        if (!parseRow(line)) {
-            if (!keepWhatCameBefore())
-                return std::move(result_);
-            break;
-        }
-        if (!reportProgress())
-            return std::move(result_);
-    }
-    if (result_.recording.samples.empty())
+    readRows(line, more);
+    if (result_.error)
+        return std::move(result_);
+    judgeSkippedRows();
+    if (!result_.error && result_.recording.samples.empty())
         fail(0, "no samples after the header");
+    else if (!result_.error && result_.recording.samples.size() == 1)
+        fail(0, "only one sample row: a recording needs at least two");
     return std::move(result_);
 }
 
@@ -405,6 +486,48 @@ std::size_t columnCount(const std::string& line)
     std::vector<std::string> cells;
     splitLine(line, detectDelimiter(line), cells);
     return cells.size();
+}
+
+namespace {
+
+/// Numbers in cells, or a line mostly of digits whose separator the reader may not know ("0|1|2"):
+/// the reader then says what is wrong with the columns, which helps more than "not data".
+bool isNumericRow(const std::string& line, const std::vector<std::string>& cells)
+{
+    const auto numbers = std::count_if(cells.begin(), cells.end(), isNumeric);
+    if (numbers >= 3 && 2 * static_cast<std::size_t>(numbers) > cells.size())
+        return true;
+    const auto digits = std::count_if(line.begin(), line.end(), [](unsigned char ch) { return std::isdigit(ch); });
+    const auto visible = std::count_if(line.begin(), line.end(), [](unsigned char ch) { return std::isgraph(ch); });
+    return digits >= 3 && 2 * digits > visible;
+}
+
+std::size_t knownColumnNames(const std::vector<std::string>& cells)
+{
+    return static_cast<std::size_t>(std::count_if(cells.begin(), cells.end(), [](const std::string& cell) {
+        const std::optional<ColumnMeaning> meaning = recogniseHeaderName(trim(cell));
+        return meaning && meaning->role != ColumnRole::Skip;
+    }));
+}
+
+}  // namespace
+
+bool looksLikeSensorText(const std::string& firstKilobytes)
+{
+    std::istringstream in(firstKilobytes);
+    std::vector<std::string> cells;
+    bool first = true;
+    for (std::string line; std::getline(in, line);) {
+        if (isBlank(line))
+            continue;
+        if (first && line.rfind("\xEF\xBB\xBF", 0) == 0)
+            line.erase(0, 3);
+        splitLine(line, detectDelimiter(line), cells);
+        if (isNumericRow(line, cells) || (first && knownColumnNames(cells) >= 2))
+            return true;
+        first = false;
+    }
+    return false;
 }
 
 bool startsWithHeaderRow(const std::string& firstKilobytes)

@@ -33,6 +33,11 @@ ImportResult readDelimitedText(std::istream& in, const std::string& sourceName, 
 /// Number of cells in one line, with the delimiter detected as the reader does.
 std::size_t columnCount(const std::string& line);
 
+/// True if the text has a row of numbers (at least three numeric cells, more than half of the row)
+/// or at least starts with a header naming two known columns: what sensor data looks like, unlike
+/// a page of prose.
+bool looksLikeSensorText(const std::string& firstKilobytes);
+
 /// True if the first non-empty line of the text looks like column names rather than numbers.
 bool startsWithHeaderRow(const std::string& firstKilobytes);
 

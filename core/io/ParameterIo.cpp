@@ -1,5 +1,7 @@
 #include "io/ParameterIo.h"
 
+#include "io/NearestNames.h"
+
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -31,7 +33,28 @@ std::string applyValue(Parameters& params, const ParameterField& field, const QJ
     return {};
 }
 
+std::vector<std::string> parameterNames()
+{
+    std::vector<std::string> names;
+    for (const ParameterField& field : parameterFields())
+        names.emplace_back(field.name);
+    return names;
+}
+
 }  // namespace
+
+std::vector<std::string> nearestParameterNames(const std::string& name)
+{
+    return nearestNames(name, parameterNames());
+}
+
+std::string setParameterByName(Parameters& params, const std::string& name, const std::string& text)
+{
+    std::string problem = setParameter(params, name, text);
+    if (!problem.empty() && !findParameterField(name))
+        problem += didYouMean(name, parameterNames());
+    return problem;
+}
 
 std::string parametersToJson(const Parameters& params)
 {
@@ -66,7 +89,8 @@ std::string parametersFromJson(const std::string& json, const std::string& sourc
     for (auto it = values.begin(); it != values.end(); ++it) {
         const ParameterField* field = findParameterField(it.key().toStdString());
         if (!field)
-            return sourceName + ": unknown parameter '" + it.key().toStdString() + "'";
+            return sourceName + ": unknown parameter '" + it.key().toStdString() + "'"
+                   + didYouMean(it.key().toStdString(), parameterNames());
         if (std::string problem = applyValue(updated, *field, it.value()); !problem.empty())
             return sourceName + ": " + problem;
     }

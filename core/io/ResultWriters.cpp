@@ -85,7 +85,7 @@ void writeStepsCsv(std::ostream& out, const Result& result)
     out << "step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,motion,baro_height_m\n";
     for (std::size_t i = 0; i < result.steps.size(); ++i) {
         const Step& step = result.steps[i];
-        out << i << ',';
+        out << i + 1 << ',';  // numbered from 1, as the window's step table and the report number them
         put(out, step.stanceStart_s, ',');
         put(out, step.stanceEnd_s, ',');
         putVector(out, step.position_m);

@@ -15,7 +15,8 @@ namespace footpath {
 /// bias estimates gyro_bias_{x,y,z}_radps, acc_bias_{x,y,z}_mps2. Numbers always use a dot.
 void writeTrajectoryCsv(std::ostream& out, const Result& result);
 /// Steps CSV: step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,
-/// motion,baro_height_m (motion: motionClassName; baro_height_m empty without a barometer).
+/// motion,baro_height_m (step: the stance phase, numbered from 1; motion: motionClassName;
+/// baro_height_m empty without a barometer).
 void writeStepsCsv(std::ostream& out, const Result& result);
 /// Summary as a header row and one value row; the motion-class counts and climbs follow the
 /// figures of every recording.

@@ -25,6 +25,7 @@ constexpr double kLargestExactCounter = 9007199254740992.0;
 constexpr std::size_t kMaxLineLength = 64 * 1024;
 constexpr std::size_t kProgressIntervalLines = 1024;
 constexpr std::size_t kMaxListedHeaderChars = 300;
+constexpr std::size_t kDamagedRowsShown = 3;  // more are counted, not listed
 // Cap on the up-front reservation in case totalBytes is wrong (4 Mi samples = 11 h at 100 Hz).
 constexpr std::size_t kShortestRow_bytes = 8;
 
@@ -270,6 +271,7 @@ struct Layout {
 struct Row {
     std::array<double, kFieldCount> value{};
     std::array<bool, kFieldCount> present{};
+    bool damaged = false;  ///< a cell is not a number: the row is skipped
 
     bool hasAll(Field first, Field last) const
     {
@@ -333,6 +335,8 @@ private:
     double pressureScale_ = 0.0;  ///< to Pa; 0 until the first value decides
     bool sawMag_ = false;
     SkippedRows incompleteRows_;
+    SkippedRows damagedRows_;           ///< a cell that is not a number: the row is left out
+    std::vector<ReadError> damageShown_;  ///< the first few damaged rows, for the warnings
     SkippedRows repeatedRows_;
     std::vector<std::string_view> cells_;
 };
@@ -444,6 +448,8 @@ bool XsensTextParser::readRow(const std::string& line)
     bool truncated = !lines_.terminated() && cells_.size() < layout_.names.size();
     if (!truncated && !readCells(row, truncated))
         return false;
+    if (row.damaged)
+        return true;
     if (truncated) {
         result_.info.truncated = true;
         warn("the file ends in the middle of line " + std::to_string(lines_.lineNumber()) + "; the "
@@ -479,8 +485,14 @@ bool XsensTextParser::readCells(Row& row, bool& truncated)
             truncated = true;
             return true;
         }
-        return fail(lines_.lineNumber(), column + 1, "expected a number in column '" + layout_.names[column]
-                                                         + "', got '" + std::string(trimmed(cells_[column])) + "'");
+        // One damaged row must not cost the rest of the file: it is skipped and named.
+        damagedRows_.add(lines_.lineNumber());
+        if (damageShown_.size() < kDamagedRowsShown)
+            damageShown_.push_back(ReadError{result_.recording.source, lines_.lineNumber(), column + 1,
+                                             "expected a number in column '" + layout_.names[column] + "', got '"
+                                                 + std::string(trimmed(cells_[column])) + "'"});
+        row.damaged = true;
+        return true;
     }
     return true;
 }
@@ -574,6 +586,15 @@ bool XsensTextParser::reportProgress()
 
 bool XsensTextParser::finish()
 {
+    // Damage in at least half the rows: the file is not what its column line says.
+    if (damagedRows_.count > 0 && damagedRows_.count >= ticks_.size()) {
+        ReadError first = damageShown_.front();
+        if (damagedRows_.count + ticks_.size() > 1)
+            first.message += "; " + std::to_string(damagedRows_.count) + " of "
+                             + std::to_string(damagedRows_.count + ticks_.size()) + " data rows could not be read";
+        result_.error = std::move(first);
+        return false;
+    }
     if (ticks_.empty()) {
         if (incompleteRows_.count > 0)
             return fail(columnLine_, 0, "none of the " + std::to_string(incompleteRows_.count)
@@ -635,6 +656,11 @@ void XsensTextParser::assignTimes()
 
 void XsensTextParser::warnAboutSkippedRows()
 {
+    for (const ReadError& damage : damageShown_)
+        warn("line " + std::to_string(damage.line) + ", column " + std::to_string(damage.column) + " ("
+             + damage.message + "): the row was skipped");
+    if (damagedRows_.count > damageShown_.size())
+        warn(std::to_string(damagedRows_.count - damageShown_.size()) + " more damaged row(s) were skipped");
     if (incompleteRows_.count > 0)
         warn("skipped " + std::to_string(incompleteRows_.count) + " row(s) lacking Acc, Gyr or time values (first at line "
              + std::to_string(incompleteRows_.firstLine) + ")");

@@ -1,7 +1,10 @@
 #include "nav/Alignment.h"
 
 #include "nav/Attitude.h"
+#include "nav/ErrorStateEkf.h"
+#include "nav/Pipeline.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace footpath {
@@ -16,11 +19,11 @@ struct StaticMeans {
 };
 
 StaticMeans averageStatic(const std::vector<ImuSample>& samples, const std::vector<std::uint8_t>& stance,
-                          double alignment_s, bool requireStance)
+                          std::size_t first, double alignment_s, bool requireStance)
 {
     StaticMeans means;
-    const double end = samples.front().time_s + alignment_s;
-    for (std::size_t k = 0; k < samples.size() && samples[k].time_s <= end; ++k) {
+    const double end = samples[first].time_s + alignment_s;
+    for (std::size_t k = first; k < samples.size() && samples[k].time_s <= end; ++k) {
         if (requireStance && (k >= stance.size() || !stance[k]))
             continue;
         means.acc += samples[k].acc_mps2;
@@ -39,6 +42,20 @@ StaticMeans averageStatic(const std::vector<ImuSample>& samples, const std::vect
 
 }  // namespace
 
+std::size_t alignmentStart(const std::vector<std::uint8_t>& stance)
+{
+    if (stance.empty() || stance.front())
+        return 0;
+    const auto firstStance = std::find(stance.begin(), stance.end(), std::uint8_t(1));
+    return firstStance == stance.end() ? 0 : static_cast<std::size_t>(firstStance - stance.begin());
+}
+
+void holdAtStart(const ErrorStateEkf& ekf, double time_s, Result& result)
+{
+    recordState(result, time_s, ekf.state());
+    result.errorStd.push_back(ekf.covariance().diagonal().cwiseMax(0.0).cwiseSqrt().cast<float>());
+}
+
 double magneticHeading(const Eigen::Vector3d& magBody, double roll, double pitch, double declination_rad)
 {
     // Rotate the body reading into the level frame (yaw 0): m_level = Ry(pitch) Rx(roll) m_b.
@@ -54,9 +71,10 @@ AlignmentResult alignInitialAttitude(const std::vector<ImuSample>& samples, cons
     AlignmentResult result;
     if (samples.empty())
         return result;
-    StaticMeans means = averageStatic(samples, stance, params.alignment_s, true);
+    const std::size_t first = std::min(alignmentStart(stance), samples.size() - 1);
+    StaticMeans means = averageStatic(samples, stance, first, params.alignment_s, true);
     if (means.count == 0)
-        means = averageStatic(samples, stance, params.alignment_s, false);
+        means = averageStatic(samples, stance, first, params.alignment_s, false);
     const Eigen::Vector3d& f = means.acc;
     // Eq. 1-2 for C = Rz Ry Rx: at rest f_b = C^T [0 0 g] = g [-sin p, sin r cos p, cos r cos p].
     result.roll_rad = std::atan2(f.y(), f.z());

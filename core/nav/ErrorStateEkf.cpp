@@ -63,10 +63,19 @@ ErrorStateEkf::ErrorStateEkf(const Parameters& params, const Eigen::Matrix3d& in
 
 void ErrorStateEkf::propagate(const Eigen::Vector3d& acc_mps2, const Eigen::Vector3d& gyr_radps, double dt_s)
 {
-    if (!(dt_s > 0.0))
-        return;  // a repeated timestamp carries no motion
+    correctionsSincePropagation_.setZero();
+    if (!(dt_s > 0.0)) {
+        lastPropagation_.dt_s = 0.0;  // a repeated timestamp carries no motion
+        return;
+    }
     lastNavAcc_ = strapdownStep(state_, acc_mps2, gyr_radps, dt_s, params_.gravity_mps2);
-    propagateCovariance(lastNavAcc_, dt_s);
+    lastPropagation_ = PropagationStep{lastNavAcc_, state_.bodyToNav, dt_s};
+    propagateCovariance(covariance_, lastPropagation_, processVariance(dt_s));
+}
+
+ErrorStateEkf::Vector15 ErrorStateEkf::processVariance(double dt_s) const
+{
+    return processVariancePerStep_ * (dt_s / kReferenceStep_s);
 }
 
 ErrorStateEkf::Matrix15 ErrorStateEkf::transitionMatrix(const Eigen::Vector3d& navSpecificForce, double dt_s) const
@@ -80,16 +89,20 @@ ErrorStateEkf::Matrix15 ErrorStateEkf::transitionMatrix(const Eigen::Vector3d& n
     return phi;
 }
 
-void ErrorStateEkf::propagateCovariance(const Eigen::Vector3d& navSpecificForce, double dt_s)
+void ErrorStateEkf::propagateCovariance(Matrix15& covariance, const PropagationStep& step,
+                                        const Vector15& processVariance)
 {
+    if (!(step.dt_s > 0.0))
+        return;
+    const double dt_s = step.dt_s;
     // Phi = I + four 3x3 blocks, so Phi P Phi^T needs 20 products of 3x3 blocks instead of the
     // dense 15x15 triple product (BM_EkfPropagate against BM_DenseCovariancePropagation). Phi leaves
     // the bias rows alone, so only the attitude, position and velocity rows of M = Phi P change;
     // P' = M Phi^T is symmetric, so of the blocks among those three states only the upper
     // triangle is computed, and the bias blocks of P' are blocks of M.
-    const Eigen::Matrix3d attFromGyroBias = dt_s * state_.bodyToNav;  // also velocity from acc bias
-    const Eigen::Matrix3d velFromAtt = -dt_s * skew(navSpecificForce);
-    Matrix15& p = covariance_;
+    const Eigen::Matrix3d attFromGyroBias = dt_s * step.bodyToNav;  // also velocity from acc bias
+    const Eigen::Matrix3d velFromAtt = -dt_s * skew(step.navSpecificForce);
+    Matrix15& p = covariance;
     const auto b = [&p](int row, int col) { return p.block<3, 3>(row, col); };
 
     // Rows of M = Phi P for the three states that change (stored as 9 x 15).
@@ -120,7 +133,7 @@ void ErrorStateEkf::propagateCovariance(const Eigen::Vector3d& navSpecificForce,
         for (const int bias : {kGyroBias, kAccBias})
             b(bias, row) = b(row, bias).transpose();
 
-    p.diagonal() += processVariancePerStep_ * (dt_s / kReferenceStep_s);
+    p.diagonal() += processVariance;
 }
 
 template <int Rows>
@@ -212,6 +225,7 @@ void ErrorStateEkf::applyCorrection(const Vector15& dx)
     state_.position_m -= dx.segment<3>(kPos);
     state_.velocity_mps -= dx.segment<3>(kVel);
     state_.accBias_mps2 += dx.segment<3>(kAccBias);
+    correctionsSincePropagation_ += dx;
     // The error states return to zero implicitly: dx is recomputed from zero at every update.
 }
 

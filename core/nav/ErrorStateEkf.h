@@ -16,6 +16,14 @@ struct NavState {
     Eigen::Vector3d accBias_mps2 = Eigen::Vector3d::Zero();
 };
 
+/// What the covariance propagation of one step used: enough to redo it (the smoother's backward
+/// pass recomputes P(k+1|k) from P(k|k) instead of storing both).
+struct PropagationStep {
+    Eigen::Vector3d navSpecificForce = Eigen::Vector3d::Zero();  ///< a_n of eq. 27
+    Eigen::Matrix3d bodyToNav = Eigen::Matrix3d::Identity();     ///< attitude after the strapdown step
+    double dt_s = 0.0;                                           ///< 0: no propagation (repeated timestamp)
+};
+
 /// Strapdown mechanization plus the 15-state error-state EKF of Guo 2015 (sections 2.2, 2.4-2.6).
 ///
 /// Error state dx = [dphi, dw_b, dr, dv, da_b] with these definitions (method.md, "feedback sign"):
@@ -55,6 +63,16 @@ public:
 
     const NavState& state() const { return state_; }
     const Matrix15& covariance() const { return covariance_; }
+    /// The last propagation's inputs (dt 0 until the first, and after a skipped one).
+    const PropagationStep& lastPropagation() const { return lastPropagation_; }
+    /// Sum of the error-state corrections applied since the last propagate() (zero when no
+    /// measurement came in): the step from the predicted to the filtered state, for the smoother.
+    const Vector15& correctionsSincePropagation() const { return correctionsSincePropagation_; }
+    /// Process noise variance added over a step of dt_s (diagonal of Q).
+    Vector15 processVariance(double dt_s) const;
+
+    /// Phi P Phi^T + Q for one step with the block structure of eq. 26 (Phi = I + four 3x3 blocks).
+    static void propagateCovariance(Matrix15& covariance, const PropagationStep& step, const Vector15& processVariance);
     /// Navigation-frame specific force of the last propagation (a_n = C f, eq. 27).
     const Eigen::Vector3d& lastNavAcceleration() const { return lastNavAcc_; }
 
@@ -66,7 +84,6 @@ private:
     template <int Rows>
     void update(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, Rows, 1>& innovation,
                 const Eigen::Matrix<double, Rows, 1>& noiseVariance);
-    void propagateCovariance(const Eigen::Vector3d& navSpecificForce, double dt_s);
     void applyCorrection(const Vector15& dx);
 
     Parameters params_;
@@ -74,6 +91,8 @@ private:
     Matrix15 covariance_;
     Eigen::Matrix<double, kStates, 1> processVariancePerStep_;  ///< at the 10 ms reference step
     Eigen::Vector3d lastNavAcc_ = Eigen::Vector3d::Zero();
+    PropagationStep lastPropagation_;
+    Vector15 correctionsSincePropagation_ = Vector15::Zero();
 };
 
 }  // namespace footpath

@@ -45,6 +45,14 @@ std::string nearestToken(const std::string& token)
     });
 }
 
+std::string knownTokensText()
+{
+    std::string text;
+    for (const std::string& token : methodTokens())
+        text += (text.empty() ? "" : ", ") + token;
+    return text;
+}
+
 Parameters withAllMethodsOff(const Parameters& base)
 {
     Parameters params = base;
@@ -73,6 +81,8 @@ bool applyToken(const std::string& token, Parameters& params, bool& statesNamed)
         params.use_mag_heading = true;
     else if (token == "feliz")
         params.estimator = static_cast<int>(EstimatorKind::Feliz);
+    else if (token == "rts")
+        params.estimator = static_cast<int>(EstimatorKind::Smoother);
     else if (token == "9state" || token == "9")
         params.filter_states = static_cast<int>(FilterStates::Nine);
     else if (token == "15state" || token == "15")
@@ -113,7 +123,7 @@ ComparisonRow evaluateSet(const Recording& recording, const MethodSet& set, cons
 const std::vector<std::string>& methodTokens()
 {
     static const std::vector<std::string> tokens{"zupt", "zaru", "hdr", "iper", "zuna", "baro", "mag", "feliz",
-                                                 "9state", "15state"};
+                                                 "rts", "9state", "15state"};
     return tokens;
 }
 
@@ -131,7 +141,7 @@ std::optional<MethodSet> parseMethodSet(const std::string& spec, const Parameter
             continue;
         if (!applyToken(token, set.params, statesNamed)) {
             error = "unknown method '" + token + "' in set '" + trimmed(spec) + "' (did you mean '" + nearestToken(token)
-                    + "'?); known: zupt, zaru, hdr, iper, zuna, baro, mag, feliz, 9state, 15state";
+                    + "'?); known: " + knownTokensText();
             return std::nullopt;
         }
         names.push_back(token);
@@ -162,6 +172,8 @@ std::string methodSetSpec(const Parameters& params)
                 tokens.push_back(token);
         if (!tokens.empty() && params.filter_states != Parameters().filter_states)
             tokens.push_back(params.filterStates() == FilterStates::Fifteen ? "15state" : "9state");
+        if (params.estimatorKind() == EstimatorKind::Smoother)
+            tokens.push_back("rts");
     }
     std::string spec;
     for (std::size_t i = 0; i < tokens.size(); ++i)
@@ -173,7 +185,7 @@ std::string methodSetLabel(const std::string& spec)
 {
     static const std::map<std::string, std::string> labels{
         {"zupt", "ZUPT"}, {"zaru", "ZARU"}, {"hdr", "HDR"}, {"iper", "IPER"}, {"zuna", "ZUNA"},
-        {"baro", "barometer"}, {"mag", "magnetometer"}, {"feliz", "Feliz"}, {"9state", "9-state"},
+        {"baro", "barometer"}, {"mag", "magnetometer"}, {"feliz", "Feliz"}, {"rts", "RTS smoother"}, {"9state", "9-state"},
         {"15state", "15-state"}, {"9", "9-state"}, {"15", "15-state"}};
     std::string label;
     std::istringstream in(spec);
@@ -204,7 +216,7 @@ std::vector<MethodSet> parseMethodSets(const std::string& specs, const Parameter
 std::string suggestedMethodSetsSpec()
 {
     return "zupt;zupt,zaru;zupt,zaru,hdr;zupt,zaru,hdr,iper;zupt,zaru,hdr,iper,zuna;zupt,baro;feliz;"
-           "zupt,9state;zupt,15state";
+           "zupt,rts;zupt,9state;zupt,15state";
 }
 
 std::vector<MethodSet> suggestedMethodSets(const Parameters& base)

@@ -11,28 +11,31 @@ namespace {
 
 using K = ParameterField::Kind;
 
-ParameterField real(const char* name, double Parameters::*member, double lo, double hi, const char* unit,
-                    const char* description, const char* group, FieldScope scope = FieldScope::Always)
+ParameterField real(const char* name, const char* label, double Parameters::*member, double lo, double hi,
+                    const char* unit, const char* description, const char* group, FieldScope scope = FieldScope::Always)
 {
     ParameterField field{name, K::Real, member, nullptr, lo, hi, unit, description, group};
+    field.label = label;
     field.scope = scope;
     return field;
 }
 
-ParameterField flag(const char* name, bool Parameters::*member, const char* description, const char* group,
-                    FieldScope scope = FieldScope::Always)
+ParameterField flag(const char* name, const char* label, bool Parameters::*member, const char* description,
+                    const char* group, FieldScope scope = FieldScope::Always)
 {
     ParameterField field{name, K::Flag, nullptr, member, 0.0, 1.0, "", description, group};
+    field.label = label;
     field.scope = scope;
     return field;
 }
 
-ParameterField choice(const char* name, int Parameters::*member, std::vector<const char*> names,
+ParameterField choice(const char* name, const char* label, int Parameters::*member, std::vector<const char*> names,
                       std::vector<const char*> labels, const char* description, const char* group,
                       FieldScope scope = FieldScope::Always)
 {
     ParameterField field{name, K::Choice, nullptr, nullptr, 0.0, static_cast<double>(names.size() - 1), "",
                          description, group};
+    field.label = label;
     field.choice = member;
     field.choiceNames = std::move(names);
     field.choiceLabels = std::move(labels);
@@ -44,76 +47,77 @@ std::vector<ParameterField> makeFields()
 {
     using P = Parameters;
     return {
-        real("alignment_s", &P::alignment_s, 0.05, 600.0, "s", "Static period at the start used for alignment", "Alignment"),
-        real("gravity_mps2", &P::gravity_mps2, 9.7, 9.9, "m/s^2", "Local gravity", "Alignment"),
-        real("declination_rad", &P::declination_rad, -M_PI, M_PI, "rad", "Magnetic declination subtracted from the compass heading", "Alignment"),
-        choice("detector", &P::detector, {"c1c2c3", "shoe", "ared", "amvd", "mbgtd"},
+        real("alignment_s", "Alignment period", &P::alignment_s, 0.05, 600.0, "s", "Static period at the start used for alignment", "Alignment"),
+        real("gravity_mps2", "Gravity", &P::gravity_mps2, 9.7, 9.9, "m/s^2", "Local gravity", "Alignment"),
+        real("declination_rad", "Magnetic declination", &P::declination_rad, -M_PI, M_PI, "rad", "Magnetic declination subtracted from the compass heading", "Alignment"),
+        choice("detector", "Stance detector", &P::detector, {"c1c2c3", "shoe", "ared", "amvd", "mbgtd"},
                {"C1/C2/C3 (Guo 2015)", "SHOE (GLRT)", "ARED (angular rate energy)", "AMVD (acceleration variance)",
                 "MBGTD (graph theoretic)"},
                "Statistic that decides the foot is at rest", "Detector"),
-        real("zv_window_s", &P::zv_window_s, 0.0, 1.0, "s", "Window of the detector statistic", "Detector", FieldScope::StatisticDetectors),
-        real("zv_sigma_acc_mps2", &P::zv_sigma_acc_mps2, 1e-5, 10.0, "m/s^2", "Accelerometer noise the statistic is normalised by", "Detector", FieldScope::DetectorAccelerometer),
-        real("zv_sigma_gyr_radps", &P::zv_sigma_gyr_radps, 1e-6, 1.0, "rad/s", "Gyroscope noise the statistic is normalised by", "Detector", FieldScope::DetectorGyroscope),
-        flag("zv_adaptive", &P::zv_adaptive, "Threshold follows the motion (off: a fixed threshold)", "Detector", FieldScope::StatisticDetectors),
-        real("zv_log_threshold", &P::zv_log_threshold, -5.0, 15.0, "log10", "Fixed threshold on the statistic (log10), when not adaptive", "Detector", FieldScope::FixedThreshold),
-        real("zv_adapt_window_s", &P::zv_adapt_window_s, 0.1, 10.0, "s", "Adaptive: window of the running minimum (about one gait cycle)", "Detector", FieldScope::AdaptiveThreshold),
-        real("zv_adapt_offset_dec", &P::zv_adapt_offset_dec, 0.0, 5.0, "decades", "Adaptive: threshold above the running minimum", "Detector", FieldScope::AdaptiveThreshold),
-        real("zv_adapt_fraction", &P::zv_adapt_fraction, 0.0, 1.0, "x", "Adaptive: threshold this fraction of the way from the running minimum to the maximum", "Detector", FieldScope::AdaptiveThreshold),
-        real("zv_log_always", &P::zv_log_always, -5.0, 15.0, "log10", "Adaptive: below this the foot is always at rest", "Detector", FieldScope::AdaptiveThreshold),
-        real("zv_log_never", &P::zv_log_never, -5.0, 15.0, "log10", "Adaptive: above this the foot is never at rest", "Detector", FieldScope::AdaptiveThreshold),
-        real("zv_min_stance_s", &P::zv_min_stance_s, 0.0, 2.0, "s", "Shorter stance runs are dropped", "Detector", FieldScope::StatisticDetectors),
-        real("acc_min_mps2", &P::acc_min_mps2, 0.0, 50.0, "m/s^2", "C1: lower bound on |a|", "Detector", FieldScope::PaperDetector),
-        real("acc_max_mps2", &P::acc_max_mps2, 0.0, 200.0, "m/s^2", "C1: upper bound on |a|", "Detector", FieldScope::PaperDetector),
-        real("acc_std_max_mps2", &P::acc_std_max_mps2, 0.0, 20.0, "m/s^2", "C2: std of |a| over the window must be below", "Detector", FieldScope::PaperDetector),
-        real("window_half_s", &P::window_half_s, 0.0, 2.0, "s", "C2: half-window of the centred std", "Detector", FieldScope::PaperDetector),
-        real("gyr_max_radps", &P::gyr_max_radps, 0.0, 20.0, "rad/s", "C3: upper bound on |w|", "Detector", FieldScope::PaperDetector),
-        real("median_window_s", &P::median_window_s, 0.0, 2.0, "s", "Median filter length applied to C", "Detector", FieldScope::PaperDetector),
-        choice("filter_states", &P::filter_states, {"15", "9"},
+        real("zv_window_s", "Statistic window", &P::zv_window_s, 0.0, 1.0, "s", "Window of the detector statistic", "Detector", FieldScope::StatisticDetectors),
+        real("zv_sigma_acc_mps2", "Accelerometer noise", &P::zv_sigma_acc_mps2, 1e-5, 10.0, "m/s^2", "Accelerometer noise the statistic is normalised by", "Detector", FieldScope::DetectorAccelerometer),
+        real("zv_sigma_gyr_radps", "Gyroscope noise", &P::zv_sigma_gyr_radps, 1e-6, 1.0, "rad/s", "Gyroscope noise the statistic is normalised by", "Detector", FieldScope::DetectorGyroscope),
+        flag("zv_adaptive", "Adaptive threshold", &P::zv_adaptive, "Threshold follows the motion (off: a fixed threshold)", "Detector", FieldScope::StatisticDetectors),
+        real("zv_log_threshold", "Fixed threshold", &P::zv_log_threshold, -5.0, 15.0, "log10", "Fixed threshold on the statistic (log10), when not adaptive", "Detector", FieldScope::FixedThreshold),
+        real("zv_adapt_window_s", "Adaptive window", &P::zv_adapt_window_s, 0.1, 10.0, "s", "Adaptive: window of the running minimum (about one gait cycle)", "Detector", FieldScope::AdaptiveThreshold),
+        real("zv_adapt_offset_dec", "Offset above the minimum", &P::zv_adapt_offset_dec, 0.0, 5.0, "decades", "Adaptive: threshold above the running minimum", "Detector", FieldScope::AdaptiveThreshold),
+        real("zv_adapt_fraction", "Fraction towards the maximum", &P::zv_adapt_fraction, 0.0, 1.0, "x", "Adaptive: threshold this fraction of the way from the running minimum to the maximum", "Detector", FieldScope::AdaptiveThreshold),
+        real("zv_log_always", "Always at rest below", &P::zv_log_always, -5.0, 15.0, "log10", "Adaptive: below this the foot is always at rest", "Detector", FieldScope::AdaptiveThreshold),
+        real("zv_log_never", "Never at rest above", &P::zv_log_never, -5.0, 15.0, "log10", "Adaptive: above this the foot is never at rest", "Detector", FieldScope::AdaptiveThreshold),
+        real("zv_min_stance_s", "Shortest stance", &P::zv_min_stance_s, 0.0, 2.0, "s", "Shorter stance runs are dropped", "Detector", FieldScope::StatisticDetectors),
+        real("acc_min_mps2", "C1 lower bound on |a|", &P::acc_min_mps2, 0.0, 50.0, "m/s^2", "C1: lower bound on |a|", "Detector", FieldScope::PaperDetector),
+        real("acc_max_mps2", "C1 upper bound on |a|", &P::acc_max_mps2, 0.0, 200.0, "m/s^2", "C1: upper bound on |a|", "Detector", FieldScope::PaperDetector),
+        real("acc_std_max_mps2", "C2 bound on the std of |a|", &P::acc_std_max_mps2, 0.0, 20.0, "m/s^2", "C2: std of |a| over the window must be below", "Detector", FieldScope::PaperDetector),
+        real("window_half_s", "C2 half-window", &P::window_half_s, 0.0, 2.0, "s", "C2: half-window of the centred std", "Detector", FieldScope::PaperDetector),
+        real("gyr_max_radps", "C3 bound on |ω|", &P::gyr_max_radps, 0.0, 20.0, "rad/s", "C3: upper bound on |w|", "Detector", FieldScope::PaperDetector),
+        real("median_window_s", "Median filter length", &P::median_window_s, 0.0, 2.0, "s", "Median filter length applied to C", "Detector", FieldScope::PaperDetector),
+        choice("filter_states", "Filter states", &P::filter_states, {"15", "9"},
                {"15 states (with biases)", "9 states (no bias states)"},
                "Error-state filter size: 15 estimates the sensor biases, 9 holds them at zero", "Filter"),
-        choice("estimator", &P::estimator, {"ekf", "feliz"}, {"Kalman filter", "Feliz de-drift (no filter)"},
-               "Kalman filter with the measurements below, or Feliz 2009's per-stride velocity de-drift", "Measurements"),
-        flag("use_zupt", &P::use_zupt, "Zero-velocity update during stance", "Measurements"),
-        flag("use_zaru", &P::use_zaru, "Zero angular rate update during stance", "Measurements", FieldScope::Zaru),
-        flag("use_hdr", &P::use_hdr, "Heuristic drift reduction: heading held on straight walks (seed 002)", "Measurements"),
-        flag("use_iper", &P::use_iper, "Position error reduction: walks along the building's axes, level floor (seed 002; assumes a rectilinear building)", "Measurements"),
-        flag("use_zuna", &P::use_zuna, "Zero navigation acceleration at mid-stance (seed 002)", "Measurements"),
-        flag("use_baro", &P::use_baro, "Barometric height at each stance (seed 004)", "Measurements"),
-        flag("use_mag_heading", &P::use_mag_heading, "Magnetometer heading during stance, skipped near steel", "Measurements"),
-        real("hdr_lag_s", &P::hdr_lag_s, 0.05, 10.0, "s", "HDR: heading compared with the heading this long ago", "HDR", FieldScope::Hdr),
-        real("hdr_threshold_rad", &P::hdr_threshold_rad, 0.0, 1.0, "rad", "HDR: a smaller heading change is drift, a larger one a turn", "HDR", FieldScope::Hdr),
-        real("r_hdr_rad", &P::r_hdr_rad, 1e-6, 1.0, "rad", "HDR: R of the heading measurement, std", "HDR", FieldScope::Hdr),
-        flag("iper_axis_auto", &P::iper_axis_auto, "IPER: building axis from the walk's dominant directions", "IPER", FieldScope::Iper),
-        real("iper_axis_rad", &P::iper_axis_rad, -M_PI, M_PI, "rad", "IPER: angle of the building's main axis from x", "IPER", FieldScope::IperFixedAxis),
-        real("iper_threshold_rad", &P::iper_threshold_rad, 0.0, 0.8, "rad", "IPER: walking within this of an axis counts as along it", "IPER", FieldScope::Iper),
-        real("iper_window_s", &P::iper_window_s, 0.2, 30.0, "s", "IPER: displacement window", "IPER", FieldScope::Iper),
-        real("r_iper_m", &P::r_iper_m, 1e-6, 10.0, "m", "IPER: R of the cross-axis displacement, std", "IPER", FieldScope::Iper),
-        real("r_iper_height_m", &P::r_iper_height_m, 1e-6, 10.0, "m", "IPER: R of the level-floor height, std", "IPER", FieldScope::Iper),
-        real("zuna_reference_s", &P::zuna_reference_s, 0.1, 60.0, "s", "ZUNA: static start averaged for the reference", "ZUNA", FieldScope::Zuna),
-        real("zuna_min_stance_s", &P::zuna_min_stance_s, 0.0, 2.0, "s", "ZUNA: mid-stance needs a stance run this long", "ZUNA", FieldScope::Zuna),
-        real("zuna_margin_dec", &P::zuna_margin_dec, 0.0, 5.0, "decades", "ZUNA: mid-stance statistic this far below the threshold", "ZUNA", FieldScope::Zuna),
-        real("r_zuna_mps2", &P::r_zuna_mps2, 1e-6, 10.0, "m/s^2", "ZUNA: R of the acceleration, std", "ZUNA", FieldScope::Zuna),
-        choice("baro_model", &P::baro_model, {"formula", "linear"}, {"Barometric formula", "Linear constant (seed 004)"},
+        choice("estimator", "Estimator", &P::estimator, {"ekf", "feliz", "rts"},
+               {"Kalman filter", "Feliz de-drift (no filter)", "Kalman filter + RTS smoother"},
+               "Kalman filter with the measurements below, Feliz 2009's per-stride velocity de-drift, or the filter followed by a Rauch-Tung-Striebel smoother over the whole recording (offline; live input runs the filter)", "Measurements"),
+        flag("use_zupt", "Zero-velocity update (ZUPT)", &P::use_zupt, "Zero-velocity update during stance", "Measurements"),
+        flag("use_zaru", "Zero angular rate update (ZARU)", &P::use_zaru, "Zero angular rate update during stance", "Measurements", FieldScope::Zaru),
+        flag("use_hdr", "Heuristic drift reduction (HDR)", &P::use_hdr, "Heuristic drift reduction: heading held on straight walks (seed 002)", "Measurements"),
+        flag("use_iper", "Position error reduction (IPER)", &P::use_iper, "Position error reduction: walks along the building's axes, level floor (seed 002; assumes a rectilinear building)", "Measurements"),
+        flag("use_zuna", "Zero navigation acceleration (ZUNA)", &P::use_zuna, "Zero navigation acceleration at mid-stance (seed 002)", "Measurements"),
+        flag("use_baro", "Barometric height", &P::use_baro, "Barometric height at each stance (seed 004)", "Measurements"),
+        flag("use_mag_heading", "Magnetometer heading", &P::use_mag_heading, "Magnetometer heading during stance, skipped near steel", "Measurements"),
+        real("hdr_lag_s", "HDR heading lag", &P::hdr_lag_s, 0.05, 10.0, "s", "HDR: heading compared with the heading this long ago", "HDR", FieldScope::Hdr),
+        real("hdr_threshold_rad", "HDR turn threshold", &P::hdr_threshold_rad, 0.0, 1.0, "rad", "HDR: a smaller heading change is drift, a larger one a turn", "HDR", FieldScope::Hdr),
+        real("r_hdr_rad", "HDR measurement std", &P::r_hdr_rad, 1e-6, 1.0, "rad", "HDR: R of the heading measurement, std", "HDR", FieldScope::Hdr),
+        flag("iper_axis_auto", "Building axis from the walk", &P::iper_axis_auto, "IPER: building axis from the walk's dominant directions", "IPER", FieldScope::Iper),
+        real("iper_axis_rad", "Building axis angle", &P::iper_axis_rad, -M_PI, M_PI, "rad", "IPER: angle of the building's main axis from x", "IPER", FieldScope::IperFixedAxis),
+        real("iper_threshold_rad", "Along-axis tolerance", &P::iper_threshold_rad, 0.0, 0.8, "rad", "IPER: walking within this of an axis counts as along it", "IPER", FieldScope::Iper),
+        real("iper_window_s", "IPER window", &P::iper_window_s, 0.2, 30.0, "s", "IPER: displacement window", "IPER", FieldScope::Iper),
+        real("r_iper_m", "IPER cross-axis std", &P::r_iper_m, 1e-6, 10.0, "m", "IPER: R of the cross-axis displacement, std", "IPER", FieldScope::Iper),
+        real("r_iper_height_m", "IPER level-floor height std", &P::r_iper_height_m, 1e-6, 10.0, "m", "IPER: R of the level-floor height, std", "IPER", FieldScope::Iper),
+        real("zuna_reference_s", "ZUNA reference period", &P::zuna_reference_s, 0.1, 60.0, "s", "ZUNA: static start averaged for the reference", "ZUNA", FieldScope::Zuna),
+        real("zuna_min_stance_s", "ZUNA shortest stance", &P::zuna_min_stance_s, 0.0, 2.0, "s", "ZUNA: mid-stance needs a stance run this long", "ZUNA", FieldScope::Zuna),
+        real("zuna_margin_dec", "ZUNA margin below the threshold", &P::zuna_margin_dec, 0.0, 5.0, "decades", "ZUNA: mid-stance statistic this far below the threshold", "ZUNA", FieldScope::Zuna),
+        real("r_zuna_mps2", "ZUNA measurement std", &P::r_zuna_mps2, 1e-6, 10.0, "m/s^2", "ZUNA: R of the acceleration, std", "ZUNA", FieldScope::Zuna),
+        choice("baro_model", "Pressure to height", &P::baro_model, {"formula", "linear"}, {"Barometric formula", "Linear constant (seed 004)"},
                "Barometer: pressure difference to height", "Barometer", FieldScope::Barometer),
-        real("baro_linear_m_per_pa", &P::baro_linear_m_per_pa, 0.0, 1.0, "m/Pa", "Barometer: linear constant N", "Barometer", FieldScope::LinearBarometer),
-        real("r_baro_m", &P::r_baro_m, 1e-6, 100.0, "m", "Barometer: R of the height, std", "Barometer", FieldScope::Barometer),
-        real("motion_level_max_m", &P::motion_level_max_m, 0.0, 5.0, "m", "Motion class: smaller height change per step is level walking", "Barometer"),
-        real("motion_elevator_var_pa2", &P::motion_elevator_var_pa2, 0.0, 1e6, "Pa^2", "Motion class: pressure variance between steps above this is an elevator", "Barometer"),
-        real("r_mag_rad", &P::r_mag_rad, 1e-6, 3.0, "rad", "Magnetometer: R of the heading, std", "Magnetometer", FieldScope::MagHeading),
-        real("mag_norm_tolerance", &P::mag_norm_tolerance, 0.0, 1.0, "x", "Magnetometer: |m| within this fraction of its value at alignment", "Magnetometer", FieldScope::MagHeading),
-        real("mag_dip_tolerance_rad", &P::mag_dip_tolerance_rad, 0.0, 1.6, "rad", "Magnetometer: dip within this of its value at alignment", "Magnetometer", FieldScope::MagHeading),
-        real("q_att_rad", &P::q_att_rad, 0.0, 1.0, "rad", "Q attitude, std per 10 ms", "Process noise"),
-        real("q_gyro_bias_radps", &P::q_gyro_bias_radps, 0.0, 1.0, "rad/s", "Q gyro bias, std per 10 ms", "Process noise", FieldScope::BiasStates),
-        real("q_pos_m", &P::q_pos_m, 0.0, 1.0, "m", "Q position, std per 10 ms", "Process noise"),
-        real("q_vel_mps", &P::q_vel_mps, 0.0, 1.0, "m/s", "Q velocity, std per 10 ms", "Process noise"),
-        real("q_acc_bias_mps2", &P::q_acc_bias_mps2, 0.0, 1.0, "m/s^2", "Q accelerometer bias, std per 10 ms", "Process noise", FieldScope::BiasStates),
-        real("r_zupt_mps", &P::r_zupt_mps, 1e-6, 10.0, "m/s", "R ZUPT, std", "Measurement noise"),
-        real("r_zaru_radps", &P::r_zaru_radps, 1e-6, 10.0, "rad/s", "R ZARU, std", "Measurement noise", FieldScope::Zaru),
-        real("p0_att_rad", &P::p0_att_rad, 0.0, 10.0, "rad", "P0 attitude, std", "Initial covariance"),
-        real("p0_gyro_bias_radps", &P::p0_gyro_bias_radps, 0.0, 10.0, "rad/s", "P0 gyro bias, std", "Initial covariance", FieldScope::BiasStates),
-        real("p0_pos_m", &P::p0_pos_m, 0.0, 100.0, "m", "P0 position, std", "Initial covariance"),
-        real("p0_vel_mps", &P::p0_vel_mps, 0.0, 100.0, "m/s", "P0 velocity, std", "Initial covariance"),
-        real("p0_acc_bias_mps2", &P::p0_acc_bias_mps2, 0.0, 100.0, "m/s^2", "P0 accelerometer bias, std", "Initial covariance", FieldScope::BiasStates),
+        real("baro_linear_m_per_pa", "Linear constant N", &P::baro_linear_m_per_pa, 0.0, 1.0, "m/Pa", "Barometer: linear constant N", "Barometer", FieldScope::LinearBarometer),
+        real("r_baro_m", "Barometer height std", &P::r_baro_m, 1e-6, 100.0, "m", "Barometer: R of the height, std", "Barometer", FieldScope::Barometer),
+        real("motion_level_max_m", "Level walking height change", &P::motion_level_max_m, 0.0, 5.0, "m", "Motion class: smaller height change per step is level walking", "Barometer"),
+        real("motion_elevator_var_pa2", "Elevator pressure variance", &P::motion_elevator_var_pa2, 0.0, 1e6, "Pa^2", "Motion class: pressure variance between steps above this is an elevator", "Barometer"),
+        real("r_mag_rad", "Magnetometer heading std", &P::r_mag_rad, 1e-6, 3.0, "rad", "Magnetometer: R of the heading, std", "Magnetometer", FieldScope::MagHeading),
+        real("mag_norm_tolerance", "Field strength tolerance", &P::mag_norm_tolerance, 0.0, 1.0, "x", "Magnetometer: |m| within this fraction of its value at alignment", "Magnetometer", FieldScope::MagHeading),
+        real("mag_dip_tolerance_rad", "Dip angle tolerance", &P::mag_dip_tolerance_rad, 0.0, 1.6, "rad", "Magnetometer: dip within this of its value at alignment", "Magnetometer", FieldScope::MagHeading),
+        real("q_att_rad", "Q attitude", &P::q_att_rad, 0.0, 1.0, "rad", "Q attitude, std per 10 ms", "Process noise"),
+        real("q_gyro_bias_radps", "Q gyroscope bias", &P::q_gyro_bias_radps, 0.0, 1.0, "rad/s", "Q gyro bias, std per 10 ms", "Process noise", FieldScope::BiasStates),
+        real("q_pos_m", "Q position", &P::q_pos_m, 0.0, 1.0, "m", "Q position, std per 10 ms", "Process noise"),
+        real("q_vel_mps", "Q velocity", &P::q_vel_mps, 0.0, 1.0, "m/s", "Q velocity, std per 10 ms", "Process noise"),
+        real("q_acc_bias_mps2", "Q accelerometer bias", &P::q_acc_bias_mps2, 0.0, 1.0, "m/s^2", "Q accelerometer bias, std per 10 ms", "Process noise", FieldScope::BiasStates),
+        real("r_zupt_mps", "R zero velocity", &P::r_zupt_mps, 1e-6, 10.0, "m/s", "R ZUPT, std", "Measurement noise"),
+        real("r_zaru_radps", "R zero angular rate", &P::r_zaru_radps, 1e-6, 10.0, "rad/s", "R ZARU, std", "Measurement noise", FieldScope::Zaru),
+        real("p0_att_rad", "P0 attitude", &P::p0_att_rad, 0.0, 10.0, "rad", "P0 attitude, std", "Initial covariance"),
+        real("p0_gyro_bias_radps", "P0 gyroscope bias", &P::p0_gyro_bias_radps, 0.0, 10.0, "rad/s", "P0 gyro bias, std", "Initial covariance", FieldScope::BiasStates),
+        real("p0_pos_m", "P0 position", &P::p0_pos_m, 0.0, 100.0, "m", "P0 position, std", "Initial covariance"),
+        real("p0_vel_mps", "P0 velocity", &P::p0_vel_mps, 0.0, 100.0, "m/s", "P0 velocity, std", "Initial covariance"),
+        real("p0_acc_bias_mps2", "P0 accelerometer bias", &P::p0_acc_bias_mps2, 0.0, 100.0, "m/s^2", "P0 accelerometer bias, std", "Initial covariance", FieldScope::BiasStates),
     };
 }
 
@@ -158,6 +162,7 @@ Parameters guo2015Parameters()
     params.use_zaru = true;
     params.q_att_rad = 1e-4;
     params.q_vel_mps = 1e-4;
+    params.estimator = static_cast<int>(EstimatorKind::Ekf);  // the paper filters; it has no smoother
     return params;
 }
 
@@ -165,6 +170,22 @@ const std::vector<ParameterField>& parameterFields()
 {
     static const std::vector<ParameterField> fields = makeFields();
     return fields;
+}
+
+std::string displayUnit(const ParameterField& field)
+{
+    std::string unit = field.unit;
+    if (unit == "x")  // a fraction or factor: nothing to write
+        return {};
+    for (std::size_t at = unit.find("^2"); at != std::string::npos; at = unit.find("^2"))
+        unit.replace(at, 2, "\u00b2");
+    return unit;
+}
+
+std::string labelWithUnit(const ParameterField& field)
+{
+    const std::string unit = displayUnit(field);
+    return unit.empty() ? std::string(field.label) : std::string(field.label) + " (" + unit + ")";
 }
 
 const ParameterField* findParameterField(const std::string& name)

@@ -20,9 +20,11 @@ enum class DetectorKind : int {
 enum class FilterStates : int { Fifteen = 0, Nine };
 
 /// What turns the inertial samples into a path: the error-state Kalman filter with its measurement
-/// sources (Guo 2015, seed 002, 004), or Feliz et al. 2009's per-stride velocity de-drift (seed 003,
-/// no Kalman filter; offline only: it needs the stance that ends each stride).
-enum class EstimatorKind : int { Ekf = 0, Feliz };
+/// sources (Guo 2015, seed 002, 004); the same filter followed by a Rauch-Tung-Striebel smoother
+/// (offline: every estimate uses the whole recording); or Feliz et al. 2009's per-stride velocity
+/// de-drift (seed 003, no Kalman filter; offline only: it needs the stance that ends each stride).
+/// Stored in presets by name: keep the order.
+enum class EstimatorKind : int { Ekf = 0, Feliz, Smoother };
 
 /// How a pressure difference becomes a height difference (seed 004, eq. 6-10).
 enum class BarometerModel : int { Formula = 0, Linear };
@@ -64,7 +66,7 @@ struct Parameters {
     int filter_states = static_cast<int>(FilterStates::Nine);  ///< measured better (README, "Filter structure")
 
 
-    int estimator = static_cast<int>(EstimatorKind::Ekf);
+    int estimator = static_cast<int>(EstimatorKind::Smoother);  ///< offline; live input runs the filter (README, "Smoother")
 
     // Measurement sources (core/nav/MeasurementSources.h lists them in the order they are applied)
     bool use_zupt = true;
@@ -110,7 +112,7 @@ struct Parameters {
     double q_att_rad = 3e-5;
     double q_gyro_bias_radps = 0.0;
     double q_pos_m = 0.0;
-    double q_vel_mps = 3e-4;
+    double q_vel_mps = 4e-4;
     double q_acc_bias_mps2 = 0.0;
 
     // Measurement noise R: std
@@ -176,9 +178,16 @@ struct ParameterField {
     std::vector<const char*> choiceNames = {};  ///< names of the choices, as presets and --set spell them
     std::vector<const char*> choiceLabels = {};  ///< what a user reads ("SHOE (GLRT)")
     FieldScope scope = FieldScope::Always;
+    /// A short name for people ("C2 bound on the std of |a|"), without the unit: front ends show
+    /// labelWithUnit() and keep `name` for the tool tip, presets and --set.
+    const char* label = "";
 };
 
 const std::vector<ParameterField>& parameterFields();
+/// The unit as people write it (UTF-8): "m/s^2" -> "m/s²", "Pa^2" -> "Pa²"; unit-less fields ("x") give "".
+std::string displayUnit(const ParameterField& field);
+/// "C2 bound on the std of |a| (m/s²)"; the label alone for fields without a unit.
+std::string labelWithUnit(const ParameterField& field);
 const ParameterField* findParameterField(const std::string& name);
 
 /// The first condition of field's scope that params does not meet (a statistic-detector field under

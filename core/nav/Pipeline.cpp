@@ -9,6 +9,7 @@
 #include "nav/MeasurementSources.h"
 #include "nav/MotionClasses.h"
 #include "nav/Plausibility.h"
+#include "nav/RtsSmoother.h"
 
 #include <chrono>
 #include <sstream>
@@ -69,7 +70,8 @@ SampleStanceFlags flagsAt(const StanceFlags& flags, std::size_t k)
     return sample;
 }
 
-/// Runs the filter over every sample; returns false if the callback cancelled.
+/// Runs the filter over every sample, then the smoother's backward pass when it is chosen; returns
+/// false if the callback cancelled.
 bool runFilter(const Recording& recording, const Parameters& params, const StanceFlags& flags,
                const ProgressCallback& progress, Result& result)
 {
@@ -77,17 +79,38 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
     const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
     ErrorStateEkf ekf(params, alignment.bodyToNav);
     MeasurementSources sources(params);
+    std::optional<RtsSmoother> smoother;
+    if (params.estimatorKind() == EstimatorKind::Smoother) {
+        smoother.emplace(params, ekf);
+        smoother->reserve(samples.size());
+    }
+    // The forward pass is most of the work without the smoother, about half with it.
+    const double forwardShare = smoother ? 0.5 : 1.0;
     reserveResult(result, samples.size());
     result.errorStd.reserve(samples.size());
+    const std::size_t start = alignmentStart(flags.stance);  // after a mid-walk start, the first stance
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const std::optional<double> previousTime_s =
-            k > 0 ? std::optional<double>(samples[k - 1].time_s) : std::nullopt;
-        filterSample(ekf, sources, samples[k], previousTime_s, flagsAt(flags, k), result);
-        if (progress && k % kProgressInterval == 0 && !progress(static_cast<double>(k) / static_cast<double>(samples.size())))
+            k > start ? std::optional<double>(samples[k - 1].time_s) : std::nullopt;
+        if (k < start)
+            holdAtStart(ekf, samples[k].time_s, result);
+        else
+            filterSample(ekf, sources, samples[k], previousTime_s, flagsAt(flags, k), result);
+        if (smoother)
+            smoother->capture(ekf);
+        if (progress && k % kProgressInterval == 0
+            && !progress(forwardShare * static_cast<double>(k) / static_cast<double>(samples.size())))
             return false;
     }
     sources.finish(samples.back().time_s, result.methodNotes);
-    return true;
+    if (!smoother)
+        return true;
+    result.forwardSpeed_mps.reserve(samples.size());
+    for (const Eigen::Vector3d& velocity : result.velocity_mps)
+        result.forwardSpeed_mps.push_back(static_cast<float>(velocity.norm()));
+    return smoother->smooth(result, [&](double fraction) {
+        return !progress || progress(forwardShare + (1.0 - forwardShare) * fraction);
+    });
 }
 
 double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b)

@@ -1,5 +1,7 @@
 #include "nav/Plausibility.h"
 
+#include "nav/Alignment.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -60,11 +62,18 @@ std::vector<std::pair<std::size_t, std::size_t>> runsWhere(std::size_t n, Predic
     return runs;
 }
 
+/// The forward filter's speed: a smoother spreads a runaway over the recording, which must not
+/// hide it.
+double speedAt(const Result& result, std::size_t k)
+{
+    return result.forwardSpeed_mps.empty() ? result.velocity_mps[k].norm() : result.forwardSpeed_mps[k];
+}
+
 double peakSpeed(const Result& result, std::size_t first, std::size_t last)
 {
     double peak = 0.0;
     for (std::size_t k = first; k < last; ++k)
-        peak = std::max(peak, result.velocity_mps[k].norm());
+        peak = std::max(peak, speedAt(result, k));
     return peak;
 }
 
@@ -101,6 +110,17 @@ std::string whatBlockedStance(const Result& result, std::size_t first, std::size
 void checkInitialRest(const Result& result, const Parameters& params, const PlausibilityLimits& limits,
                       std::vector<PlausibilityWarning>& out)
 {
+    // Where runFilter started: after a mid-walk start it waited for the first stance.
+    const std::size_t start = std::min(alignmentStart(result.flags.stance), result.time_s.size() - 1);
+    const double held_s = result.time_s[start] - result.time_s.front();
+    if (held_s > limits.maxQuietHold_s) {
+        out.push_back({Kind::NoInitialRest, result.time_s.front(), result.time_s[start],
+                       format("The recording starts mid-walk (no stance until t = %.2f s). The path starts at that "
+                              "first stance, where roll and pitch were aligned, instead of assuming rest at the first "
+                              "sample; the %.2f s before it are held at the start position and not estimated.",
+                              result.time_s[start], held_s)});
+        return;
+    }
     const double end = result.time_s.front() + params.alignment_s;
     std::size_t count = 0, atRest = 0;
     for (std::size_t k = 0; k < result.time_s.size() && result.time_s[k] <= end; ++k, ++count)
@@ -108,10 +128,16 @@ void checkInitialRest(const Result& result, const Parameters& params, const Plau
     const double share = count > 0 ? static_cast<double>(atRest) / static_cast<double>(count) : 0.0;
     if (share >= limits.minInitialRestShare)
         return;
-    out.push_back({Kind::NoInitialRest, result.time_s.front(), end,
-                   format("The recording does not start at rest: only %.0f %% of the first %.2f s are stance, so the "
-                          "initial roll and pitch come from a moving foot and the path may tilt and drift.",
-                          100.0 * share, params.alignment_s)});
+    const std::string message =
+        result.steps.empty()
+            ? format("The recording has no stance at all: roll and pitch were aligned on the first %.2f s of a "
+                     "moving foot, so the path may tilt and drift.",
+                     params.alignment_s)
+            : format("The recording does not start at rest: only %.0f %% of the first %.2f s are stance. Roll and "
+                     "pitch were aligned on the first stance samples alone, so the initial attitude is less certain "
+                     "and the path may tilt.",
+                     100.0 * share, params.alignment_s);
+    out.push_back({Kind::NoInitialRest, result.time_s.front(), end, message});
 }
 
 void checkSwings(const Result& result, const Parameters& params, const PlausibilityLimits& limits,
@@ -149,7 +175,7 @@ void checkStrides(const Result& result, const PlausibilityLimits& limits, std::v
 
 void checkSpeed(const Result& result, const PlausibilityLimits& limits, std::vector<PlausibilityWarning>& out)
 {
-    const auto tooFast = [&](std::size_t k) { return result.velocity_mps[k].norm() > limits.maxFootSpeed_mps; };
+    const auto tooFast = [&](std::size_t k) { return speedAt(result, k) > limits.maxFootSpeed_mps; };
     for (const auto& [first, last] : runsWhere(result.time_s.size(), tooFast))
         out.push_back({Kind::ImplausibleSpeed, result.time_s[first], result.time_s[last - 1],
                        format("The estimated foot speed reaches %.1f m/s, faster than a foot moves (under %.0f m/s): "

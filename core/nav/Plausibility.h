@@ -18,6 +18,8 @@ struct PlausibilityLimits {
     double minStanceShare = 0.10;     ///< walking keeps the foot still 25-60 % of the time, running 15-30 %
     double maxStanceShare = 0.90;     ///< of the time between the first and the last stance while moving
     double minInitialRestShare = 0.5; ///< of the samples of the alignment period
+    double maxQuietHold_s = 0.25;     ///< samples held before a late first stance without a warning:
+                                      ///< a few at the start are the detector's window edge, not a walk
     double movingSpeed_mps = 0.3;     ///< a span is "moving" when the estimated speed exceeds this
 };
 

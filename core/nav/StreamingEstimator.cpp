@@ -7,6 +7,7 @@
 #include "nav/Pipeline.h"
 #include "nav/Plausibility.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <optional>
@@ -42,10 +43,12 @@ struct StreamingEstimator::Impl {
     bool accepts(const ImuSample& sample) const;
     void accept(const ImuSample& sample);
     void end();
-    bool alignmentInputsFinal() const;
+    bool locateAlignmentStart();
+    bool alignmentInputsFinal();
     void align();
     void estimateDecided();
     void estimate(const ImuSample& sample, const SampleStanceFlags& flags);
+    void hold(const ImuSample& sample, const SampleStanceFlags& flags);
     void closeStancePhase(std::size_t end);
 
     Parameters params;
@@ -58,10 +61,11 @@ struct StreamingEstimator::Impl {
     std::size_t rejected = 0;
     bool finished = false;
 
-    // Alignment: the samples with t <= t0 + alignment_s, and whether a later one has arrived.
-    double alignmentEnd_s = 0.0;
-    std::size_t alignmentSamples = 0;
-    bool alignmentPeriodOver = false;
+    // Alignment starts at alignmentStart() of the decided flags: sample 0, or after a mid-walk
+    // start the first stance; the samples before it are held at the start state.
+    std::size_t flagsSearched = 0;               ///< decided flags searched for the first stance
+    std::optional<std::size_t> alignmentStartIndex;
+    std::size_t heldSamples = 0;
 
     std::optional<ErrorStateEkf> ekf;  ///< set once aligned
     MeasurementSources sources{params};
@@ -80,14 +84,6 @@ bool StreamingEstimator::Impl::accepts(const ImuSample& sample) const
 
 void StreamingEstimator::Impl::accept(const ImuSample& sample)
 {
-    if (received == 0)
-        alignmentEnd_s = sample.time_s + params.alignment_s;  // as averageStatic computes it
-    if (!ekf) {
-        if (sample.time_s <= alignmentEnd_s)
-            ++alignmentSamples;
-        else
-            alignmentPeriodOver = true;
-    }
     ++received;
     newestTime_s = sample.time_s;
     pending.push_back(sample);
@@ -116,20 +112,43 @@ void StreamingEstimator::Impl::end()
     result.warnings = checkPlausibility(result, params);
 }
 
-bool StreamingEstimator::Impl::alignmentInputsFinal() const
+/// Before alignment nothing is estimated, so decided flag k is sample k's: the first stance among
+/// them is alignmentStart() of the whole recording (sample 0 when it is stance).
+bool StreamingEstimator::Impl::locateAlignmentStart()
 {
-    return alignmentPeriodOver && decidedFlags.size() >= alignmentSamples;
+    for (; !alignmentStartIndex && flagsSearched < decidedFlags.size(); ++flagsSearched)
+        if (decidedFlags[flagsSearched].stance)
+            alignmentStartIndex = flagsSearched;
+    return alignmentStartIndex.has_value();
+}
+
+/// The alignment period (alignment_s from its start) is over and every sample in it is decided.
+bool StreamingEstimator::Impl::alignmentInputsFinal()
+{
+    if (!locateAlignmentStart())
+        return false;
+    const double end_s = pending[*alignmentStartIndex].time_s + params.alignment_s;  // as averageStatic computes it
+    const std::size_t decided = decidedFlags.size();
+    return decided < pending.size() && pending[decided].time_s > end_s;
 }
 
 /// alignInitialAttitude on exactly what runPipeline gives it (its loop stops at the first sample
-/// after the alignment period), so the initial attitude is the offline one.
+/// after the alignment period), so the initial attitude is the offline one. Without any stance
+/// (only at the end of data) it starts at sample 0, as offline.
 void StreamingEstimator::Impl::align()
 {
-    const std::vector<ImuSample> samples(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(alignmentSamples));
-    std::vector<std::uint8_t> stance(alignmentSamples);
-    for (std::size_t k = 0; k < alignmentSamples; ++k)
+    const std::size_t start = alignmentStartIndex.value_or(0);
+    const double end_s = pending[start].time_s + params.alignment_s;
+    std::size_t count = start;
+    while (count < pending.size() && count < decidedFlags.size() && pending[count].time_s <= end_s)
+        ++count;
+    count = std::max<std::size_t>(count, 1);
+    const std::vector<ImuSample> samples(pending.begin(), pending.begin() + static_cast<std::ptrdiff_t>(count));
+    std::vector<std::uint8_t> stance(std::min(count, decidedFlags.size()));
+    for (std::size_t k = 0; k < stance.size(); ++k)
         stance[k] = decidedFlags[k].stance;
     ekf.emplace(params, alignInitialAttitude(samples, stance, params).bodyToNav);
+    heldSamples = start;
 }
 
 void StreamingEstimator::Impl::estimateDecided()
@@ -137,7 +156,10 @@ void StreamingEstimator::Impl::estimateDecided()
     if (!ekf || decidedFlags.empty())
         return;
     while (!decidedFlags.empty()) {
-        estimate(pending.front(), decidedFlags.front());
+        if (result.time_s.size() < heldSamples)
+            hold(pending.front(), decidedFlags.front());
+        else
+            estimate(pending.front(), decidedFlags.front());
         pending.pop_front();
         decidedFlags.pop_front();
     }
@@ -154,6 +176,13 @@ void StreamingEstimator::Impl::estimate(const ImuSample& sample, const SampleSta
         stancePhaseStart = k;
     else if (!flags.stance && stancePhaseStart)
         closeStancePhase(k);
+}
+
+/// A sample before the mid-walk start's first stance: the start state, as runFilter holds it.
+void StreamingEstimator::Impl::hold(const ImuSample& sample, const SampleStanceFlags& flags)
+{
+    holdAtStart(*ekf, sample.time_s, result);
+    appendFlags(result.flags, flags);
 }
 
 /// The open stance phase, result samples [start, end), becomes a step as fillStepsAndSummary makes it.

@@ -19,7 +19,9 @@ namespace footpath {
 /// times (the detector's causal form), so on a sample grid the hold-back may differ from latency_s() by
 /// up to one sample interval, and the first sample after a gap longer than the latency releases
 /// every sample before it. Alignment waits for the first alignment_s seconds (and their
-/// look-ahead) before the first state appears.
+/// look-ahead) before the first state appears; after a mid-walk start (see alignmentStart) it waits
+/// for the first stance and the alignment_s after it, and the samples before that stance get the
+/// start state.
 ///
 /// After finish(), result() equals runPipeline on the same samples (runtime_s aside): the same
 /// flags, states, steps and summary, value for value.

@@ -1,0 +1,140 @@
+// The Rauch-Tung-Striebel smoother against the filter on simulated walks with known truth.
+#include "metrics/Evaluation.h"
+#include "nav/Pipeline.h"
+#include "nav/RtsSmoother.h"
+#include "sim/WalkSimulator.h"
+
+#include <QtTest>
+
+using namespace footpath;
+
+namespace {
+
+Result run(const Recording& recording, Parameters params, EstimatorKind estimator)
+{
+    params.estimator = static_cast<int>(estimator);
+    PipelineOutput output = runPipeline(recording, params);
+    if (!output.error.empty())
+        qFatal("%s", output.error.c_str());
+    return std::move(output.result);
+}
+
+/// Root mean square of the height error over every sample: the heading drift of the unobservable
+/// gyro bias dominates the horizontal error of both, the height shows what smoothing does.
+double heightRms(const Result& result, const std::vector<Eigen::Vector3d>& truth)
+{
+    double sum = 0.0;
+    for (std::size_t k = 0; k < truth.size(); ++k)
+        sum += std::pow(result.position_m[k].z() - truth[k].z(), 2);
+    return std::sqrt(sum / static_cast<double>(truth.size()));
+}
+
+/// The largest error of one sample's displacement: the filter's path jumps where a ZUPT corrects
+/// the velocity error a swing accumulated; the smoother spreads that correction over the swing.
+double largestStepError(const Result& result, const std::vector<Eigen::Vector3d>& truth)
+{
+    double largest = 0.0;
+    for (std::size_t k = 1; k < truth.size(); ++k)
+        largest = std::max(largest,
+                           ((result.position_m[k] - result.position_m[k - 1]) - (truth[k] - truth[k - 1])).norm());
+    return largest;
+}
+
+Parameters fifteenStates()
+{
+    Parameters params;
+    params.filter_states = static_cast<int>(FilterStates::Fifteen);
+    params.use_zaru = true;
+    return params;
+}
+
+}  // namespace
+
+class TestRtsSmoother : public QObject {
+    Q_OBJECT
+private slots:
+    void smootherFollowsTheTruthBetterThanTheFilter_data()
+    {
+        QTest::addColumn<int>("states");
+        QTest::addColumn<double>("heightRatio");  // the smoother's height error at most this of the filter's
+        // The 15-state filter's accelerometer bias states already take out most of the vertical drift.
+        QTest::newRow("9 states") << static_cast<int>(FilterStates::Nine) << 0.8;
+        QTest::newRow("15 states") << static_cast<int>(FilterStates::Fifteen) << 1.0;
+    }
+
+    void smootherFollowsTheTruthBetterThanTheFilter()
+    {
+        QFETCH(int, states);
+        QFETCH(double, heightRatio);
+        Parameters params = states == static_cast<int>(FilterStates::Nine) ? Parameters() : fifteenStates();
+        double heightFilter = 0.0, heightSmoother = 0.0, jumpFilter = 0.0, jumpSmoother = 0.0;
+        for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+            WalkSimulatorConfig sensor = mtiClassSensor(100.0, seed);
+            sensor.accNoiseStd_mps2 *= 5.0;  // a low-cost accelerometer: more drift within each swing
+            const SimulatedWalk walk = simulateWalk(straightLinePath(12.0), sensor);
+            const Result filter = run(walk.recording, params, EstimatorKind::Ekf);
+            const Result smoother = run(walk.recording, params, EstimatorKind::Smoother);
+            const double hf = heightRms(filter, walk.truePosition_m), hs = heightRms(smoother, walk.truePosition_m);
+            const double jf = largestStepError(filter, walk.truePosition_m);
+            const double js = largestStepError(smoother, walk.truePosition_m);
+            qInfo("seed %u: height RMS filter %.4f m, smoother %.4f m; largest step error %.4f / %.4f m", seed, hf, hs,
+                  jf, js);
+            heightFilter += hf;
+            heightSmoother += hs;
+            jumpFilter = std::max(jumpFilter, jf);
+            jumpSmoother = std::max(jumpSmoother, js);
+        }
+        QVERIFY2(heightSmoother < heightRatio * heightFilter,
+                 qPrintable(QString("height: filter %1, smoother %2").arg(heightFilter).arg(heightSmoother)));
+        QVERIFY2(jumpSmoother < 0.7 * jumpFilter,
+                 qPrintable(QString("jumps: filter %1, smoother %2").arg(jumpFilter).arg(jumpSmoother)));
+    }
+
+    void smoothedUncertaintyIsNeverAboveTheFilters()
+    {
+        const SimulatedWalk walk = simulateWalk(straightLinePath(10.0), mtiClassSensor(100.0, 3));
+        const Result filter = run(walk.recording, fifteenStates(), EstimatorKind::Ekf);
+        const Result smoother = run(walk.recording, fifteenStates(), EstimatorKind::Smoother);
+        QCOMPARE(smoother.errorStd.size(), filter.errorStd.size());
+        std::size_t smaller = 0;
+        for (std::size_t k = 0; k < filter.errorStd.size(); ++k) {
+            for (int i = 0; i < 15; ++i)
+                QVERIFY2(smoother.errorStd[k](i) <= filter.errorStd[k](i) * 1.001f + 1e-9f,
+                         qPrintable(QString("sample %1 state %2: %3 > %4").arg(k).arg(i)
+                                        .arg(smoother.errorStd[k](i)).arg(filter.errorStd[k](i))));
+            smaller += smoother.errorStd[k](ErrorStdIndex::velocity) < 0.9f * filter.errorStd[k](ErrorStdIndex::velocity);
+        }
+        // ZUPT observes the velocity: within a swing the next stance tightens it (the position,
+        // a random walk under ZUPT alone, barely changes).
+        QVERIFY2(smaller > filter.errorStd.size() / 4, "the smoother should tighten the velocity in the swings");
+        // The last sample has no future: smoothed and filtered agree.
+        QVERIFY((smoother.position_m.back() - filter.position_m.back()).norm() < 1e-12);
+    }
+
+    void smootherCanBeCancelled()
+    {
+        const SimulatedWalk walk = simulateWalk(straightLinePath(30.0), mtiClassSensor(100.0, 1));
+        Parameters params;
+        params.estimator = static_cast<int>(EstimatorKind::Smoother);
+        double last = 0.0;
+        const PipelineOutput output = runPipeline(walk.recording, params, [&](double fraction) {
+            last = fraction;
+            return fraction < 0.6;  // into the backward pass
+        });
+        QVERIFY(output.result.cancelled);
+        QVERIFY(last >= 0.6);
+    }
+
+    void storageIsWhatTheHeaderSays()
+    {
+        Parameters nine;
+        const ErrorStateEkf ekf9(nine, Eigen::Matrix3d::Identity());
+        QCOMPARE(RtsSmoother(nine, ekf9).bytesPerSample(), std::size_t(62 * 8));
+        const Parameters fifteen = fifteenStates();
+        const ErrorStateEkf ekf15(fifteen, Eigen::Matrix3d::Identity());
+        QCOMPARE(RtsSmoother(fifteen, ekf15).bytesPerSample(), std::size_t(147 * 8));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRtsSmoother)
+#include "tst_rtssmoother.moc"

@@ -1,0 +1,153 @@
+#include "PlotInteraction.h"
+#include "StatePlots.h"
+#include "nav/Pipeline.h"
+#include "sim/WalkSimulator.h"
+
+#include <QSignalSpy>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include <cmath>
+#include <memory>
+
+using namespace footpath;
+using Row = StatePlots::Row;
+
+namespace {
+
+constexpr std::size_t kSamples = 500;
+constexpr double kPi = 3.14159265358979323846;
+
+/// A result with known states and standard deviations: velocity x ramps with σ 0.2 m/s, roll is
+/// 10° with σ 0.01 rad, height 1.5 m with σ 0.05 m; the biases move (so they count as estimated).
+std::shared_ptr<Result> knownResult(bool withCovariance)
+{
+    auto result = std::make_shared<Result>();
+    for (std::size_t k = 0; k < kSamples; ++k) {
+        const double t = static_cast<double>(k) / 100.0;
+        result->time_s.push_back(t);
+        result->position_m.emplace_back(0.0, 0.0, 1.5);
+        result->velocity_mps.emplace_back(t, 0.0, 0.0);
+        result->rollPitchYaw_rad.emplace_back(10.0 * kPi / 180.0, 0.0, 0.0);
+        result->gyroBias_radps.emplace_back(1e-4 * t, 0.0, 0.0);
+        result->accBias_mps2.emplace_back(1e-3 * t, 0.0, 0.0);
+        result->flags.stance.push_back(k < 100 ? 1 : 0);
+        if (!withCovariance)
+            continue;
+        Eigen::Matrix<float, 15, 1> sigma = Eigen::Matrix<float, 15, 1>::Constant(0.001f);
+        sigma[ErrorStdIndex::velocity] = 0.2f;
+        sigma[ErrorStdIndex::attitude] = 0.01f;
+        sigma[ErrorStdIndex::position + 2] = 0.05f;
+        result->errorStd.push_back(sigma);
+    }
+    return result;
+}
+
+/// Width of the band (upper - lower) and its centre at time_s.
+std::pair<double, double> bandAt(const StatePlots& plots, Row row, int component, double time_s)
+{
+    const auto valueAt = [time_s](const QCPGraph* graph) { return graph->data()->findBegin(time_s, false)->value; };
+    const double upper = valueAt(plots.bandUpper(row, component)), lower = valueAt(plots.bandLower(row, component));
+    return {upper - lower, (upper + lower) / 2.0};
+}
+
+}  // namespace
+
+class TestStatePlots : public QObject {
+    Q_OBJECT
+
+private slots:
+    void bandsAreOneSigmaEitherSideFromErrorStd()
+    {
+        StatePlots plots;
+        plots.setResult(knownResult(true));
+        const auto [velocityWidth, velocityCentre] = bandAt(plots, Row::Velocity, 0, 2.0);
+        QVERIFY(std::abs(velocityWidth - 0.4) < 1e-6);  // ±0.2 m/s
+        QVERIFY(std::abs(velocityCentre - 2.0) < 1e-6);  // around the curve
+        const auto [rollWidth, rollCentre] = bandAt(plots, Row::Attitude, 0, 1.0);
+        QVERIFY(std::abs(rollWidth - 2.0 * 0.01 * 180.0 / kPi) < 1e-4);  // rad -> °, like the curve
+        QVERIFY(std::abs(rollCentre - 10.0) < 1e-4);
+        const auto [heightWidth, heightCentre] = bandAt(plots, Row::Height, 0, 3.0);
+        QVERIFY(std::abs(heightWidth - 0.1) < 1e-6);
+        QVERIFY(std::abs(heightCentre - 1.5) < 1e-6);
+        QVERIFY(plots.rowNote(Row::Velocity).isEmpty());
+        // The curves themselves, with the unit their row states.
+        QCOMPARE(plots.graph(Row::Attitude, 0)->data()->findBegin(1.0, false)->value, 10.0);
+        QVERIFY(plots.axisRect(Row::Attitude)->axis(QCPAxis::atLeft)->label().contains(QStringLiteral("°")));
+        // The value axes hold curve and band.
+        QVERIFY(plots.axisRect(Row::Velocity)->axis(QCPAxis::atLeft)->range().contains(-0.2));
+        QVERIFY(plots.axisRect(Row::Velocity)->axis(QCPAxis::atLeft)->range().contains(4.99 + 0.2));
+    }
+
+    void withoutCovarianceTheRowsSaySoAndDrawNoBand()
+    {
+        StatePlots plots;
+        plots.setResult(knownResult(false));  // as the Feliz estimator delivers it
+        for (const Row row : {Row::Attitude, Row::Velocity, Row::Height, Row::GyroBias, Row::AccBias}) {
+            QVERIFY(plots.bandUpper(row, 0)->data()->isEmpty());
+            QVERIFY2(plots.rowNote(row).contains(QStringLiteral("covariance")), qPrintable(plots.rowNote(row)));
+            QVERIFY(!plots.graph(row, 0)->data()->isEmpty());  // the estimate is still drawn
+        }
+    }
+
+    void constantBiasesAreNotPresentedAsEstimates()
+    {
+        auto result = knownResult(true);
+        for (Eigen::Vector3d& bias : result->gyroBias_radps)
+            bias.setZero();
+        StatePlots plots;
+        plots.setResult(result);
+        QVERIFY(plots.rowNote(Row::GyroBias).contains(QStringLiteral("Not estimated")));
+        QVERIFY(plots.bandUpper(Row::GyroBias, 0)->data()->isEmpty());
+        QVERIFY(plots.rowNote(Row::AccBias).isEmpty());
+        QVERIFY(!plots.bandUpper(Row::AccBias, 0)->data()->isEmpty());
+    }
+
+    void followsTheSharedTimeAxisAndCursor()
+    {
+        StatePlots plots;
+        plots.setResult(knownResult(true));
+        QSignalSpy ranges(&plots, &StatePlots::timeRangeChanged);
+        plots.setTimeRange(1.0, 2.0);
+        QCOMPARE(ranges.count(), 1);
+        for (const Row row : {Row::Attitude, Row::AccBias})
+            QCOMPARE(plots.axisRect(row)->axis(QCPAxis::atBottom)->range(), QCPRange(1.0, 2.0));
+        plots.setTimeCursor(1.5);
+        QCOMPARE(plots.timeCursor(), 1.5);
+        plots.interaction()->resetView();
+        QCOMPARE(plots.timeRange().upper, static_cast<double>(kSamples - 1) / 100.0);
+    }
+
+    void readoutNamesStateAndSigma()
+    {
+        StatePlots plots;
+        plots.setResult(knownResult(true));
+        plots.resize(900, 800);
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        plots.plot()->replot();
+        const QCPAxisRect* rect = plots.axisRect(Row::Velocity);
+        plots.interaction()->probeAt(QPointF(rect->axis(QCPAxis::atBottom)->coordToPixel(2.0), rect->center().y()));
+        const QString readout = plots.interaction()->readoutText();
+        QVERIFY2(readout.contains(QStringLiteral("σ x = 0.20")), qPrintable(readout));
+        QVERIFY2(readout.contains(QStringLiteral("m/s")), qPrintable(readout));
+    }
+
+    void aSimulatedWalkHasBandsEverywhere()
+    {
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(6.0, 3.0), WalkSimulatorConfig());
+        auto result = std::make_shared<const Result>(runPipeline(walk.recording, Parameters()).result);
+        QVERIFY(!result->errorStd.empty());
+        StatePlots plots;
+        plots.setResult(result);
+        for (const Row row : {Row::Attitude, Row::Velocity, Row::Height}) {
+            QVERIFY(!plots.bandUpper(row, 0)->data()->isEmpty());
+            const auto [width, centre] = bandAt(plots, row, 0, result->time_s[result->time_s.size() / 2]);
+            Q_UNUSED(centre);
+            QVERIFY(width > 0.0);
+        }
+    }
+};
+
+QTEST_MAIN(TestStatePlots)
+#include "tst_stateplots.moc"

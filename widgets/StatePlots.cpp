@@ -1,0 +1,377 @@
+#include "StatePlots.h"
+
+#include "PlotInteraction.h"
+#include "TimeAxisNavigation.h"
+#include "TimeBands.h"
+
+#include <QKeyEvent>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace footpath {
+
+namespace {
+
+using Row = StatePlots::Row;
+
+constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
+constexpr double kValueMargin = 1.1;          // 5 % air above and below the curves and bands
+constexpr double kMinimumSpan = 1e-3;         // a constant row still gets an axis to read
+constexpr std::size_t kMaxBandPoints = 8000;  // σ changes slowly: more points would only cost drawing time
+const QString kStanceLayer = QStringLiteral("stance");
+const QString kCursorLayer = QStringLiteral("cursor");
+const QColor kStanceBrush(250, 200, 110, 70);  // SignalPlots' light amber, a little lighter under bands
+
+struct RowInfo {
+    const char* axisLabel;  // with the unit, translated in the StatePlots context
+    int components;
+    std::array<const char*, StatePlots::kMaxComponents> names;
+    int sigmaStart;  // ErrorStdIndex block
+    bool isBias;
+};
+
+constexpr std::array<RowInfo, StatePlots::kRowCount> kRowInfos = {{
+    {QT_TRANSLATE_NOOP("footpath::StatePlots", "Attitude\n(°)"), 3,
+     {QT_TRANSLATE_NOOP("footpath::StatePlots", "roll"), QT_TRANSLATE_NOOP("footpath::StatePlots", "pitch"),
+      QT_TRANSLATE_NOOP("footpath::StatePlots", "yaw")},
+     ErrorStdIndex::attitude, false},
+    {QT_TRANSLATE_NOOP("footpath::StatePlots", "Velocity\n(m/s)"), 3,
+     {QT_TRANSLATE_NOOP("footpath::StatePlots", "x"), QT_TRANSLATE_NOOP("footpath::StatePlots", "y"),
+      QT_TRANSLATE_NOOP("footpath::StatePlots", "z")},
+     ErrorStdIndex::velocity, false},
+    {QT_TRANSLATE_NOOP("footpath::StatePlots", "Height\n(m)"), 1,
+     {QT_TRANSLATE_NOOP("footpath::StatePlots", "height"), nullptr, nullptr}, ErrorStdIndex::position + 2, false},
+    {QT_TRANSLATE_NOOP("footpath::StatePlots", "Gyro bias\n(rad/s)"), 3,
+     {QT_TRANSLATE_NOOP("footpath::StatePlots", "x"), QT_TRANSLATE_NOOP("footpath::StatePlots", "y"),
+      QT_TRANSLATE_NOOP("footpath::StatePlots", "z")},
+     ErrorStdIndex::gyroBias, true},
+    {QT_TRANSLATE_NOOP("footpath::StatePlots", "Acc. bias\n(m/s²)"), 3,
+     {QT_TRANSLATE_NOOP("footpath::StatePlots", "x"), QT_TRANSLATE_NOOP("footpath::StatePlots", "y"),
+      QT_TRANSLATE_NOOP("footpath::StatePlots", "z")},
+     ErrorStdIndex::accBias, true},
+}};
+
+// SignalPlots' x/y/z colours and dashes, so a printout in grey still tells them apart.
+const std::array<QPen, StatePlots::kMaxComponents>& componentPens()
+{
+    static const std::array<QPen, StatePlots::kMaxComponents> pens = {{
+        QPen(QColor(200, 40, 40), 1.2, Qt::SolidLine),
+        QPen(QColor(30, 130, 50), 1.0, Qt::DashLine),
+        QPen(QColor(30, 80, 190), 1.0, Qt::DotLine),
+    }};
+    return pens;
+}
+
+std::size_t slot(Row row) { return static_cast<std::size_t>(row); }
+QCPAxis* timeAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atBottom); }
+QCPAxis* valueAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atLeft); }
+
+/// The row's component at sample k in the unit its axis shows; NaN where the result has no such sample.
+double stateValue(const Result& result, Row row, std::size_t k, int component)
+{
+    const auto pick = [k, component](const std::vector<Eigen::Vector3d>& series) {
+        return k < series.size() ? series[k][component] : std::numeric_limits<double>::quiet_NaN();
+    };
+    switch (row) {
+    case Row::Attitude: return pick(result.rollPitchYaw_rad) * kDegreesPerRadian;
+    case Row::Velocity: return pick(result.velocity_mps);
+    case Row::Height: return k < result.position_m.size() ? result.position_m[k].z() : std::nan("");
+    case Row::GyroBias: return pick(result.gyroBias_radps);
+    case Row::AccBias: return pick(result.accBias_mps2);
+    }
+    return std::nan("");
+}
+
+/// σ of the component at sample k, in the row's unit. The attitude error is about the navigation
+/// axes, which for a foot's small roll and pitch is roll, pitch and yaw closely enough for a band.
+double stateSigma(const Result& result, Row row, std::size_t k, int component)
+{
+    const double sigma = result.errorStd[k][kRowInfos[slot(row)].sigmaStart + component];
+    return row == Row::Attitude ? sigma * kDegreesPerRadian : sigma;
+}
+
+/// Whether the row's curve jumps from a to b by wrapping around (yaw, or the roll of an upside-down
+/// sensor, at ±180°): drawn as a gap rather than a line across the row.
+bool wraps(Row row, double a, double b)
+{
+    return row == Row::Attitude && std::abs(b - a) > 180.0;
+}
+
+bool isConstant(const Result& result, Row row)
+{
+    const std::size_t n = result.time_s.size();
+    for (std::size_t k = 1; k < n; ++k)
+        for (int c = 0; c < kRowInfos[slot(row)].components; ++c)
+            if (stateValue(result, row, k, c) != stateValue(result, row, 0, c))
+                return false;
+    return true;
+}
+
+}  // namespace
+
+StatePlots::StatePlots(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this))
+{
+    setFocusPolicy(Qt::StrongFocus);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(plot_);
+    plot_->setAutoAddPlottableToLegend(false);
+    plot_->setPlottingHint(QCP::phFastPolylines);
+    plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    plot_->addLayer(kStanceLayer, plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
+    plot_->addLayer(kCursorLayer, plot_->layer(QStringLiteral("legend")), QCustomPlot::limBelow);
+    plot_->layer(kCursorLayer)->setMode(QCPLayer::lmBuffered);
+    plot_->plotLayout()->clear();
+    plot_->plotLayout()->setRowSpacing(4);
+    auto* alignedMargins = new QCPMarginGroup(plot_);
+    timeRows_ = new LinkedTimeRows(plot_);
+    for (std::size_t r = 0; r < kRowCount; ++r) {
+        rows_[r].rect = new QCPAxisRect(plot_);
+        plot_->plotLayout()->addElement(static_cast<int>(r), 0, rows_[r].rect);
+        rows_[r].rect->setMarginGroup(QCP::msLeft | QCP::msRight, alignedMargins);
+        createRow(r);
+        timeRows_->addRow(rows_[r].rect);
+        const bool bottom = r + 1 == kRowCount;  // one time scale at the foot of the stack
+        timeAxis(rows_[r].rect)->setTickLabels(bottom);
+        if (bottom)
+            timeAxis(rows_[r].rect)->setLabel(tr("Time (s)"));
+    }
+    bandLegendEntry_ = plot_->addGraph(timeAxis(rows_.front().rect), rows_.front().rect->axis(QCPAxis::atRight));
+    bandLegendEntry_->setName(tr("±1σ"));
+    bandLegendEntry_->setPen(Qt::NoPen);
+    bandLegendEntry_->setBrush(QColor(120, 120, 120, 70));
+    connect(timeRows_, &LinkedTimeRows::rangeChanged, this, &StatePlots::timeRangeChanged);
+    connect(timeRows_, &LinkedTimeRows::clicked, this, [this](double time_s) {
+        setTimeCursor(time_s);
+        emit timeCursorMoved(time_s);
+    });
+    interaction_ = new PlotInteraction(plot_);
+    interaction_->setResetAction([this] {
+        showAll();
+        for (std::size_t r = 0; r < kRowCount; ++r)
+            rescaleRow(r);
+    });
+    setResult(nullptr);
+}
+
+StatePlots::~StatePlots() = default;
+
+void StatePlots::createRow(std::size_t r)
+{
+    RowParts& row = rows_[r];
+    const RowInfo& info = kRowInfos[r];
+    valueAxis(row.rect)->setLabel(tr(info.axisLabel));
+    row.stance = new TimeBands(row.rect, kStanceBrush);
+    row.stance->setLayer(kStanceLayer);
+    row.cursor = addCursorLine(plot_, row.rect, kCursorLayer);
+    row.legend = addRowLegend(row.rect);
+    row.componentCount = info.components;
+    for (int c = 0; c < info.components; ++c) {
+        Component& component = row.components[static_cast<std::size_t>(c)];
+        const QPen& pen = componentPens()[static_cast<std::size_t>(c)];
+        QColor fill = pen.color();
+        fill.setAlpha(45);
+        // Bands first, so the curves are drawn over them.
+        component.lower = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
+        component.upper = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
+        for (QCPGraph* edge : {component.lower, component.upper}) {
+            edge->setPen(Qt::NoPen);
+            edge->setSelectable(QCP::stNone);
+        }
+        component.upper->setBrush(fill);
+        component.upper->setChannelFillGraph(component.lower);
+        component.curve = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
+        component.curve->setName(tr(info.names[static_cast<std::size_t>(c)]));
+        component.curve->setPen(info.components == 1 ? QPen(QColor(0, 110, 120), 1.2) : pen);
+        component.curve->setSelectable(QCP::stNone);
+        component.curve->addToLegend(row.legend);
+        component.sigma = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
+        component.sigma->setName(tr("σ %1").arg(component.curve->name()));
+        component.sigma->setLineStyle(QCPGraph::lsNone);
+        component.sigma->setPen(Qt::NoPen);
+        component.sigma->setSelectable(QCP::stNone);
+    }
+    row.note = new QCPItemText(plot_);
+    row.note->setClipToAxisRect(true);
+    row.note->setClipAxisRect(row.rect);
+    row.note->position->setType(QCPItemPosition::ptAxisRectRatio);
+    row.note->position->setAxisRect(row.rect);
+    row.note->position->setCoords(0.01, 0.97);
+    row.note->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
+    row.note->setColor(QColor(90, 90, 90));
+    row.note->setBrush(QColor(255, 255, 255, 200));
+    row.note->setPadding(QMargins(3, 1, 3, 1));
+    row.note->setSelectable(false);
+}
+
+void StatePlots::setResult(std::shared_ptr<const Result> result)
+{
+    result_ = std::move(result);
+    const std::vector<QCPRange> stance =
+        result_ ? flaggedSpans(result_->time_s, result_->flags.stance) : std::vector<QCPRange>();
+    for (std::size_t r = 0; r < kRowCount; ++r) {
+        rows_[r].stance->setSpans(stance);
+        plotRow(r);
+        rescaleRow(r);
+    }
+    const bool hasBands = result_ && !result_->errorStd.empty();
+    bandLegendEntry_->removeFromLegend(rows_.front().legend);
+    if (hasBands)
+        bandLegendEntry_->addToLegend(rows_.front().legend);
+    showAll();
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void StatePlots::plotRow(std::size_t r)
+{
+    RowParts& row = rows_[r];
+    const Row which = static_cast<Row>(r);
+    const std::size_t n = result_ ? result_->time_s.size() : 0;
+    const bool hasBands = n > 0 && result_->errorStd.size() >= n;
+    const bool constantBias = n > 0 && kRowInfos[r].isBias && isConstant(*result_, which);
+    const bool bands = hasBands && !constantBias;
+    const std::size_t stride = std::max<std::size_t>(1, n / kMaxBandPoints);
+    const double gap = std::numeric_limits<double>::quiet_NaN();
+    for (int c = 0; c < row.componentCount; ++c) {
+        Component& component = row.components[static_cast<std::size_t>(c)];
+        QVector<double> keys, values, bandKeys, lower, upper, sigma;
+        for (std::size_t k = 0; k < n; ++k) {
+            const double value = stateValue(*result_, which, k, c);
+            if (!values.isEmpty() && wraps(which, values.back(), value)) {
+                keys << result_->time_s[k];
+                values << gap;  // QCustomPlot leaves a gap at NaN
+            }
+            keys << result_->time_s[k];
+            values << value;
+            if (!bands || (k % stride != 0 && k + 1 != n))
+                continue;
+            const double s = stateSigma(*result_, which, k, c);
+            if (!lower.isEmpty() && wraps(which, lower.back() + sigma.back(), value)) {
+                bandKeys << result_->time_s[k];
+                lower << gap;
+                upper << gap;
+                sigma << sigma.back();
+            }
+            bandKeys << result_->time_s[k];
+            lower << value - s;
+            upper << value + s;
+            sigma << s;
+        }
+        component.curve->setData(keys, values, true);
+        component.lower->setData(bandKeys, lower, true);
+        component.upper->setData(bandKeys, upper, true);
+        component.sigma->setData(bandKeys, sigma, true);
+    }
+    QString note;
+    if (constantBias)
+        note = tr("Not estimated (constant)");
+    else if (n > 0 && !hasBands)
+        note = tr("No ±1σ band: this estimator keeps no covariance");
+    row.note->setText(note);
+    row.note->setVisible(!note.isEmpty());
+    showCollapsed(r, constantBias);
+}
+
+void StatePlots::showCollapsed(std::size_t r, bool collapsed)
+{
+    // A state the filter did not estimate is a flat line: a lane saying so, not a row of axis.
+    RowParts& row = rows_[r];
+    QCPAxis* values = valueAxis(row.rect);
+    values->setTicks(!collapsed);
+    values->setTickLabels(!collapsed);
+    values->grid()->setVisible(!collapsed);
+    const int laneHeight = 2 * QFontMetrics(values->labelFont()).height() + 6;  // its two-line label
+    row.rect->setMinimumSize(0, collapsed ? laneHeight : 0);
+    row.rect->setMaximumSize(QWIDGETSIZE_MAX, collapsed ? laneHeight : QWIDGETSIZE_MAX);
+    row.legend->setVisible(!collapsed);
+    row.note->position->setCoords(0.01, collapsed ? 0.5 : 0.97);
+    row.note->setPositionAlignment(Qt::AlignLeft | (collapsed ? Qt::AlignVCenter : Qt::AlignBottom));
+}
+
+void StatePlots::rescaleRow(std::size_t r)
+{
+    RowParts& row = rows_[r];
+    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+    for (int c = 0; c < row.componentCount; ++c) {
+        const Component& component = row.components[static_cast<std::size_t>(c)];
+        for (const QCPGraph* graph : {component.curve, component.lower, component.upper})
+            for (const QCPGraphData& point : *graph->data())
+                if (std::isfinite(point.value)) {
+                    lowest = std::min(lowest, point.value);
+                    highest = std::max(highest, point.value);
+                }
+    }
+    if (lowest > highest) {
+        valueAxis(row.rect)->setRange(-1.0, 1.0);
+        return;
+    }
+    const double centre = (lowest + highest) / 2.0;
+    const double span = std::max({(highest - lowest) * kValueMargin, std::abs(centre) * 0.1, kMinimumSpan});
+    valueAxis(row.rect)->setRange(centre - span / 2.0, centre + span / 2.0);
+}
+
+QCPRange StatePlots::timeRange() const { return timeRows_->range(); }
+QCPAxisRect* StatePlots::axisRect(Row row) const { return rows_[slot(row)].rect; }
+
+QCPGraph* StatePlots::graph(Row row, int component) const
+{
+    return component < rows_[slot(row)].componentCount ? rows_[slot(row)].components[static_cast<std::size_t>(component)].curve : nullptr;
+}
+
+QCPGraph* StatePlots::bandLower(Row row, int component) const
+{
+    return component < rows_[slot(row)].componentCount ? rows_[slot(row)].components[static_cast<std::size_t>(component)].lower : nullptr;
+}
+
+QCPGraph* StatePlots::bandUpper(Row row, int component) const
+{
+    return component < rows_[slot(row)].componentCount ? rows_[slot(row)].components[static_cast<std::size_t>(component)].upper : nullptr;
+}
+
+QString StatePlots::rowNote(Row row) const
+{
+    const QCPItemText* note = rows_[slot(row)].note;
+    return note->visible() ? note->text() : QString();
+}
+
+void StatePlots::setTimeCursor(double time_s)
+{
+    timeCursor_s_ = time_s;
+    for (RowParts& row : rows_) {
+        row.cursor->point1->setCoords(time_s, 0.0);
+        row.cursor->point2->setCoords(time_s, 1.0);
+        row.cursor->setVisible(true);
+    }
+    plot_->layer(kCursorLayer)->replot();
+}
+
+void StatePlots::setTimeRange(double from_s, double to_s)
+{
+    timeRows_->setRange(from_s, to_s);
+}
+
+void StatePlots::showAll()
+{
+    if (result_ && result_->time_s.size() >= 2)
+        setTimeRange(result_->time_s.front(), result_->time_s.back());
+}
+
+void StatePlots::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_Home)
+        showAll();
+    else if (!timeRows_->navigate(event->key()))
+        return QWidget::keyPressEvent(event);
+    event->accept();
+}
+
+void StatePlots::renderTo(QPainter& painter, const QRect& target)
+{
+    renderPlotTo(plot_, painter, target);
+}
+
+}  // namespace footpath
