@@ -114,11 +114,19 @@ void checkInitialRest(const Result& result, const Parameters& params, const Plau
     const std::size_t start = std::min(alignmentStart(result.flags.stance), result.time_s.size() - 1);
     const double held_s = result.time_s[start] - result.time_s.front();
     if (held_s > limits.maxQuietHold_s) {
+        // Feliz's integrator runs from the first sample; only its attitude waits for the stance.
+        const std::string what =
+            params.estimatorKind() == EstimatorKind::Feliz
+                ? format("Roll and pitch were aligned at that first stance; the %.2f s before it are integrated from "
+                         "an assumed rest, so the start of the path is uncertain.",
+                         held_s)
+                : format("The path starts at that first stance, where roll and pitch were aligned, instead of "
+                         "assuming rest at the first sample; the %.2f s before it are held at the start position "
+                         "and not estimated.",
+                         held_s);
         out.push_back({Kind::NoInitialRest, result.time_s.front(), result.time_s[start],
-                       format("The recording starts mid-walk (no stance until t = %.2f s). The path starts at that "
-                              "first stance, where roll and pitch were aligned, instead of assuming rest at the first "
-                              "sample; the %.2f s before it are held at the start position and not estimated.",
-                              result.time_s[start], held_s)});
+                       format("The recording starts mid-walk (no stance until t = %.2f s). ", result.time_s[start])
+                           + what});
         return;
     }
     const double end = result.time_s.front() + params.alignment_s;

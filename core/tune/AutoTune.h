@@ -1,0 +1,77 @@
+#pragma once
+
+#include "Recording.h"
+#include "Result.h"
+#include "nav/Parameters.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace footpath {
+
+/// What tuning minimises, per recording, averaged over the recordings (evaluation.md's metrics):
+/// the end-to-start distance in % of the path for walks that end where they started, the distance
+/// error in % for walks of known length, or the 2D ARMSE against a full reference.
+enum class TuneCriterion { ClosedLoop, KnownLength, Reference };
+
+const char* tuneCriterionName(TuneCriterion criterion);  ///< "closed-loop", "length", "reference"
+std::optional<TuneCriterion> parseTuneCriterion(const std::string& name);
+
+/// One parameter the search moves, within [low, high], on a log scale when the range spans decades.
+struct TuneDimension {
+    std::string name;  ///< a parameterFields() name
+    double low = 0.0;
+    double high = 1.0;
+    bool logScale = false;
+};
+
+/// The default search space: the adaptive detector (offset, fraction, "never" bound, minimum stance)
+/// and the filter's noise (Q velocity, Q attitude, R ZUPT); with the C1/C2/C3 detector its three
+/// bounds instead of the adaptive ones.
+std::vector<TuneDimension> defaultTuneSpace(const Parameters& base);
+
+/// The criterion on one recording's result, lower is better; NaN when the recording lacks what
+/// the criterion needs (not closed, no known length, no reference positions).
+double tuneScore(const Recording& recording, const Result& result, TuneCriterion criterion);
+
+struct TuneOptions {
+    TuneCriterion criterion = TuneCriterion::ClosedLoop;
+    int evaluations = 200;      ///< parameter sets tried, the starting one included
+    int threads = 0;            ///< 0: one per core
+    std::uint32_t seed = 1;     ///< the search is deterministic for a seed
+    std::vector<TuneDimension> space;  ///< empty: defaultTuneSpace(base)
+};
+
+struct TuneProgress {
+    int evaluations = 0;  ///< done so far
+    int budget = 0;
+    double bestScore = 0.0;
+};
+
+struct TuneOutcome {
+    Parameters best;                     ///< the base when nothing better was found
+    double baseScore = 0.0;              ///< mean criterion of the base over the recordings
+    double bestScore = 0.0;
+    std::vector<double> basePerRecording;  ///< in the order of the recordings (NaN: not scored)
+    std::vector<double> bestPerRecording;
+    int evaluations = 0;
+    bool cancelled = false;
+    std::string error;  ///< empty on success: no recording has what the criterion needs, a bad space
+};
+
+/// Searches the space for the parameters that minimise the mean criterion over the recordings: the
+/// base, then a spread of samples over the whole space, then a shrinking local search around the
+/// best (each generation evaluated in parallel). A candidate that raises a plausibility warning the
+/// base did not have on some recording is rejected however good its number: tuning must not trade
+/// a plausible path for a smaller figure. progress is called from the calling thread after each
+/// generation; cancel stops at the next one (the best so far is returned, cancelled set).
+TuneOutcome tuneParameters(const std::vector<const Recording*>& recordings, const Parameters& base,
+                           const TuneOptions& options,
+                           const std::function<void(const TuneProgress&)>& progress = {},
+                           const std::atomic<bool>* cancel = nullptr);
+
+}  // namespace footpath
