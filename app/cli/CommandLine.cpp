@@ -41,6 +41,12 @@ const char* const kCompareSynopsis =
     R"(  footpath-cli compare INPUT... [import options] [--params preset.json] [--set name=value ...]
                              [--sets "zupt;zupt,zaru;zupt,zaru,hdr;..."] [--jobs N] [--json]
 )";
+const char* const kTuneSynopsis =
+    R"(  footpath-cli tune INPUT... --criterion closed-loop|length|reference --out preset.json
+                          [--evaluations N] [--seed N] [--jobs N] [import options]
+                          [--params preset.json] [--set name=value ...] [--closed-loop] [--length METRES]
+                          [--reference-columns x,y,z] [--json]
+)";
 const char* const kInfoSynopsis = "  footpath-cli info INPUT [import options] [--json]\n";
 const char* const kRecordSynopsis =
     "  footpath-cli record --port PATH [--baud N] [--rate HZ] [--duration S] --out FILE.mtb [--csv FILE.csv]\n";
@@ -110,6 +116,18 @@ end-to-start and ARMSE, the largest F1); several INPUTs add the mean per set. Wi
 "inputs" (one such object per file), "sets" (the means) and "best". --jobs N runs N sets at once.
 )";
 
+const char* const kTuneText =
+    R"(tune searches the detector settings and the filter noise for the values that minimise the
+criterion averaged over the INPUTs (files or folders, as for eval), starting from --params and --set:
+closed-loop, the end-to-start distance in % of the path of walks marked closed (--closed-loop, or a
+closed walk's reference); length, the distance error in % of walks of known length (--length, or the
+file name); reference, the 2D ARMSE against reference positions. A setting that adds a plausibility
+warning on any INPUT is never chosen. It prints the criterion per INPUT before and after and the
+parameters it changed, and saves the tuned parameters to --out (a preset for --params and the
+workspace). --evaluations N parameter sets are tried (default 200), --jobs N runs at once, --seed N
+makes another search. Measure a preset on recordings it was not tuned on.
+)";
+
 const char* const kInfoText =
     "info prints what was read: format, samples, rate, duration, channels, units, gaps, the reference\n"
     "the file carries and the import warnings (--json: one JSON object).\n";
@@ -131,16 +149,16 @@ std::string withSuggestedSets(std::string text)
 
 const std::vector<std::string>& commandNames()
 {
-    static const std::vector<std::string> names = {"process", "eval", "compare", "info", "report", "record"};
+    static const std::vector<std::string> names = {"process", "eval", "compare", "tune", "info", "report", "record"};
     return names;
 }
 
 std::string usageText()
 {
     std::string text = std::string("Usage:\n") + kProcessSynopsis + kReportSynopsis + kEvalSynopsis + kCompareSynopsis
-                       + kInfoSynopsis + kRecordSynopsis
+                       + kTuneSynopsis + kInfoSynopsis + kRecordSynopsis
                        + "  footpath-cli COMMAND --help   the options of one command\n" + kImportOptions
-                       + kReferenceText + kRecordText + kEvalText + kCompareText + kWarningsText + kExitCodes;
+                       + kReferenceText + kRecordText + kEvalText + kCompareText + kTuneText + kWarningsText + kExitCodes;
     return withSuggestedSets(std::move(text));
 }
 
@@ -148,7 +166,8 @@ std::string commandSynopsis(const std::string& command)
 {
     const std::map<std::string, const char*> synopses = {
         {"process", kProcessSynopsis}, {"report", kReportSynopsis}, {"eval", kEvalSynopsis},
-        {"compare", kCompareSynopsis}, {"info", kInfoSynopsis},     {"record", kRecordSynopsis}};
+        {"compare", kCompareSynopsis}, {"tune", kTuneSynopsis},     {"info", kInfoSynopsis},
+        {"record", kRecordSynopsis}};
     const auto found = synopses.find(command);
     return found == synopses.end() ? std::string() : std::string("Usage:\n") + found->second;
 }
@@ -166,6 +185,8 @@ std::string commandUsageText(const std::string& command)
     else if (command == "compare")
         text += kCompareSynopsis + std::string("\n") + kCompareText + kParameterOptions + kImportOptions + kReferenceText
                 + kWarningsText;
+    else if (command == "tune")
+        text += kTuneSynopsis + std::string("\n") + kTuneText + kParameterOptions + kImportOptions + kReferenceText;
     else if (command == "info")
         text += kInfoSynopsis + std::string("\n") + kInfoText + kImportOptions;
     else if (command == "record")
@@ -212,6 +233,18 @@ Handler storeJobs()
     };
 }
 
+Handler storeWhole(int CommandLine::*member, const std::string& option, double maximum)
+{
+    return [member, option, maximum](CommandLine& c, const std::string& v) {
+        double value = 0.0;
+        const bool whole = parsePositive(v, value) && value == std::floor(value) && value <= maximum;
+        c.*member = whole ? static_cast<int>(value) : 0;
+        return whole ? std::string()
+                     : option + " expects a whole number from 1 to " + std::to_string(static_cast<long>(maximum))
+                           + ", got '" + v + "'";
+    };
+}
+
 Handler storePositive(double CommandLine::*member, const std::string& option, const char* what)
 {
     return [member, option, what](CommandLine& c, const std::string& v) {
@@ -255,10 +288,13 @@ const std::map<std::string, Handler>& valueOptions()
         {"--length", storePositive(&CommandLine::length_m, "--length", "metres")},
         {"--jobs", storeJobs()},
         {"--sets", storeText(&CommandLine::methodSets)},
+        {"--criterion", storeText(&CommandLine::criterion)},
+        {"--evaluations", storeWhole(&CommandLine::evaluations, "--evaluations", 1e6)},
+        {"--seed", storeWhole(&CommandLine::seed, "--seed", 1e9)},
         {"--port", storeText(&CommandLine::port)},
         {"--baud", storePositive(&CommandLine::baud, "--baud", "a baud rate")},
         {"--duration", storePositive(&CommandLine::duration_s, "--duration", "seconds")},
-        {"--out", storeText(&CommandLine::mtbOut)},
+        {"--out", storeText(&CommandLine::outFile)},
         {"--csv", storeText(&CommandLine::csvOut)},
     };
     return options;
@@ -291,7 +327,7 @@ std::string parseArgument(const std::vector<std::string>& args, std::size_t& i, 
         return handler->second(out, args[++i]);
     } else if (arg.rfind("-", 0) == 0 && arg.size() > 1) {
         return "unknown option '" + arg + "'" + didYouMean(arg, optionNames());
-    } else if (out.input.empty() || out.command == "eval" || out.command == "compare") {
+    } else if (out.input.empty() || out.command == "eval" || out.command == "compare" || out.command == "tune") {
         if (out.input.empty())
             out.input = arg;
         out.inputs.push_back(arg);
@@ -307,7 +343,7 @@ std::string checkRecordCombination(const CommandLine& c)
         return "record reads a serial port, not a file: pass it with --port (got '" + c.input + "')";
     if (c.port.empty())
         return "record needs --port PATH (e.g. /dev/ttyUSB0, or the emulator's /tmp/ttyMTi0)";
-    if (c.mtbOut.empty())
+    if (c.outFile.empty())
         return "record needs --out FILE.mtb";
     const bool otherOptions = !c.paramsFile.empty() || !c.sets.empty() || !c.format.empty() || !c.columnMap.empty()
                               || !c.importPreset.empty() || !c.saveImportPreset.empty() || !c.accUnit.empty()
@@ -323,14 +359,36 @@ std::string checkRecordCombination(const CommandLine& c)
     return {};
 }
 
+std::string checkTuneCombination(const CommandLine& c)
+{
+    if (c.input.empty())
+        return "missing INPUT: the recordings to tune on";
+    if (c.criterion != "closed-loop" && c.criterion != "length" && c.criterion != "reference")
+        return c.criterion.empty() ? "tune needs --criterion closed-loop, length or reference"
+                                   : "--criterion expects closed-loop, length or reference, got '" + c.criterion + "'";
+    if (c.outFile.empty())
+        return "tune needs --out preset.json, where the tuned parameters go";
+    if (!c.port.empty() || c.baud > 0.0 || c.duration_s > 0.0 || !c.csvOut.empty())
+        return "--port, --baud, --duration and --csv belong to record";
+    if (!c.methodSets.empty())
+        return "--sets belongs to compare";
+    const bool outputs = !c.trajectoryOut.empty() || !c.stepsOut.empty() || !c.summaryOut.empty()
+                         || !c.summaryCsvOut.empty() || !c.parametersCsvOut.empty() || !c.pdfOut.empty();
+    return outputs ? "tune writes only the preset (--out)" : std::string();
+}
+
 std::string checkCombination(const CommandLine& c)
 {
-    const bool recordOptions = !c.port.empty() || c.baud > 0.0 || c.duration_s > 0.0 || !c.mtbOut.empty()
+    const bool recordOptions = !c.port.empty() || c.baud > 0.0 || c.duration_s > 0.0 || !c.outFile.empty()
                                || !c.csvOut.empty();
     if (c.command == "record")
         return checkRecordCombination(c);
+    if (c.command == "tune")
+        return checkTuneCombination(c);
     if (recordOptions)
         return "--port, --baud, --duration, --out and --csv belong to record";
+    if (!c.criterion.empty() || c.evaluations != CommandLine().evaluations || c.seed != CommandLine().seed)
+        return "--criterion, --evaluations and --seed belong to tune";
     if (c.input.empty())
         return "missing INPUT file";
     const bool evaluation = c.closedLoop || c.length_m > 0.0;
@@ -339,11 +397,11 @@ std::string checkCombination(const CommandLine& c)
                          || !c.summaryCsvOut.empty() || !c.parametersCsvOut.empty();
     const bool estimation = !c.paramsFile.empty() || !c.sets.empty();
     if (c.command != "eval" && evaluation)
-        return "--closed-loop and --length belong to eval";
+        return "--closed-loop and --length belong to eval and tune";
     if (!several && !c.referenceColumns.empty())
-        return "--reference-columns belongs to eval and compare";
+        return "--reference-columns belongs to eval, compare and tune";
     if (!several && c.jobs > 0)
-        return "--jobs belongs to eval and compare";
+        return "--jobs belongs to eval, compare and tune";
     if (c.command != "compare" && !c.methodSets.empty())
         return "--sets belongs to compare";
     if ((c.command == "process" || c.command == "report") && c.json)
@@ -373,7 +431,7 @@ std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& 
     const std::vector<std::string>& known = commandNames();
     if (std::find(known.begin(), known.end(), out.command) == known.end())
         return "unknown command '" + out.command + "'" + didYouMean(out.command, known)
-               + " (expected process, eval, compare, info, report or record)";
+               + " (expected process, eval, compare, tune, info, report or record)";
     // Asking for a command's help always works, whatever else the line holds.
     if (std::any_of(args.begin() + 1, args.end(), isHelpOption)) {
         out.help = true;

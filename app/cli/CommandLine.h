@@ -7,10 +7,10 @@ namespace footpath::cli {
 
 /// What the user asked for, before any file is touched.
 struct CommandLine {
-    std::string command;  ///< "process", "eval", "compare", "info", "report", "record" or "help"
+    std::string command;  ///< "process", "eval", "compare", "tune", "info", "report", "record" or "help"
     bool help = false;    ///< COMMAND --help: print the command's usage and options
     std::string input;                ///< the first INPUT
-    std::vector<std::string> inputs;  ///< every INPUT (several only for eval and compare)
+    std::vector<std::string> inputs;  ///< every INPUT (several only for eval, compare and tune)
     // Parameters
     std::string paramsFile;
     std::vector<std::string> sets;  ///< "name=value"
@@ -35,14 +35,18 @@ struct CommandLine {
     bool closedLoop = false;
     double length_m = 0.0;
     bool json = false;
-    int jobs = 0;  ///< eval's and compare's parallel runs; 0: one per core
+    int jobs = 0;  ///< eval's, compare's and tune's parallel runs; 0: one per core
     // Comparison (compare)
     std::string methodSets;  ///< --sets "zupt;zupt,zaru"; empty: the suggested sets
+    // Self-tuning (tune)
+    std::string criterion;   ///< closed-loop, length or reference
+    int evaluations = 200;   ///< parameter sets tried
+    int seed = 1;
     // Live recording (record)
     std::string port;
     double baud = 0.0;      ///< 0: 115200 with a probe of the common rates
     double duration_s = 0.0;  ///< device seconds; 0: until Ctrl+C
-    std::string mtbOut;
+    std::string outFile;  ///< --out: record's FILE.mtb, tune's preset.json
     std::string csvOut;
 };
 

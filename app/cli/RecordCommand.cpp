@@ -37,7 +37,7 @@ SessionSettings settingsFrom(const CommandLine& cmd)
     if (cmd.rate_hz > 0.0)
         settings.rate_hz = static_cast<std::uint16_t>(cmd.rate_hz);
     settings.stopAfter_s = cmd.duration_s;
-    settings.recording.mtb = QString::fromStdString(cmd.mtbOut);
+    settings.recording.mtb = QString::fromStdString(cmd.outFile);
     settings.recording.csv = QString::fromStdString(cmd.csvOut);
     return settings;
 }

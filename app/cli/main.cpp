@@ -4,6 +4,7 @@
 #include "cli/CompareCommand.h"
 #include "cli/RecordCommand.h"
 #include "cli/ReportCommand.h"
+#include "cli/TuneCommand.h"
 
 #include <algorithm>
 #include <exception>
@@ -22,7 +23,7 @@ std::string shortUsage(const std::string& command)
 {
     const std::string synopsis = commandSynopsis(command);
     if (synopsis.empty())
-        return "Commands: process, eval, compare, info, report, record.\n"
+        return "Commands: process, eval, compare, tune, info, report, record.\n"
                "footpath-cli --help shows them all; footpath-cli COMMAND --help explains one.";
     return synopsis + "footpath-cli " + command + " --help lists its options.";
 }
@@ -48,6 +49,8 @@ int dispatch(const std::vector<std::string>& args)
         return runReport(cmd);
     if (cmd.command == "compare")
         return runCompare(cmd);
+    if (cmd.command == "tune")
+        return runTune(cmd);
     return cmd.command == "process" ? runProcess(cmd) : runEval(cmd);
 }
 
