@@ -72,6 +72,51 @@ struct Step {
     double baroHeight_m = std::nan("");  ///< barometric height at the stance against the first one; NaN without pressure
 };
 
+/// A gait event (gait-lab terms, not the ZUPT stance): found by core/gait/GaitEvents.h.
+enum class GaitEventKind {
+    HeelStrike,  ///< the foot meets the ground: stance begins
+    FootFlat,    ///< the foot has come to rest: the quiet part of the stance begins
+    HeelOff,     ///< the foot starts rolling over the toes: the quiet part ends
+    ToeOff,      ///< the foot leaves the ground: swing begins
+};
+
+/// Stable identifier for JSON and CSV ("heel_strike").
+const char* gaitEventKindName(GaitEventKind kind);
+
+struct GaitEvent {
+    GaitEventKind kind = GaitEventKind::HeelStrike;
+    std::size_t sample = 0;  ///< the sample nearest the event
+    double time_s = 0.0;     ///< interpolated between samples
+};
+
+/// One gait cycle of this foot: heel strike, its stance (foot flat, heel off, toe off) and the
+/// swing up to the next heel strike.
+struct GaitStride {
+    GaitEvent heelStrike, footFlat, heelOff, toeOff, nextHeelStrike;
+    double strideLength_m = 0.0;   ///< horizontal, between the quiet parts of the two stances
+    double strideTime_s = 0.0;     ///< heel strike to the next heel strike
+    double cadence_spm = 0.0;      ///< steps per minute (two steps per stride)
+    double stancePct = 0.0;        ///< heel strike to toe off, % of the stride time
+    double swingPct = 0.0;         ///< toe off to the next heel strike, % of the stride time
+    double clearance_m = 0.0;      ///< highest point of the swing above the stance before it
+    double headingChange_rad = 0.0;  ///< between the quiet parts of the two stances, signed (left +)
+    bool turning = false;          ///< |headingChange_rad| above kTurningStrideThreshold_rad
+    bool paused = false;           ///< the stance lasted longer than walking does (the walker stood)
+};
+
+/// Per-walk gait parameters: means over the strides that are neither turning nor paused.
+struct GaitSummary {
+    std::size_t strides = 0;         ///< all detected strides
+    std::size_t straightStrides = 0; ///< the strides the means are over
+    std::size_t turningStrides = 0;
+    double strideLength_m = 0.0;
+    double strideTime_s = 0.0;
+    double cadence_spm = 0.0;
+    double stancePct = 0.0;
+    double swingPct = 0.0;
+    double clearance_m = 0.0;
+};
+
 struct Summary {
     std::size_t samples = 0;
     double duration_s = 0.0;
@@ -116,6 +161,16 @@ struct Result {
     std::vector<float> forwardSpeed_mps;
     StanceFlags flags;
     std::vector<Step> steps;
+    /// Gait events (core/gait/GaitEvents.h) of every stride, in time order, including the first
+    /// toe off and the last heel strike that have no complete stride around them.
+    std::vector<GaitEvent> gaitEvents;
+    std::vector<GaitStride> gaitStrides;
+    /// Per sample: 1 from heel strike to toe off (the gait lab's stance: the foot on the ground,
+    /// longer than the ZUPT stance, which is the foot at rest), else 0. The event samples
+    /// themselves count as swing, as in the IPOL labels. Before the first toe off and after the
+    /// last heel strike the foot stands: 1.
+    std::vector<std::uint8_t> gaitStance;
+    GaitSummary gait;
     Summary summary;
     /// Findings of the plausibility checks (core/nav/Plausibility.h), in time order. Empty when the
     /// result looks like human walking or running.

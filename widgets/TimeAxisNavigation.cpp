@@ -3,6 +3,9 @@
 #include <QApplication>
 #include <QPicture>
 
+#include <algorithm>
+#include <numeric>
+
 namespace footpath {
 
 namespace {
@@ -44,20 +47,93 @@ void renderPlotTo(QCustomPlot* plot, QPainter& painter, const QRect& target)
     painter.drawPicture(target.topLeft(), picture);
 }
 
-QCPLegend* addRowLegend(QCPAxisRect* rect)
+void wrapLegendToWidth(QCPLegend* legend, int available)
 {
-    auto* legend = new QCPLegend;
-    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
-    legend->setLayer(QStringLiteral("legend"));
-    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);  // one line: rows are short
-    legend->setIconSize(26, 10);
-    legend->setColumnSpacing(6);
-    legend->setBrush(QColor(255, 255, 255, 210));
-    legend->setBorderPen(QPen(QColor(180, 180, 180)));
-    QFont font = legend->font();
-    font.setPointSizeF(font.pointSizeF() * 0.85);
-    legend->setFont(font);
-    return legend;
+    std::vector<int> itemWidths;
+    for (int i = 0; i < legend->itemCount(); ++i) {
+        if (const QCPAbstractLegendItem* item = legend->item(i))  // null: a cell left by a removed item
+            itemWidths.push_back(item->minimumOuterSizeHint().width());
+    }
+    available -= legend->margins().left() + legend->margins().right();
+    int perRow = static_cast<int>(itemWidths.size());
+    for (; perRow > 1; --perRow) {
+        std::vector<int> columnWidths(static_cast<std::size_t>(perRow), 0);
+        for (std::size_t i = 0; i < itemWidths.size(); ++i)
+            columnWidths[i % columnWidths.size()] = std::max(columnWidths[i % columnWidths.size()], itemWidths[i]);
+        // A pixel per column to spare: the grid rounds each column's share of the width, and an item
+        // a pixel short of its text clips the last letter ("Foot patl").
+        const int needed = std::accumulate(columnWidths.cbegin(), columnWidths.cend(), 0)
+                           + (perRow - 1) * legend->columnSpacing() + perRow;
+        if (needed <= available)
+            break;
+    }
+    legend->setWrap(std::max(1, perRow));
+    legend->setFillOrder(QCPLegend::foColumnsFirst, true);
+    // Pack the items to the left: a trailing empty column takes the spare width (the next
+    // rearrangement simplifies it away again).
+    legend->insertColumn(legend->columnCount());
+    legend->setColumnStretchFactor(legend->columnCount() - 1, 1000.0);
+}
+
+LegendStrip::LegendStrip(QCustomPlot* plot) : QObject(plot), plot_(plot), legend_(new QCPLegend)
+{
+    QCPLayoutGrid* layout = plot->plotLayout();
+    if (layout->rowCount() > 0)
+        layout->insertRow(0);
+    layout->addElement(0, 0, legend_);
+    layout->setRowStretchFactor(0, 0.001);  // its own height; the rows share the rest
+    legend_->setLayer(QStringLiteral("legend"));
+    legend_->setBorderPen(Qt::NoPen);
+    legend_->setBrush(Qt::NoBrush);
+    legend_->setMargins(QMargins(4, 0, 4, 0));
+    legend_->setRowSpacing(0);
+    legend_->setColumnSpacing(14);
+    legend_->setIconSize(24, 10);
+    legend_->setMinimumSize(1, 0);  // its width never sets the plot's: it wraps instead
+    QFont font = legend_->font();
+    font.setPointSizeF(font.pointSizeF() * 0.9);
+    legend_->setFont(font);
+    connect(plot, &QCustomPlot::beforeReplot, this, &LegendStrip::fitToWidth);
+}
+
+namespace {
+
+bool looksAlike(const QCPAbstractPlottable* a, const QCPAbstractPlottable* b)
+{
+    return a->name() == b->name() && a->pen() == b->pen() && a->brush() == b->brush();
+}
+
+}  // namespace
+
+void LegendStrip::setEntries(const std::vector<QCPAbstractPlottable*>& entries)
+{
+    legend_->clearItems();
+    std::vector<const QCPAbstractPlottable*> shown;
+    for (QCPAbstractPlottable* entry : entries) {
+        const bool duplicate = std::any_of(shown.cbegin(), shown.cend(),
+                                           [entry](const QCPAbstractPlottable* s) { return looksAlike(s, entry); });
+        if (duplicate)
+            continue;
+        entry->addToLegend(legend_);
+        shown.push_back(entry);
+    }
+    legend_->setVisible(!shown.empty());
+    fitToWidth();
+}
+
+bool LegendStrip::showsEntryLike(const QCPAbstractPlottable* plottable) const
+{
+    for (int i = 0; i < legend_->itemCount(); ++i) {
+        const auto* item = qobject_cast<const QCPPlottableLegendItem*>(legend_->item(i));
+        if (item && looksAlike(item->plottable(), plottable))
+            return true;
+    }
+    return false;
+}
+
+void LegendStrip::fitToWidth()
+{
+    wrapLegendToWidth(legend_, plot_->viewport().width());
 }
 
 QCPItemStraightLine* addCursorLine(QCustomPlot* plot, QCPAxisRect* rect, const QString& layer)

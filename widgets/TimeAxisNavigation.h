@@ -24,8 +24,32 @@ bool isClick(const QPoint& pressed, const QPoint& released, Qt::MouseButton butt
 /// QCPPainter, so the drawing is recorded in a QPicture that the caller's painter replays.
 void renderPlotTo(QCustomPlot* plot, QPainter& painter, const QRect& target);
 
-/// A one-line legend in the row's top right corner, in a smaller font (rows are short).
-QCPLegend* addRowLegend(QCPAxisRect* rect);
+/// Lays the legend's items out in as many columns as fit into `available` pixels (items share
+/// column widths), more lines rather than a legend wider than its place, packed to the left.
+void wrapLegendToWidth(QCPLegend* legend, int available);
+
+/// One legend for all rows of a plot, in a strip above them, never over the data: entries that
+/// look alike (the x of acceleration and of angular rate: same name and pen) appear once, and it
+/// wraps onto more lines when the plot is too narrow for one. Out of the layout until placed.
+class LegendStrip : public QObject {
+    Q_OBJECT
+public:
+    explicit LegendStrip(QCustomPlot* plot);
+
+    QCPLegend* legend() const { return legend_; }
+    /// Shows these plottables' entries in order, one per look (name, pen, brush).
+    void setEntries(const std::vector<QCPAbstractPlottable*>& entries);
+    /// Whether an entry looking like plottable's is shown.
+    bool showsEntryLike(const QCPAbstractPlottable* plottable) const;
+    /// The strip is the layout's row 0 (made by the constructor): the rows go below it.
+    static constexpr int kFirstRow = 1;
+
+private:
+    void fitToWidth();
+
+    QCustomPlot* plot_;
+    QCPLegend* legend_;
+};
 
 /// The time cursor's line through one row's full height, on layer, hidden until placed. It runs on
 /// the row's hidden right axis, which this sets to 0..1 whatever the row shows.

@@ -7,7 +7,9 @@
 
 #include <QDialog>
 #include <QFutureWatcher>
+#include <QGroupBox>
 
+#include <array>
 #include <atomic>
 #include <memory>
 #include <vector>
@@ -34,6 +36,26 @@ QString formatTuneScore(TuneCriterion criterion, double score);
 /// criterion's mean first when given (not NaN). Returns the number of changed parameters.
 int showTuneChanges(QTableWidget* table, const Parameters& before, const Parameters& after, TuneCriterion criterion,
                     double scoreBefore, double scoreAfter);
+
+/// The criteria as radio buttons; one the recordings do not support is disabled with the reason
+/// beside it.
+class TuneCriterionChoice : public QGroupBox {
+    Q_OBJECT
+public:
+    explicit TuneCriterionChoice(QWidget* parent = nullptr);
+
+    /// Why each criterion (in TuneCriterion order) cannot be used; empty: it can. A choice that is
+    /// no longer possible moves to the first one that is (the reference first: it says the most).
+    void setReasons(const std::array<QString, 3>& whyNot);
+    bool isAvailable(TuneCriterion criterion) const;
+    TuneCriterion criterion() const;
+    void setCriterion(TuneCriterion criterion);
+
+private:
+    std::array<QRadioButton*, 3> buttons_{};
+    std::array<QLabel*, 3> reasons_{};
+    std::array<bool, 3> available_{};  ///< not the buttons' isEnabled(): a disabled parent disables them too
+};
 
 /// What a tuning run hands back: the search's outcome and, when asked for, the first recording's
 /// path with the starting and with the best parameters (the search keeps no paths).
@@ -122,18 +144,17 @@ private:
     TuneJob* job_;
     QCheckBox* closed_;
     QDoubleSpinBox* length_;
-    QRadioButton* criteria_[3];
-    QLabel* why_[3];
+    TuneCriterionChoice* criteria_;
     QSpinBox* evaluations_;
     QProgressBar* progress_;
     QLabel* best_;
     QLabel* message_;
     TrajectoryView2D* view_;
     QTableWidget* changes_;
-    QPushButton* startButton_;
-    QPushButton* stopButton_;
-    QPushButton* acceptButton_;
-    QPushButton* rejectButton_;
+    QPushButton* startButton_ = nullptr;
+    QPushButton* stopButton_ = nullptr;
+    QPushButton* acceptButton_ = nullptr;
+    QPushButton* rejectButton_ = nullptr;
     TuneCriterion runCriterion_ = TuneCriterion::ClosedLoop;
 };
 

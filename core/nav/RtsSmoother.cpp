@@ -64,16 +64,6 @@ std::size_t RtsSmoother::bytesPerSample() const
     return doubles * sizeof(double);
 }
 
-RtsSmoother::Matrix15 RtsSmoother::filteredCovariance(std::size_t k) const
-{
-    Matrix15 p = Matrix15::Zero();
-    const double* packed = packedCovariance_.data() + k * packedSize();
-    for (std::size_t j = 0; j < active_.size(); ++j)
-        for (std::size_t i = 0; i <= j; ++i, ++packed)
-            p(active_[i], active_[j]) = p(active_[j], active_[i]) = *packed;
-    return p;
-}
-
 PropagationStep RtsSmoother::propagationInto(std::size_t k) const
 {
     PropagationStep step;
@@ -84,31 +74,7 @@ PropagationStep RtsSmoother::propagationInto(std::size_t k) const
     return step;
 }
 
-template <int N>
-Eigen::Matrix<double, N, N> RtsSmoother::activeBlock(const Matrix15& full) const
-{
-    Eigen::Matrix<double, N, N> block;
-    for (int j = 0; j < N; ++j)
-        for (int i = 0; i < N; ++i)
-            block(i, j) = full(active_[static_cast<std::size_t>(i)], active_[static_cast<std::size_t>(j)]);
-    return block;
-}
-
 namespace {
-
-/// Phi of eq. 26 for one step (identity for a skipped one).
-ErrorStateEkf::Matrix15 transition(const PropagationStep& step)
-{
-    using E = ErrorStateEkf;
-    E::Matrix15 phi = E::Matrix15::Identity();
-    if (step.dt_s > 0.0) {
-        phi.block<3, 3>(E::kAtt, E::kGyroBias) = step.dt_s * step.bodyToNav;
-        phi.block<3, 3>(E::kPos, E::kVel) = step.dt_s * Eigen::Matrix3d::Identity();
-        phi.block<3, 3>(E::kVel, E::kAtt) = -step.dt_s * skew(step.navSpecificForce);
-        phi.block<3, 3>(E::kVel, E::kAccBias) = step.dt_s * step.bodyToNav;
-    }
-    return phi;
-}
 
 /// X = A^-1 B for a symmetric positive semi-definite A by Cholesky and substitution over whole rows,
 /// written out because Eigen's triangular solver takes its general matrix path at these sizes
@@ -167,29 +133,64 @@ bool RtsSmoother::smooth(Result& result, const std::function<bool(double fractio
 }
 
 template <int N>
+Eigen::Matrix<double, N, N> RtsSmoother::filteredCovariance(std::size_t k) const
+{
+    Eigen::Matrix<double, N, N> p;
+    const double* packed = packedCovariance_.data() + k * packedSize();
+    for (int j = 0; j < N; ++j)
+        for (int i = 0; i <= j; ++i, ++packed)
+            p(i, j) = p(j, i) = *packed;
+    return p;
+}
+
+template <int N>
+void RtsSmoother::applyTransition(Eigen::Matrix<double, N, N>& m, const PropagationStep& step) const
+{
+    // m = Phi m with Phi = I + the blocks of eq. 26, on the running states in their stored order
+    // (attitude, position, velocity for 9 states; the filter's order for 15). Position first: it
+    // takes the velocity rows before they change.
+    if (!(step.dt_s > 0.0))
+        return;
+    constexpr bool biases = N == 15;
+    constexpr int att = 0, gyroBias = 3, pos = biases ? 6 : 3, vel = biases ? 9 : 6, accBias = 12;
+    m.template middleRows<3>(pos) += step.dt_s * m.template middleRows<3>(vel);
+    m.template middleRows<3>(vel) -= (step.dt_s * skew(step.navSpecificForce)).lazyProduct(m.template middleRows<3>(att));
+    if constexpr (biases) {
+        const Eigen::Matrix3d biasGain = step.dt_s * step.bodyToNav;
+        m.template middleRows<3>(att) += biasGain.lazyProduct(m.template middleRows<3>(gyroBias));
+        m.template middleRows<3>(vel) += biasGain.lazyProduct(m.template middleRows<3>(accBias));
+    }
+}
+
+template <int N>
 bool RtsSmoother::smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing) const
 {
     using MatrixN = Eigen::Matrix<double, N, N>;
     using VectorN = Eigen::Matrix<double, N, 1>;
     const std::size_t n = attitude_.size();
+    VectorN processVariancePerSecond;
+    for (int i = 0; i < N; ++i)
+        processVariancePerSecond(i) = processVariancePerSecond_(active_[static_cast<std::size_t>(i)]);
     // The last sample's smoothed estimate is its filtered one.
     VectorN correctionNext = VectorN::Zero();
-    MatrixN smoothedCovarianceNext = activeBlock<N>(filteredCovariance(n - 1));
+    MatrixN smoothedCovarianceNext = filteredCovariance<N>(n - 1);
     for (std::size_t k = n - 1; k-- > 0;) {
-        const Matrix15 filtered = filteredCovariance(k);
+        const MatrixN filtered = filteredCovariance<N>(k);
         const PropagationStep step = propagationInto(k + 1);
-        Matrix15 predictedFull = filtered;
-        ErrorStateEkf::propagateCovariance(predictedFull, step, processVariancePerSecond_ * step.dt_s);
-        const MatrixN predicted = activeBlock<N>(predictedFull);
-        const MatrixN filteredActive = activeBlock<N>(filtered);
+        // P(k+1|k) = Phi P Phi^T + Q, with Phi P kept: it is also the right-hand side of the gain.
+        MatrixN phiP = filtered;
+        applyTransition<N>(phiP, step);
+        MatrixN predicted = phiP.transpose();
+        applyTransition<N>(predicted, step);
+        predicted.diagonal() += processVariancePerSecond * step.dt_s;
 
-        // G^T = P(k+1|k)^-1 Phi P(k|k); Phi restricted to the running states is enough, the others
-        // have no covariance. Lazy products: fixed-size and unrolled, not Eigen's general kernel.
-        const MatrixN gainT = solveSymmetric<N>(predicted, activeBlock<N>(transition(step)).lazyProduct(filteredActive));
+        // G^T = P(k+1|k)^-1 Phi P(k|k). Lazy products: fixed-size and unrolled, not Eigen's
+        // general kernel.
+        const MatrixN gainT = solveSymmetric<N>(predicted, phiP);
         const Eigen::Map<const VectorN> ownCorrection(corrections_.data() + (k + 1) * static_cast<std::size_t>(N));
         const VectorN correction = gainT.transpose() * (ownCorrection + correctionNext);
         const MatrixN change = (smoothedCovarianceNext - predicted).lazyProduct(gainT);
-        const MatrixN smoothedCovariance = filteredActive + gainT.transpose().lazyProduct(change);
+        const MatrixN smoothedCovariance = filtered + gainT.transpose().lazyProduct(change);
 
         writeSmoothed<N>(result, k, correction, smoothedCovariance);
         correctionNext = correction;

@@ -52,10 +52,11 @@ private:
     /// unrolls and vectorises: the dynamic-size version took five times as long.
     template <int N>
     bool smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing) const;
-    Matrix15 filteredCovariance(std::size_t k) const;
+    template <int N>
+    Eigen::Matrix<double, N, N> filteredCovariance(std::size_t k) const;
     PropagationStep propagationInto(std::size_t k) const;
     template <int N>
-    Eigen::Matrix<double, N, N> activeBlock(const Matrix15& full) const;
+    void applyTransition(Eigen::Matrix<double, N, N>& m, const PropagationStep& step) const;
     template <int N>
     void writeSmoothed(Result& result, std::size_t k, const Eigen::Matrix<double, N, 1>& correction,
                        const Eigen::Matrix<double, N, N>& covariance) const;

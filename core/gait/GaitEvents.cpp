@@ -1,0 +1,350 @@
+#include "gait/GaitEvents.h"
+
+#include "nav/Attitude.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace footpath {
+
+namespace {
+
+/// A swing turns the foot faster than this about the sagittal axis (slow patients' swings peak
+/// near 3 rad/s, brisk walking at 6-8, while a foot shuffling in place stays under 1).
+constexpr double kMinSwingPeak_radps = 1.5;
+/// ... and the estimated foot moves at least this fast at the swing's peak (mid-swing feet move
+/// at 2-5 m/s); a turn of the foot on the spot is no swing.
+constexpr double kMinSwingSpeed_mps = 0.3;
+/// The push-off dip ends, and the foot-slap dip begins, where the rate crosses zero next to the
+/// swing; the dips' minima lie within this time of that crossing (60-80 ms in the IPOL walks).
+constexpr double kDipSearch_s = 0.2;
+/// Toe off and heel strike are where the rate is this share of the neighbouring dip's minimum.
+constexpr double kEventLevel = 0.5;
+/// The quiet part of a stance: |w| within this of the stance's quietest sample (foot-flat
+/// walking feet rest below 0.5 rad/s; a sensor that never rests still has a quietest stretch).
+constexpr double kQuietMargin_radps = 0.5;
+/// A stance longer than this is standing, not walking: the stride is marked paused.
+constexpr double kMaxWalkingStance_s = 2.0;
+constexpr double kPi = 3.14159265358979323846;
+
+struct Swing {
+    double toeOff = 0.0;  ///< fractional sample positions
+    std::size_t peak = 0;
+    double heelStrike = 0.0;
+};
+
+/// The part of the foot on the ground between two swings (or the start/end of the recording).
+struct Stance {
+    std::size_t first = 0, last = 0;          ///< the samples it spans
+    std::size_t quietFirst = 0, quietLast = 0; ///< foot flat and heel off
+    Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< mean over the quiet part
+    double yaw_rad = 0.0;                      ///< in the middle of the quiet part
+};
+
+/// The principal axis of the angular rate, signed so that the rotation about it is positive
+/// while the estimated foot moves forwards through mid-swing (speed weights the swing over
+/// push-off and foot slap, whose rotation is the other way).
+Eigen::Vector3d sagittalAxis(const std::vector<ImuSample>& samples, const Result& result)
+{
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+    for (const ImuSample& sample : samples)
+        scatter += sample.gyr_radps * sample.gyr_radps.transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
+    Eigen::Vector3d axis = solver.eigenvectors().col(2);  // eigenvalues ascending
+    double forwardTurn = 0.0;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        const Eigen::Vector3d& rpy = result.rollPitchYaw_rad[k];
+        const Eigen::Vector3d rate_n = rotationFromRollPitchYaw(rpy.x(), rpy.y(), rpy.z()) * samples[k].gyr_radps;
+        const Eigen::Vector3d rightOfMotion = result.velocity_mps[k].cross(Eigen::Vector3d::UnitZ());
+        const Eigen::Vector3d axis_n = rotationFromRollPitchYaw(rpy.x(), rpy.y(), rpy.z()) * axis;
+        forwardTurn += rate_n.dot(rightOfMotion) * (rate_n.dot(axis_n) >= 0.0 ? 1.0 : -1.0)
+            * std::abs(samples[k].gyr_radps.dot(axis));
+    }
+    return forwardTurn >= 0.0 ? axis : Eigen::Vector3d(-axis);
+}
+
+std::vector<double> projectedRate(const std::vector<ImuSample>& samples, const Eigen::Vector3d& axis)
+{
+    std::vector<double> rate;
+    rate.reserve(samples.size());
+    for (const ImuSample& sample : samples)
+        rate.push_back(sample.gyr_radps.dot(axis));
+    return rate;
+}
+
+/// First sample at or after time t (times ascending).
+std::size_t indexAtOrAfter(const std::vector<double>& time_s, double t)
+{
+    return static_cast<std::size_t>(std::lower_bound(time_s.begin(), time_s.end(), t) - time_s.begin());
+}
+
+/// Local maxima above kMinSwingPeak_radps where the foot moves; of peaks that the rate does not
+/// leave the positive side between, only the highest (one swing, one peak).
+std::vector<std::size_t> swingPeaks(const std::vector<double>& rate, const Result& result)
+{
+    std::vector<std::size_t> peaks;
+    for (std::size_t k = 1; k + 1 < rate.size(); ++k) {
+        if (rate[k] < kMinSwingPeak_radps || rate[k] < rate[k - 1] || rate[k] <= rate[k + 1]
+            || result.velocity_mps[k].norm() < kMinSwingSpeed_mps)
+            continue;
+        const bool sameSwing = !peaks.empty()
+            && *std::min_element(rate.begin() + static_cast<long>(peaks.back()), rate.begin() + static_cast<long>(k)) > 0.0;
+        if (!sameSwing)
+            peaks.push_back(k);
+        else if (rate[k] > rate[peaks.back()])
+            peaks.back() = k;
+    }
+    return peaks;
+}
+
+/// Where the rate crosses `level` between samples k and k + 1 (it must lie between their values).
+double crossing(const std::vector<double>& rate, std::size_t k, double level)
+{
+    const double span = rate[k + 1] - rate[k];
+    return static_cast<double>(k) + (span == 0.0 ? 0.0 : (level - rate[k]) / span);
+}
+
+/// Toe off before the swing peaking at `peak`, not before sample `earliest`.
+std::optional<double> toeOffBefore(const std::vector<double>& rate, const std::vector<double>& time_s,
+                                   std::size_t peak, std::size_t earliest)
+{
+    std::size_t zero = peak;
+    while (zero > earliest && rate[zero] > 0.0)
+        --zero;
+    if (rate[zero] > 0.0)
+        return std::nullopt;  // no push-off dip: not a swing from the ground
+    const std::size_t from = std::max(earliest, indexAtOrAfter(time_s, time_s[zero] - kDipSearch_s));
+    const auto minimum = static_cast<std::size_t>(
+        std::min_element(rate.begin() + static_cast<long>(from), rate.begin() + static_cast<long>(zero) + 1)
+        - rate.begin());
+    const double level = kEventLevel * rate[minimum];
+    std::size_t k = minimum;
+    while (rate[k + 1] < level)
+        ++k;
+    return crossing(rate, k, level);
+}
+
+/// Heel strike after the swing peaking at `peak`, not after sample `latest`.
+std::optional<double> heelStrikeAfter(const std::vector<double>& rate, const std::vector<double>& time_s,
+                                      std::size_t peak, std::size_t latest)
+{
+    std::size_t zero = peak;
+    while (zero < latest && rate[zero] > 0.0)
+        ++zero;
+    if (rate[zero] > 0.0)
+        return std::nullopt;  // no foot-slap dip: the swing does not end on the ground
+    const std::size_t to = std::min(latest, indexAtOrAfter(time_s, time_s[zero] + kDipSearch_s));
+    const auto minimum = static_cast<std::size_t>(
+        std::min_element(rate.begin() + static_cast<long>(zero), rate.begin() + static_cast<long>(to) + 1)
+        - rate.begin());
+    const double level = kEventLevel * rate[minimum];
+    std::size_t k = minimum;
+    while (rate[k - 1] < level)
+        --k;
+    return crossing(rate, k - 1, level);
+}
+
+std::vector<Swing> findSwings(const std::vector<double>& rate, const Result& result)
+{
+    const std::vector<std::size_t> peaks = swingPeaks(rate, result);
+    std::vector<Swing> swings;
+    for (std::size_t i = 0; i < peaks.size(); ++i) {
+        // A dip is searched only up to the neighbouring swings' peaks.
+        const std::size_t earliest = i == 0 ? 0 : peaks[i - 1];
+        const std::size_t latest = i + 1 == peaks.size() ? rate.size() - 1 : peaks[i + 1];
+        const std::optional<double> toeOff = toeOffBefore(rate, result.time_s, peaks[i], earliest);
+        const std::optional<double> heelStrike = heelStrikeAfter(rate, result.time_s, peaks[i], latest);
+        if (!toeOff || !heelStrike)
+            continue;
+        if (!swings.empty() && *toeOff <= swings.back().heelStrike)
+            continue;  // overlaps the previous swing: a second peak of one swing
+        swings.push_back({*toeOff, peaks[i], *heelStrike});
+    }
+    return swings;
+}
+
+Stance quietPart(const std::vector<ImuSample>& samples, const Result& result, std::size_t first, std::size_t last)
+{
+    Stance stance;
+    stance.first = first;
+    stance.last = last;
+    double quietest = samples[first].gyr_radps.norm();
+    for (std::size_t k = first; k <= last; ++k)
+        quietest = std::min(quietest, samples[k].gyr_radps.norm());
+    stance.quietFirst = last;
+    for (std::size_t k = first; k <= last; ++k) {
+        if (samples[k].gyr_radps.norm() <= quietest + kQuietMargin_radps) {
+            stance.quietFirst = std::min(stance.quietFirst, k);
+            stance.quietLast = k;
+        }
+    }
+    for (std::size_t k = stance.quietFirst; k <= stance.quietLast; ++k)
+        stance.position_m += result.position_m[k];
+    stance.position_m /= static_cast<double>(stance.quietLast - stance.quietFirst + 1);
+    stance.yaw_rad = result.rollPitchYaw_rad[(stance.quietFirst + stance.quietLast) / 2].z();
+    return stance;
+}
+
+std::size_t nearestSample(double position, std::size_t sampleCount)
+{
+    return std::min(sampleCount - 1, static_cast<std::size_t>(std::lround(std::max(0.0, position))));
+}
+
+GaitEvent eventAt(GaitEventKind kind, double position, const std::vector<double>& time_s)
+{
+    const std::size_t below = std::min(time_s.size() - 1, static_cast<std::size_t>(std::floor(position)));
+    const double fraction = position - static_cast<double>(below);
+    const double time = below + 1 < time_s.size()
+        ? time_s[below] + fraction * (time_s[below + 1] - time_s[below])
+        : time_s[below];
+    return {kind, nearestSample(position, time_s.size()), time};
+}
+
+GaitEvent eventAtSample(GaitEventKind kind, std::size_t k, const std::vector<double>& time_s)
+{
+    return {kind, k, time_s[k]};
+}
+
+/// Stance i lies between swing i - 1 and swing i; the first and last reach the recording's ends.
+std::vector<Stance> stancesAround(const std::vector<Swing>& swings, const std::vector<ImuSample>& samples,
+                                  const Result& result)
+{
+    std::vector<Stance> stances;
+    const std::size_t n = samples.size();
+    for (std::size_t i = 0; i <= swings.size(); ++i) {
+        const std::size_t first = i == 0 ? 0 : nearestSample(swings[i - 1].heelStrike, n);
+        const std::size_t last = i == swings.size() ? n - 1 : nearestSample(swings[i].toeOff, n);
+        stances.push_back(quietPart(samples, result, first, std::max(first, last)));
+    }
+    return stances;
+}
+
+double wrapToPi(double angle_rad)
+{
+    return std::atan2(std::sin(angle_rad), std::cos(angle_rad));
+}
+
+/// The stride from the heel strike ending swing i to the one ending swing i + 1.
+GaitStride makeStride(const std::vector<Swing>& swings, const std::vector<Stance>& stances, std::size_t i,
+                      const Result& result)
+{
+    const std::vector<double>& time_s = result.time_s;
+    const Stance& stance = stances[i + 1];
+    const Stance& nextStance = stances[i + 2];
+    GaitStride stride;
+    stride.heelStrike = eventAt(GaitEventKind::HeelStrike, swings[i].heelStrike, time_s);
+    stride.footFlat = eventAtSample(GaitEventKind::FootFlat, stance.quietFirst, time_s);
+    stride.heelOff = eventAtSample(GaitEventKind::HeelOff, stance.quietLast, time_s);
+    stride.toeOff = eventAt(GaitEventKind::ToeOff, swings[i + 1].toeOff, time_s);
+    stride.nextHeelStrike = eventAt(GaitEventKind::HeelStrike, swings[i + 1].heelStrike, time_s);
+    stride.strideTime_s = stride.nextHeelStrike.time_s - stride.heelStrike.time_s;
+    stride.strideLength_m = (nextStance.position_m - stance.position_m).head<2>().norm();
+    const double stanceTime_s = stride.toeOff.time_s - stride.heelStrike.time_s;
+    if (stride.strideTime_s > 0.0) {
+        stride.cadence_spm = 2.0 * 60.0 / stride.strideTime_s;
+        stride.stancePct = 100.0 * stanceTime_s / stride.strideTime_s;
+        stride.swingPct = 100.0 - stride.stancePct;
+    }
+    double highest_m = stance.position_m.z();
+    for (std::size_t k = stride.toeOff.sample; k <= stride.nextHeelStrike.sample; ++k)
+        highest_m = std::max(highest_m, result.position_m[k].z());
+    stride.clearance_m = highest_m - stance.position_m.z();
+    stride.headingChange_rad = wrapToPi(nextStance.yaw_rad - stance.yaw_rad);
+    stride.turning = std::abs(stride.headingChange_rad) > kTurningStrideThreshold_rad;
+    stride.paused = stanceTime_s > kMaxWalkingStance_s;
+    return stride;
+}
+
+std::vector<GaitEvent> eventsInOrder(const std::vector<Swing>& swings, const std::vector<Stance>& stances,
+                                     const std::vector<double>& time_s)
+{
+    std::vector<GaitEvent> events;
+    for (std::size_t i = 0; i < stances.size(); ++i) {
+        if (i > 0) {
+            events.push_back(eventAt(GaitEventKind::HeelStrike, swings[i - 1].heelStrike, time_s));
+            events.push_back(eventAtSample(GaitEventKind::FootFlat, stances[i].quietFirst, time_s));
+        }
+        if (i < swings.size()) {
+            events.push_back(eventAtSample(GaitEventKind::HeelOff, stances[i].quietLast, time_s));
+            events.push_back(eventAt(GaitEventKind::ToeOff, swings[i].toeOff, time_s));
+        }
+    }
+    return events;
+}
+
+std::vector<std::uint8_t> stanceFlag(const std::vector<Swing>& swings, std::size_t sampleCount)
+{
+    std::vector<std::uint8_t> stance(sampleCount, 1);
+    for (const Swing& swing : swings)
+        for (std::size_t k = nearestSample(swing.toeOff, sampleCount);
+             k <= nearestSample(swing.heelStrike, sampleCount); ++k)
+            stance[k] = 0;
+    return stance;
+}
+
+GaitSummary summarizeGait(const std::vector<GaitStride>& strides)
+{
+    GaitSummary summary;
+    summary.strides = strides.size();
+    for (const GaitStride& stride : strides) {
+        summary.turningStrides += stride.turning;
+        if (stride.turning || stride.paused)
+            continue;
+        ++summary.straightStrides;
+        summary.strideLength_m += stride.strideLength_m;
+        summary.strideTime_s += stride.strideTime_s;
+        summary.cadence_spm += stride.cadence_spm;
+        summary.stancePct += stride.stancePct;
+        summary.swingPct += stride.swingPct;
+        summary.clearance_m += stride.clearance_m;
+    }
+    if (summary.straightStrides > 0) {
+        const double n = static_cast<double>(summary.straightStrides);
+        summary.strideLength_m /= n;
+        summary.strideTime_s /= n;
+        summary.cadence_spm /= n;
+        summary.stancePct /= n;
+        summary.swingPct /= n;
+        summary.clearance_m /= n;
+    }
+    return summary;
+}
+
+}  // namespace
+
+const char* gaitEventKindName(GaitEventKind kind)
+{
+    switch (kind) {
+    case GaitEventKind::HeelStrike: return "heel_strike";
+    case GaitEventKind::FootFlat: return "foot_flat";
+    case GaitEventKind::HeelOff: return "heel_off";
+    case GaitEventKind::ToeOff: return "toe_off";
+    }
+    return "unknown";
+}
+
+void detectGaitEvents(const Recording& recording, Result& result)
+{
+    result.gaitEvents.clear();
+    result.gaitStrides.clear();
+    result.gait = GaitSummary{};
+    const std::vector<ImuSample>& samples = recording.samples;
+    result.gaitStance.assign(result.time_s.size(), 1);
+    if (samples.size() < 3 || result.time_s.size() != samples.size() || result.velocity_mps.size() != samples.size())
+        return;
+    const std::vector<double> rate = projectedRate(samples, sagittalAxis(samples, result));
+    const std::vector<Swing> swings = findSwings(rate, result);
+    if (swings.empty())
+        return;
+    const std::vector<Stance> stances = stancesAround(swings, samples, result);
+    for (std::size_t i = 0; i + 1 < swings.size(); ++i)
+        result.gaitStrides.push_back(makeStride(swings, stances, i, result));
+    result.gaitEvents = eventsInOrder(swings, stances, result.time_s);
+    result.gaitStance = stanceFlag(swings, samples.size());
+    result.gait = summarizeGait(result.gaitStrides);
+}
+
+}  // namespace footpath
