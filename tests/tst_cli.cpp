@@ -32,12 +32,12 @@ using namespace clitest;
 
 // The foundation issue fixes these first columns; the bias estimates follow them.
 const QString kTrajectoryHeader =
-    QStringLiteral("time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance,"
+    QStringLiteral("time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance,gait_stance,"
                    "gyro_bias_x_radps,gyro_bias_y_radps,gyro_bias_z_radps,acc_bias_x_mps2,acc_bias_y_mps2,"
                    "acc_bias_z_mps2");
 const QString kStepsHeader =
     QStringLiteral("step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,motion,"
-                   "baro_height_m");
+                   "baro_height_m,heel_strike_s,toe_off_s,gait_stance_pct,swing_pct,clearance_m,turning");
 const QByteArray kImuHeader = "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
 
 bool writeFile(const QString& path, const QByteArray& content)
@@ -200,7 +200,7 @@ void TestCli::process_writesTrajectoryStepsAndSummary()
     QVERIFY2(run.out.contains(walkCsv_) && run.out.contains(QStringLiteral("%1 samples").arg(sampleCount_)),
              qPrintable(run.out));
 
-    // Trajectory: the exact header, then one row of 20 numbers per input sample, in input time.
+    // Trajectory: the exact header, then one row of 21 numbers per input sample, in input time.
     const QStringList rows = readLines(trajectory);
     QVERIFY(!rows.isEmpty());
     QCOMPARE(rows.first(), kTrajectoryHeader);
@@ -208,13 +208,13 @@ void TestCli::process_writesTrajectoryStepsAndSummary()
     int stanceRows = 0;
     for (int r = 1; r < rows.size(); ++r) {
         const QStringList cells = rows[r].split(QLatin1Char(','));
-        QVERIFY2(cells.size() == 20, qPrintable(QStringLiteral("row %1: %2").arg(r).arg(rows[r])));
+        QVERIFY2(cells.size() == 21, qPrintable(QStringLiteral("row %1: %2").arg(r).arg(rows[r])));
         for (const QString& cell : cells) {
             bool ok = false;
             const double value = cell.toDouble(&ok);
             QVERIFY2(ok && std::isfinite(value), qPrintable(QStringLiteral("row %1: %2").arg(r).arg(rows[r])));
         }
-        for (int flag = 10; flag < 14; ++flag)
+        for (int flag = 10; flag < 15; ++flag)
             QVERIFY2(cells[flag] == QLatin1String("0") || cells[flag] == QLatin1String("1"), qPrintable(rows[r]));
         stanceRows += cells[13] == QLatin1String("1") ? 1 : 0;
     }
@@ -233,7 +233,7 @@ void TestCli::process_writesTrajectoryStepsAndSummary()
     double strideSum_m = 0.0;
     for (int r = 1; r < stepRows.size(); ++r) {
         const QStringList cells = stepRows[r].split(QLatin1Char(','));
-        QCOMPARE(int(cells.size()), 10);
+        QCOMPARE(int(cells.size()), 16);
         // The simulated walk has no barometer: no motion class, an empty barometric height.
         QCOMPARE(cells[8], QStringLiteral("unknown"));
         QVERIFY2(cells[9].isEmpty(), qPrintable(stepRows[r]));
@@ -848,7 +848,7 @@ void TestCli::noArguments_printsUsageToStderrAndExitsTwo()
     VERIFY_EXIT(run, kExitBadInput);
     QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
     QVERIFY(run.err.contains(QStringLiteral("no command given")));
-    QVERIFY(run.err.contains(QStringLiteral("process, eval, compare, info, report, record")));
+    QVERIFY(run.err.contains(QStringLiteral("process, eval, compare, tune, info, report, record")));
 }
 
 void TestCli::commandHelp_printsThatCommandsOptions_data()

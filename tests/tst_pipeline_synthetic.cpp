@@ -56,11 +56,53 @@ std::size_t countStancePhases(const std::vector<std::uint8_t>& stance)
     return phases;
 }
 
+/// A result of 100 Hz samples at rest at the given x positions, stance where flagged.
+Result restingResult(const std::vector<double>& x_m, const std::vector<std::uint8_t>& stance)
+{
+    Result result;
+    for (std::size_t k = 0; k < x_m.size(); ++k) {
+        result.time_s.push_back(0.01 * static_cast<double>(k));
+        result.position_m.emplace_back(x_m[k], 0.0, 0.0);
+    }
+    result.flags.stance = stance;
+    return result;
+}
+
 }  // namespace
 
 class TestPipelineSynthetic : public QObject {
     Q_OBJECT
 private slots:
+    void stanceFlickerIsOneStanceNotAStride()
+    {
+        // Stance 0-0.29 s, a 0.05 s flicker out of it, stance again where the foot was, a real
+        // 0.5 s swing of 0.8 m, stance: two stance phases and one stride, not three and two.
+        std::vector<double> x(150, 0.0);
+        std::vector<std::uint8_t> stance(150, 1);
+        for (std::size_t k = 30; k < 35; ++k)
+            stance[k] = 0;
+        for (std::size_t k = 60; k < 110; ++k) {
+            stance[k] = 0;
+            x[k] = 0.8 * static_cast<double>(k - 60) / 50.0;
+        }
+        for (std::size_t k = 110; k < 150; ++k)
+            x[k] = 0.8;
+        Result result = restingResult(x, stance);
+        fillStepsAndSummary(result);
+        QCOMPARE(result.steps.size(), std::size_t(2));
+        QCOMPARE(result.steps[0].stanceStart_s, 0.0);
+        QCOMPARE(result.steps[0].stanceEnd_s, 0.59);
+        QVERIFY(std::abs(result.steps[1].strideLength_m - 0.8) < 1e-12);
+        QVERIFY(std::abs(result.summary.pathLength_m - 0.8) < 1e-12);
+
+        // A gap as short that moved the foot a stride away is a step (a shuffle is still a step).
+        for (std::size_t k = 35; k < 150; ++k)
+            x[k] += 0.3;
+        Result moved = restingResult(x, stance);
+        fillStepsAndSummary(moved);
+        QCOMPARE(moved.steps.size(), std::size_t(3));
+    }
+
     void closedRectangleOfHundredMetresClosesWithinHalfPercent()
     {
         // Noise makes one walk a sample of a distribution: the bound applies to the mean of eight

@@ -1,5 +1,6 @@
 #include "SignalPlots.h"
 #include "PlotInteraction.h"
+#include "LegendChecks.h"
 #include "StanceFlagsPlot.h"
 #include "TestData.h"
 #include "WarningOverlay.h"
@@ -209,9 +210,19 @@ private slots:
             QVERIFY(plot.thresholdGraph(threshold)->realVisibility());
         QVERIFY(!timeAxisOf(plot.statisticRect())->tickLabels());  // the time scale moved to the bottom row
         QVERIFY(timeAxisOf(plot.inputRect(Input::GyrNorm))->tickLabels());
+        // The legend above the rows names the thresholds; at a third of a 1280-pixel screen it wraps.
+        QVERIFY(plot.legend()->hasItemWithPlottable(plot.thresholdGraph(Threshold::GyrMax)));
+        plot.resize(330, 500);
+        plot.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plot));
+        plot.plot()->replot();
+        const QString problem = legendProblem(plot.plot(), plot.legend());
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
+        QVERIFY(plot.legend()->outerRect().bottom() <= plot.lanesRect()->top());
 
         plot.setInputsVisible(false);
         QCOMPARE(plot.plot()->axisRectCount(), 2);
+        QVERIFY(!plot.legend()->hasItemWithPlottable(plot.thresholdGraph(Threshold::GyrMax)));
         QVERIFY(!plot.findChild<QAction*>("showDetectorInputs")->isChecked());
     }
 

@@ -1,3 +1,4 @@
+#include "LegendChecks.h"
 #include "PlotInteraction.h"
 #include "StatePlots.h"
 #include "nav/Pipeline.h"
@@ -116,6 +117,25 @@ private slots:
         QCOMPARE(plots.timeCursor(), 1.5);
         plots.interaction()->resetView();
         QCOMPARE(plots.timeRange().upper, static_cast<double>(kSamples - 1) / 100.0);
+    }
+
+    void legendSitsAboveTheRowsWithEachLookOnce()
+    {
+        for (const int width : {330, 900}) {
+            StatePlots plots;
+            plots.setResult(knownResult(true));
+            plots.resize(width, 420);
+            plots.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&plots));
+            plots.plot()->replot();
+            const QString problem = legendProblem(plots.plot(), plots.legend());
+            QVERIFY2(problem.isEmpty(), qPrintable(QStringLiteral("%1 px: %2").arg(width).arg(problem)));
+            QVERIFY(plots.legend()->outerRect().bottom() <= plots.axisRect(Row::Attitude)->top());
+            // Velocity's x/y/z pens are the biases': one entry each; roll, pitch and yaw have their own.
+            QVERIFY(plots.legend()->hasItemWithPlottable(plots.graph(Row::Velocity, 0)));
+            QVERIFY(!plots.legend()->hasItemWithPlottable(plots.graph(Row::AccBias, 0)));
+            QVERIFY(plots.legend()->hasItemWithPlottable(plots.graph(Row::Attitude, 2)));
+        }
     }
 
     void readoutNamesStateAndSigma()

@@ -1,3 +1,4 @@
+#include "LegendChecks.h"
 #include "PlotInteraction.h"
 #include "TrajectoryView2D.h"
 #include "metrics/Evaluation.h"
@@ -338,6 +339,27 @@ private slots:
         view.setReference({});
         QCOMPARE(reference->data()->size(), 0);
         QVERIFY(!view.plot()->legend->hasItemWithPlottable(reference));
+    }
+
+    void legendEntriesAreNeverClipped()
+    {
+        // The path's column is what the legend has: with the colour scale beside it, less than the
+        // view's width (wrapping to the whole width clipped "Foot path" to "Foot patl").
+        const Result& result = rectangleResult();
+        for (const auto colouring : {TrajectoryView2D::Colouring::None, TrajectoryView2D::Colouring::Speed}) {
+            for (int width = 240; width <= 620; width += 19) {
+                TrajectoryView2D view;
+                view.resize(width, 420);
+                view.show();
+                QVERIFY(QTest::qWaitForWindowExposed(&view));
+                view.showResult(result);
+                view.setReference(rectangleWalk().truePosition_m);
+                view.setColouring(colouring);
+                view.plot()->replot();
+                const QString problem = legendProblem(view.plot(), view.plot()->legend);
+                QVERIFY2(problem.isEmpty(), qPrintable(QStringLiteral("%1 px: %2").arg(width).arg(problem)));
+            }
+        }
     }
 
     void alignedReferenceAgreesWithTheArmse()

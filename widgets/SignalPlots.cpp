@@ -164,14 +164,14 @@ void SignalPlots::createRows()
 {
     plot_->plotLayout()->clear();  // drops the default axis rect: the rows below replace it
     plot_->plotLayout()->setRowSpacing(4);
+    legend_ = new LegendStrip(plot_);  // above the rows: a legend in a row would hide its curves
     auto* alignedMargins = new QCPMarginGroup(plot_);  // time axes line up although labels differ
     for (std::size_t r = 0; r < kRowCount; ++r) {
         auto* rect = new QCPAxisRect(plot_);
-        plot_->plotLayout()->addElement(static_cast<int>(r), 0, rect);  // arrangeRows() sorts
+        plot_->plotLayout()->addElement(plot_->plotLayout()->rowCount(), 0, rect);  // arrangeRows() sorts
         rect->setMarginGroup(QCP::msLeft | QCP::msRight, alignedMargins);
         rect->axis(QCPAxis::atLeft)->setLabel(tr(kRowInfos[r].axisLabel));
         rows_[r].rect = rect;
-        rows_[r].legend = addRowLegend(rect);
         rows_[r].cursor = addCursorLine(plot_, rect, kCursorLayer);
         rows_[r].stance = new TimeBands(rect, kStanceBrush);
         rows_[r].stance->setLayer(kStanceLayer);
@@ -340,7 +340,8 @@ void SignalPlots::arrangeRows()
     }
     layout->simplify();
     QCPAxisRect* bottom = nullptr;
-    int shownCount = 0;
+    int shownCount = LegendStrip::kFirstRow;
+    std::vector<QCPAbstractPlottable*> legendEntries;
     const bool laneShown = warnings_->hasWarnings();
     warningLane_.rect->setVisible(laneShown);
     warningLane_.cursor->setVisible(laneShown && cursorPlaced_);
@@ -358,9 +359,12 @@ void SignalPlots::arrangeRows()
         row.cursor->setVisible(shown && cursorPlaced_);
         timeAxis(row.rect)->setTickLabels(false);
         timeAxis(row.rect)->setLabel(QString());
-        refreshLegend(r, shown && bottom == nullptr);  // one stance entry, in the top signal row
         if (!shown)
             continue;
+        for (std::size_t c = 0; c < kChannelCount; ++c) {
+            if (slot(channelInfos()[c].row) == r && channelVisible_[c])
+                legendEntries.push_back(graphs_[c]);
+        }
         layout->addElement(shownCount++, 0, row.rect);
         bottom = row.rect;
     }
@@ -368,18 +372,9 @@ void SignalPlots::arrangeRows()
         timeAxis(bottom)->setTickLabels(true);
         timeAxis(bottom)->setLabel(tr("Time (s)"));
     }
-}
-
-void SignalPlots::refreshLegend(std::size_t row, bool withStance)
-{
-    QCPLegend* legend = rows_[row].legend;
-    legend->clearItems();
-    for (std::size_t c = 0; c < kChannelCount; ++c) {
-        if (slot(channelInfos()[c].row) == row && channelVisible_[c])
-            graphs_[c]->addToLegend(legend);
-    }
-    if (withStance && !rows_[row].stance->isEmpty())
-        stanceLegendEntry_->addToLegend(legend);
+    if (bottom != nullptr && !rows_.front().stance->isEmpty())
+        legendEntries.push_back(stanceLegendEntry_);
+    legend_->setEntries(legendEntries);  // x, y and z once: every row draws them with the same pens
 }
 
 void SignalPlots::setChannelVisible(Channel channel, bool visible)
@@ -399,6 +394,7 @@ bool SignalPlots::isChannelVisible(Channel channel) const { return channelVisibl
 bool SignalPlots::isRowShown(Row row) const { return rows_[slot(row)].rect->layout() != nullptr; }
 QCPAxisRect* SignalPlots::axisRect(Row row) const { return rows_[slot(row)].rect; }
 QCPGraph* SignalPlots::graph(Channel channel) const { return graphs_[slot(channel)]; }
+QCPLegend* SignalPlots::legend() const { return legend_->legend(); }
 bool SignalPlots::isStanceShaded(double time_s) const { return rows_.front().stance->contains(time_s); }
 QCPItemStraightLine* SignalPlots::cursorLine(Row row) const { return rows_[slot(row)].cursor; }
 QCPRange SignalPlots::timeRange() const { return timeRows_->range(); }

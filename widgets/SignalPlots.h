@@ -24,6 +24,7 @@ class QToolBar;
 
 namespace footpath {
 
+class LegendStrip;
 class LinkedTimeRows;
 class PlotInteraction;
 class TimeBands;
@@ -73,6 +74,8 @@ public:
     QCustomPlot* plot() const { return plot_; }
     QCPAxisRect* axisRect(Row row) const;
     QCPGraph* graph(Channel channel) const;
+    /// The legend above the rows: the shown channels (x, y, z once for all rows) and the stance.
+    QCPLegend* legend() const;
     /// Whether time_s lies in a shaded stance span (the span from a stance's first sample to the
     /// sample after its last).
     bool isStanceShaded(double time_s) const;
@@ -101,7 +104,6 @@ private:
         QCPAxisRect* rect = nullptr;
         TimeBands* stance = nullptr;
         QCPItemStraightLine* cursor = nullptr;
-        QCPLegend* legend = nullptr;
         QAction* group = nullptr;  ///< the toolbar's group (label, check boxes): hidden without data
     };
 
@@ -114,7 +116,6 @@ private:
     void plotStanceShading();
     void rescaleValueAxes();
     void arrangeRows();
-    void refreshLegend(std::size_t row, bool withStance);
     bool rowHasData(Row row) const;
     std::vector<RowParts*> allRows();  ///< the warning lane and the signal rows
 
@@ -122,6 +123,7 @@ private:
     QToolBar* toolBar_;
     std::array<RowParts, kRowCount> rows_;
     std::array<QCPGraph*, kChannelCount> graphs_{};
+    LegendStrip* legend_ = nullptr;  ///< one for all rows, above them
     QCPGraph* stanceLegendEntry_ = nullptr;  ///< draws nothing; gives the bands a legend entry
     RowParts warningLane_;  ///< above the rows while the result has warnings
     WarningOverlay* warnings_ = nullptr;

@@ -234,6 +234,7 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
     plot_->layer(kCursorLayer)->setMode(QCPLayer::lmBuffered);
     plot_->plotLayout()->clear();  // drops the default axis rect: the rows below replace it
     plot_->plotLayout()->setRowSpacing(4);
+    legend_ = new LegendStrip(plot_);  // above the rows: a legend in a row would hide its curves
     auto* alignedMargins = new QCPMarginGroup(plot_);  // time axes line up although labels differ
     for (RowParts& row : rows_) {
         row.rect = new QCPAxisRect(plot_);
@@ -407,14 +408,10 @@ void StanceFlagsPlot::createStatisticRow()
     stanceLegendEntry_->setName(tr("Stance"));
     stanceLegendEntry_->setPen(Qt::NoPen);
     stanceLegendEntry_->setBrush(kStanceBrush);
-    QCPLegend* legend = addRowLegend(rect);  // the axis names the curve; the legend the rest
-    for (QCPGraph* graph : {statisticThreshold_, stanceLegendEntry_})
-        graph->addToLegend(legend);
 }
 
 void StanceFlagsPlot::createInputRows()
 {
-    std::array<QCPLegend*, kInputCount> legends{};
     for (std::size_t i = 0; i < kInputCount; ++i) {
         QCPAxisRect* rect = rows_[rowOf(static_cast<Input>(i))].rect;
         valueAxis(rect)->setLabel(tr(kInputInfos[i].axisLabel));
@@ -422,8 +419,6 @@ void StanceFlagsPlot::createInputRows()
         inputs_[i]->setName(tr(kInputInfos[i].name));
         inputs_[i]->setPen(QPen(QColor(20, 20, 20), 1.0));
         inputs_[i]->setSelectable(QCP::stNone);
-        legends[i] = addRowLegend(rect);
-        inputs_[i]->addToLegend(legends[i]);
     }
     for (std::size_t t = 0; t < kThresholdCount; ++t) {
         const ThresholdInfo& info = thresholdInfos()[t];
@@ -431,7 +426,6 @@ void StanceFlagsPlot::createInputRows()
         thresholds_[t] = plot_->addGraph(timeAxis(rect), valueAxis(rect));
         thresholds_[t]->setPen(QPen(info.colour, 1.5, info.style));
         thresholds_[t]->setSelectable(QCP::stNone);
-        thresholds_[t]->addToLegend(legends[slot(info.input)]);
     }
 }
 
@@ -639,7 +633,7 @@ void StanceFlagsPlot::arrangeRows()
     }
     layout->simplify();
     const bool inputsShown = inputsVisible_ && usesPaperDetector();
-    int shownCount = 0;
+    int shownCount = LegendStrip::kFirstRow;
     QCPAxisRect* bottom = nullptr;
     for (std::size_t r = 0; r < kRowCount; ++r) {
         RowParts& row = rows_[r];
@@ -666,10 +660,17 @@ void StanceFlagsPlot::arrangeRows()
     }
     timeAxis(bottom)->setTickLabels(true);  // one time scale at the foot of the stack is enough
     timeAxis(bottom)->setLabel(tr("Time (s)"));
+    // The axes name the curves; the legend names the thresholds (each name says its quantity) and
+    // the shading.
+    std::vector<QCPAbstractPlottable*> entries{statisticThreshold_, stanceLegendEntry_};
+    if (inputsShown)
+        entries.insert(entries.end(), thresholds_.begin(), thresholds_.end());
+    legend_->setEntries(entries);
 }
 
 bool StanceFlagsPlot::isLaneShown(Lane lane) const { return lanes_[slot(lane)]->visible(); }
 bool StanceFlagsPlot::isInputRowShown(Input input) const { return inputRect(input)->layout() != nullptr; }
+QCPLegend* StanceFlagsPlot::legend() const { return legend_->legend(); }
 QCPAxisRect* StanceFlagsPlot::lanesRect() const { return rows_[kLanesRow].rect; }
 QCPAxisRect* StanceFlagsPlot::statisticRect() const { return rows_[kStatisticRow].rect; }
 QCPAxisRect* StanceFlagsPlot::warningLane() const { return rows_[kWarningRow].rect; }

@@ -12,6 +12,7 @@
 
 class QAction;
 class QCPAxisRect;
+class QCPLegend;
 class QCPGraph;
 class QCPItemStraightLine;
 class QCPRange;
@@ -22,6 +23,7 @@ class QToolBar;
 
 namespace footpath {
 
+class LegendStrip;
 class LinkedTimeRows;
 class MotionLanes;
 class PlotInteraction;
@@ -85,6 +87,8 @@ public:
 
     /// For the PDF report (QCustomPlot::toPainter, savePdf) and for tests.
     QCustomPlot* plot() const { return plot_; }
+    /// The legend above the rows: the threshold(s) and the stance shading.
+    QCPLegend* legend() const;
     QCPAxisRect* lanesRect() const;
     QCPAxisRect* inputRect(Input input) const;
     QCPGraph* laneGraph(Lane lane) const;
@@ -176,6 +180,7 @@ private:
     double timeCursor_s_ = 0.0;
     bool cursorPlaced_ = false;  ///< the cursor stays hidden until someone places it
     LinkedTimeRows* timeRows_ = nullptr;  ///< made with the rows
+    LegendStrip* legend_ = nullptr;       ///< one for all rows, above them
 };
 
 }  // namespace footpath

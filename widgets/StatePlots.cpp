@@ -127,11 +127,12 @@ StatePlots::StatePlots(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot
     plot_->layer(kCursorLayer)->setMode(QCPLayer::lmBuffered);
     plot_->plotLayout()->clear();
     plot_->plotLayout()->setRowSpacing(4);
+    legend_ = new LegendStrip(plot_);  // above the rows: a legend in a row would hide its curves
     auto* alignedMargins = new QCPMarginGroup(plot_);
     timeRows_ = new LinkedTimeRows(plot_);
     for (std::size_t r = 0; r < kRowCount; ++r) {
         rows_[r].rect = new QCPAxisRect(plot_);
-        plot_->plotLayout()->addElement(static_cast<int>(r), 0, rows_[r].rect);
+        plot_->plotLayout()->addElement(LegendStrip::kFirstRow + static_cast<int>(r), 0, rows_[r].rect);
         rows_[r].rect->setMarginGroup(QCP::msLeft | QCP::msRight, alignedMargins);
         createRow(r);
         timeRows_->addRow(rows_[r].rect);
@@ -168,7 +169,6 @@ void StatePlots::createRow(std::size_t r)
     row.stance = new TimeBands(row.rect, kStanceBrush);
     row.stance->setLayer(kStanceLayer);
     row.cursor = addCursorLine(plot_, row.rect, kCursorLayer);
-    row.legend = addRowLegend(row.rect);
     row.componentCount = info.components;
     for (int c = 0; c < info.components; ++c) {
         Component& component = row.components[static_cast<std::size_t>(c)];
@@ -188,7 +188,6 @@ void StatePlots::createRow(std::size_t r)
         component.curve->setName(tr(info.names[static_cast<std::size_t>(c)]));
         component.curve->setPen(info.components == 1 ? QPen(QColor(0, 110, 120), 1.2) : pen);
         component.curve->setSelectable(QCP::stNone);
-        component.curve->addToLegend(row.legend);
         component.sigma = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
         component.sigma->setName(tr("σ %1").arg(component.curve->name()));
         component.sigma->setLineStyle(QCPGraph::lsNone);
@@ -218,10 +217,7 @@ void StatePlots::setResult(std::shared_ptr<const Result> result)
         plotRow(r);
         rescaleRow(r);
     }
-    const bool hasBands = result_ && !result_->errorStd.empty();
-    bandLegendEntry_->removeFromLegend(rows_.front().legend);
-    if (hasBands)
-        bandLegendEntry_->addToLegend(rows_.front().legend);
+    refreshLegend();
     showAll();
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
@@ -276,6 +272,22 @@ void StatePlots::plotRow(std::size_t r)
     showCollapsed(r, constantBias);
 }
 
+void StatePlots::refreshLegend()
+{
+    // Velocity and the biases share the x/y/z pens: their entries appear once. A collapsed row
+    // (a state not estimated) draws no curve worth a legend entry.
+    std::vector<QCPAbstractPlottable*> entries;
+    for (const RowParts& row : rows_) {
+        if (row.collapsed)
+            continue;
+        for (int c = 0; c < row.componentCount; ++c)
+            entries.push_back(row.components[static_cast<std::size_t>(c)].curve);
+    }
+    if (result_ && !result_->errorStd.empty())
+        entries.push_back(bandLegendEntry_);
+    legend_->setEntries(entries);
+}
+
 void StatePlots::showCollapsed(std::size_t r, bool collapsed)
 {
     // A state the filter did not estimate is a flat line: a lane saying so, not a row of axis.
@@ -287,7 +299,7 @@ void StatePlots::showCollapsed(std::size_t r, bool collapsed)
     const int laneHeight = 2 * QFontMetrics(values->labelFont()).height() + 6;  // its two-line label
     row.rect->setMinimumSize(0, collapsed ? laneHeight : 0);
     row.rect->setMaximumSize(QWIDGETSIZE_MAX, collapsed ? laneHeight : QWIDGETSIZE_MAX);
-    row.legend->setVisible(!collapsed);
+    row.collapsed = collapsed;
     row.note->position->setCoords(0.01, collapsed ? 0.5 : 0.97);
     row.note->setPositionAlignment(Qt::AlignLeft | (collapsed ? Qt::AlignVCenter : Qt::AlignBottom));
 }
@@ -316,6 +328,7 @@ void StatePlots::rescaleRow(std::size_t r)
 
 QCPRange StatePlots::timeRange() const { return timeRows_->range(); }
 QCPAxisRect* StatePlots::axisRect(Row row) const { return rows_[slot(row)].rect; }
+QCPLegend* StatePlots::legend() const { return legend_->legend(); }
 
 QCPGraph* StatePlots::graph(Row row, int component) const
 {

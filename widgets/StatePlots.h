@@ -19,6 +19,7 @@ class QPainter;
 
 namespace footpath {
 
+class LegendStrip;
 class LinkedTimeRows;
 class PlotInteraction;
 class TimeBands;
@@ -55,6 +56,8 @@ public:
     QCPRange timeRange() const;
     QCustomPlot* plot() const { return plot_; }
     QCPAxisRect* axisRect(Row row) const;
+    /// The legend above the rows (x, y and z once for velocity and the biases; ±1σ with bands).
+    QCPLegend* legend() const;
     /// The curve of one component (roll/pitch/yaw, x/y/z; the height row has one).
     QCPGraph* graph(Row row, int component) const;
     /// The band's lower and upper edges of one component (empty without a covariance).
@@ -83,20 +86,22 @@ private:
         QCPAxisRect* rect = nullptr;
         TimeBands* stance = nullptr;
         QCPItemStraightLine* cursor = nullptr;
-        QCPLegend* legend = nullptr;
         QCPItemText* note = nullptr;
         std::array<Component, kMaxComponents> components;
         int componentCount = 0;
+        bool collapsed = false;  ///< a state not estimated: a lane saying so
     };
 
     void createRow(std::size_t r);
     void plotRow(std::size_t r);
     void rescaleRow(std::size_t r);
     void showCollapsed(std::size_t r, bool collapsed);
+    void refreshLegend();
 
     QCustomPlot* plot_;
     std::array<RowParts, kRowCount> rows_;
-    QCPGraph* bandLegendEntry_ = nullptr;  ///< draws nothing; names the bands in the top row
+    LegendStrip* legend_ = nullptr;  ///< one for all rows, above them
+    QCPGraph* bandLegendEntry_ = nullptr;  ///< draws nothing; names the bands
     std::shared_ptr<const Result> result_;
     double timeCursor_s_ = 0.0;
     LinkedTimeRows* timeRows_ = nullptr;

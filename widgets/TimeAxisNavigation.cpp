@@ -124,7 +124,7 @@ void LegendStrip::setEntries(const std::vector<QCPAbstractPlottable*>& entries)
 bool LegendStrip::showsEntryLike(const QCPAbstractPlottable* plottable) const
 {
     for (int i = 0; i < legend_->itemCount(); ++i) {
-        const auto* item = qobject_cast<const QCPPlottableLegendItem*>(legend_->item(i));
+        auto* item = qobject_cast<QCPPlottableLegendItem*>(legend_->item(i));
         if (item && looksAlike(item->plottable(), plottable))
             return true;
     }

@@ -2,6 +2,7 @@
 
 #include "MotionLanes.h"
 #include "PlotInteraction.h"
+#include "TimeAxisNavigation.h"
 #include "metrics/Evaluation.h"
 
 #include <Eigen/Geometry>
@@ -349,34 +350,18 @@ void TrajectoryView2D::createLegendRow()
     legend->setMargins(QMargins(6, 0, 6, 4));
     legend->setColumnSpacing(18);
     legend->setMinimumSize(1, 0);  // its width never sets the widget's: it wraps instead (height: as needed)
+    // Entries come and go with the overlays and the motion classes: fitted before every drawing.
+    connect(plot_, &QCustomPlot::beforeReplot, this, &TrajectoryView2D::wrapLegendToWidth);
 }
 
 void TrajectoryView2D::wrapLegendToWidth()
 {
-    // As many items per row as fit (rows share column widths); in a narrow view more rows rather
-    // than a legend wider than the plot.
-    QCPLegend* legend = plot_->legend;
-    std::vector<int> itemWidths;
-    for (int i = 0; i < legend->itemCount(); ++i) {
-        if (const QCPAbstractLegendItem* item = legend->item(i))  // null: a cell left by a removed item
-            itemWidths.push_back(item->minimumOuterSizeHint().width());
-    }
-    const int available = width() - legend->margins().left() - legend->margins().right();
-    int perRow = static_cast<int>(itemWidths.size());
-    for (; perRow > 1; --perRow) {
-        std::vector<int> columnWidths(static_cast<std::size_t>(perRow), 0);
-        for (std::size_t i = 0; i < itemWidths.size(); ++i)
-            columnWidths[i % columnWidths.size()] = std::max(columnWidths[i % columnWidths.size()], itemWidths[i]);
-        const int needed = std::accumulate(columnWidths.cbegin(), columnWidths.cend(), 0) + (perRow - 1) * legend->columnSpacing();
-        if (needed <= available)
-            break;
-    }
-    legend->setWrap(std::max(1, perRow));
-    legend->setFillOrder(QCPLegend::foColumnsFirst, true);
-    // Pack the items to the left: a trailing empty column takes the spare width (the next
-    // rearrangement simplifies it away again).
-    legend->insertColumn(legend->columnCount());
-    legend->setColumnStretchFactor(legend->columnCount() - 1, 1000.0);
+    // The legend sits under the path's column only: with the colour scale beside the path, the
+    // legend has that much less width (wrapping to the whole width clipped the last letters).
+    int available = plot_->width();
+    if (plot_->plotLayout()->hasElement(0, 1))
+        available -= colourScale_->outerRect().width() + plot_->plotLayout()->columnSpacing();
+    footpath::wrapLegendToWidth(plot_->legend, available);
 }
 
 void TrajectoryView2D::resizeEvent(QResizeEvent* event)

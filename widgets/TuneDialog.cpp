@@ -127,15 +127,15 @@ TuneCriterionChoice::TuneCriterionChoice(QWidget* parent) : QGroupBox(tr("Minimi
 {
     auto* grid = new QGridLayout(this);
     for (const TuneCriterion c : kCriteria) {
-        const int i = indexOf(c);
+        const std::size_t i = indexOf(c);
         buttons_[i] = new QRadioButton(tuneCriterionText(c), this);
         buttons_[i]->setObjectName(QStringLiteral("criterion_") + QString::fromUtf8(tuneCriterionName(c)));
         reasons_[i] = new QLabel(this);
         reasons_[i]->setObjectName(QStringLiteral("whyNot_") + QString::fromUtf8(tuneCriterionName(c)));
         reasons_[i]->setStyleSheet(QStringLiteral("color: palette(mid);"));
         reasons_[i]->setWordWrap(true);
-        grid->addWidget(buttons_[i], i, 0);
-        grid->addWidget(reasons_[i], i, 1);
+        grid->addWidget(buttons_[i], static_cast<int>(i), 0);
+        grid->addWidget(reasons_[i], static_cast<int>(i), 1);
     }
     grid->setColumnStretch(1, 1);
 }

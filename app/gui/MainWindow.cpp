@@ -17,6 +17,8 @@
 #include "SummaryPanel.h"
 #include "TrajectoryView2D.h"
 #include "TrajectoryView3D.h"
+#include "TuneDialog.h"
+#include "TuneFolderDialog.h"
 #include "ReportWriter.h"
 #include "io/ResultWriters.h"
 
@@ -461,6 +463,13 @@ void MainWindow::addComparisonMenu(QAction* compare)
 {
     auto* analysis = new QMenu(tr("&Analysis"), this);
     analysis->addAction(compare);
+    analysis->addSeparator();
+    QAction* tune = analysis->addAction(tr("&Tune for this recording..."), this, [this] { tuneForRecording(); });
+    tune->setObjectName(QStringLiteral("tuneRecording"));
+    tune->setToolTip(tr("Search the detector settings and the filter noise that fit this recording best"));
+    QAction* tuneFolder = analysis->addAction(tr("Tune over a &folder..."), this, [this] { tuneOverFolder(); });
+    tuneFolder->setObjectName(QStringLiteral("tuneFolder"));
+    tuneFolder->setToolTip(tr("One parameter set for many recordings of a sensor and a way of walking"));
     // After View, before Settings and Help.
     const QList<QAction*> menus = menuBar()->actions();
     const qsizetype view = menus.indexOf(viewMenu_->menuAction());
@@ -480,6 +489,30 @@ QString MainWindow::showComparison(const QString& sets)
     }
     comparison_->run();
     return {};
+}
+
+TuneDialog* MainWindow::tuneForRecording()
+{
+    if (!session_->recording()) {
+        QMessageBox::information(this, tr("Tune for this recording"), tr("Open a recording first."));
+        return nullptr;
+    }
+    // Accepting applies the parameters through the session: one undo step, and the history's
+    // ghost path shows the path before them.
+    auto* dialog = new TuneDialog(*session_, this);
+    dialog->setObjectName(QStringLiteral("tuneDialog"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+    return dialog;
+}
+
+TuneFolderDialog* MainWindow::tuneOverFolder()
+{
+    auto* dialog = new TuneFolderDialog(*session_, settings_.lastFolder(), this);
+    dialog->setObjectName(QStringLiteral("tuneFolderDialog"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+    return dialog;
 }
 
 void MainWindow::showComparisonOverlays(bool shown)

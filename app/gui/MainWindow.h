@@ -30,6 +30,8 @@ class StatePlots;
 class SummaryPanel;
 class TrajectoryView2D;
 class TrajectoryView3D;
+class TuneDialog;
+class TuneFolderDialog;
 
 /// Assembles the panels, docks and menus and wires them to the session; holds no algorithm.
 class MainWindow : public QMainWindow {
@@ -60,6 +62,10 @@ public:
     RunHistory* runHistory() const { return history_; }
     /// Help > User guide (false) or Keyboard shortcuts (true), not modal.
     void showHelp(bool shortcuts);
+    /// Analysis > Tune for this recording / Tune over a folder: the dialog, opened (window-modal,
+    /// deleted on close); null when there is no recording to tune.
+    TuneDialog* tuneForRecording();
+    TuneFolderDialog* tuneOverFolder();
 
 signals:
     /// A result is on screen (after each estimate); screenshots and tests wait for it.

@@ -28,7 +28,6 @@ constexpr double kEventLevel = 0.5;
 constexpr double kQuietMargin_radps = 0.5;
 /// A stance longer than this is standing, not walking: the stride is marked paused.
 constexpr double kMaxWalkingStance_s = 2.0;
-constexpr double kPi = 3.14159265358979323846;
 
 struct Swing {
     double toeOff = 0.0;  ///< fractional sample positions
@@ -41,7 +40,7 @@ struct Stance {
     std::size_t first = 0, last = 0;          ///< the samples it spans
     std::size_t quietFirst = 0, quietLast = 0; ///< foot flat and heel off
     Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< mean over the quiet part
-    double yaw_rad = 0.0;                      ///< in the middle of the quiet part
+    Eigen::Matrix3d bodyToNav = Eigen::Matrix3d::Identity();  ///< in the middle of the quiet part
 };
 
 /// The principal axis of the angular rate, signed so that the rotation about it is positive
@@ -54,16 +53,16 @@ Eigen::Vector3d sagittalAxis(const std::vector<ImuSample>& samples, const Result
         scatter += sample.gyr_radps * sample.gyr_radps.transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
     Eigen::Vector3d axis = solver.eigenvectors().col(2);  // eigenvalues ascending
-    double forwardTurn = 0.0;
+    // Toe rising while moving forwards is a positive turn about the axis to the right of the
+    // motion (v x up); the rate about `axis` should agree with it.
+    double agreement = 0.0;
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const Eigen::Vector3d& rpy = result.rollPitchYaw_rad[k];
         const Eigen::Vector3d rate_n = rotationFromRollPitchYaw(rpy.x(), rpy.y(), rpy.z()) * samples[k].gyr_radps;
         const Eigen::Vector3d rightOfMotion = result.velocity_mps[k].cross(Eigen::Vector3d::UnitZ());
-        const Eigen::Vector3d axis_n = rotationFromRollPitchYaw(rpy.x(), rpy.y(), rpy.z()) * axis;
-        forwardTurn += rate_n.dot(rightOfMotion) * (rate_n.dot(axis_n) >= 0.0 ? 1.0 : -1.0)
-            * std::abs(samples[k].gyr_radps.dot(axis));
+        agreement += samples[k].gyr_radps.dot(axis) * rate_n.dot(rightOfMotion);
     }
-    return forwardTurn >= 0.0 ? axis : Eigen::Vector3d(-axis);
+    return agreement >= 0.0 ? axis : Eigen::Vector3d(-axis);
 }
 
 std::vector<double> projectedRate(const std::vector<ImuSample>& samples, const Eigen::Vector3d& axis)
@@ -184,7 +183,8 @@ Stance quietPart(const std::vector<ImuSample>& samples, const Result& result, st
     for (std::size_t k = stance.quietFirst; k <= stance.quietLast; ++k)
         stance.position_m += result.position_m[k];
     stance.position_m /= static_cast<double>(stance.quietLast - stance.quietFirst + 1);
-    stance.yaw_rad = result.rollPitchYaw_rad[(stance.quietFirst + stance.quietLast) / 2].z();
+    const Eigen::Vector3d& rpy = result.rollPitchYaw_rad[(stance.quietFirst + stance.quietLast) / 2];
+    stance.bodyToNav = rotationFromRollPitchYaw(rpy.x(), rpy.y(), rpy.z());
     return stance;
 }
 
@@ -222,9 +222,12 @@ std::vector<Stance> stancesAround(const std::vector<Swing>& swings, const std::v
     return stances;
 }
 
-double wrapToPi(double angle_rad)
+/// The turn about the vertical from one attitude to the next. Not a difference of yaw angles:
+/// those are undefined for a sensor mounted near upright (pitch near 90 degrees).
+double headingChange(const Eigen::Matrix3d& from, const Eigen::Matrix3d& to)
 {
-    return std::atan2(std::sin(angle_rad), std::cos(angle_rad));
+    const Eigen::Matrix3d turn = to * from.transpose();  // in the navigation frame
+    return std::atan2(turn(1, 0) - turn(0, 1), turn(0, 0) + turn(1, 1));
 }
 
 /// The stride from the heel strike ending swing i to the one ending swing i + 1.
@@ -252,7 +255,7 @@ GaitStride makeStride(const std::vector<Swing>& swings, const std::vector<Stance
     for (std::size_t k = stride.toeOff.sample; k <= stride.nextHeelStrike.sample; ++k)
         highest_m = std::max(highest_m, result.position_m[k].z());
     stride.clearance_m = highest_m - stance.position_m.z();
-    stride.headingChange_rad = wrapToPi(nextStance.yaw_rad - stance.yaw_rad);
+    stride.headingChange_rad = headingChange(stance.bodyToNav, nextStance.bodyToNav);
     stride.turning = std::abs(stride.headingChange_rad) > kTurningStrideThreshold_rad;
     stride.paused = stanceTime_s > kMaxWalkingStance_s;
     return stride;

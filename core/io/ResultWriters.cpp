@@ -15,11 +15,16 @@ namespace {
 // 10 significant digits keep sub-millimetre positions of a 100 km walk and the biases' last
 // digits; std::to_chars writes a dot whatever the C locale says (Qt sets it from the
 // environment, which would give "9,81" under a German locale with printf).
-void put(std::ostream& out, double value, char separator)
+void putNumber(std::ostream& out, double value)
 {
     char buffer[40];
     const auto end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 10).ptr;
     out.write(buffer, end - buffer);
+}
+
+void put(std::ostream& out, double value, char separator)
+{
+    putNumber(out, value);
     out.put(separator);
 }
 
@@ -65,7 +70,7 @@ std::string jsonString(const std::string& text)
 
 void writeTrajectoryCsv(std::ostream& out, const Result& result)
 {
-    out << "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance,"
+    out << "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance,gait_stance,"
            "gyro_bias_x_radps,gyro_bias_y_radps,gyro_bias_z_radps,acc_bias_x_mps2,acc_bias_y_mps2,acc_bias_z_mps2\n";
     const StanceFlags& flags = result.flags;
     for (std::size_t k = 0; k < result.time_s.size(); ++k) {
@@ -74,15 +79,49 @@ void writeTrajectoryCsv(std::ostream& out, const Result& result)
         putVector(out, result.velocity_mps[k]);
         putVector(out, result.rollPitchYaw_rad[k]);
         out << int(flags.c1[k]) << ',' << int(flags.c2[k]) << ',' << int(flags.c3[k]) << ',' << int(flags.stance[k])
-            << ',';
+            << ',' << (k < result.gaitStance.size() ? int(result.gaitStance[k]) : 0) << ',';
         putVector(out, result.gyroBias_radps[k]);
         putVector(out, result.accBias_mps2[k], '\n');
     }
 }
 
+namespace {
+
+/// The gait stride whose stance (heel strike to toe off) holds the middle of the ZUPT stance of
+/// `step`, or nullptr; each stride goes to the first such step only. `next` walks along the strides.
+const GaitStride* strideOfStep(const Step& step, const std::vector<GaitStride>& strides, std::size_t& next)
+{
+    const double middle_s = 0.5 * (step.stanceStart_s + step.stanceEnd_s);
+    while (next < strides.size() && strides[next].toeOff.time_s < middle_s)
+        ++next;
+    if (next == strides.size() || strides[next].heelStrike.time_s > middle_s)
+        return nullptr;
+    return &strides[next++];
+}
+
+/// The gait columns of the steps CSV, empty cells where no stride matches the step.
+void putGaitCells(std::ostream& out, const GaitStride* stride)
+{
+    if (!stride) {
+        out << ",,,,,,";
+        return;
+    }
+    out << ',';
+    put(out, stride->heelStrike.time_s, ',');
+    put(out, stride->toeOff.time_s, ',');
+    put(out, stride->stancePct, ',');
+    put(out, stride->swingPct, ',');
+    put(out, stride->clearance_m, ',');
+    out << int(stride->turning);
+}
+
+}  // namespace
+
 void writeStepsCsv(std::ostream& out, const Result& result)
 {
-    out << "step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,motion,baro_height_m\n";
+    out << "step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,motion,baro_height_m,"
+           "heel_strike_s,toe_off_s,gait_stance_pct,swing_pct,clearance_m,turning\n";
+    std::size_t nextStride = 0;
     for (std::size_t i = 0; i < result.steps.size(); ++i) {
         const Step& step = result.steps[i];
         out << i + 1 << ',';  // numbered from 1, as the window's step table and the report number them
@@ -93,10 +132,10 @@ void writeStepsCsv(std::ostream& out, const Result& result)
         put(out, step.strideDuration_s, ',');
         out << motionClassName(step.motion) << ',';
         // An empty cell, not "nan", where there is no barometer: spreadsheets read it as missing.
-        if (std::isnan(step.baroHeight_m))
-            out << '\n';
-        else
-            put(out, step.baroHeight_m, '\n');
+        if (!std::isnan(step.baroHeight_m))
+            putNumber(out, step.baroHeight_m);
+        putGaitCells(out, strideOfStep(step, result.gaitStrides, nextStride));
+        out << '\n';
     }
 }
 

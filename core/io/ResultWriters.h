@@ -11,12 +11,15 @@
 namespace footpath {
 
 /// Trajectory CSV, one row per sample, z up:
-/// time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance, then the
-/// bias estimates gyro_bias_{x,y,z}_radps, acc_bias_{x,y,z}_mps2. Numbers always use a dot.
+/// time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,roll_rad,pitch_rad,yaw_rad,c1,c2,c3,stance,gait_stance,
+/// then the bias estimates gyro_bias_{x,y,z}_radps, acc_bias_{x,y,z}_mps2 (stance: the ZUPT's foot
+/// at rest; gait_stance: heel strike to toe off). Numbers always use a dot.
 void writeTrajectoryCsv(std::ostream& out, const Result& result);
 /// Steps CSV: step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,
-/// motion,baro_height_m (step: the stance phase, numbered from 1; motion: motionClassName;
-/// baro_height_m empty without a barometer).
+/// motion,baro_height_m,heel_strike_s,toe_off_s,gait_stance_pct,swing_pct,clearance_m,turning
+/// (step: the stance phase, numbered from 1; motion: motionClassName; baro_height_m empty without
+/// a barometer; the gait columns describe the gait stride whose heel strike to toe off holds the
+/// step's stance, empty when none does; turning 1 or 0).
 void writeStepsCsv(std::ostream& out, const Result& result);
 /// Summary as a header row and one value row; the motion-class counts and climbs follow the
 /// figures of every recording.

@@ -191,4 +191,63 @@ StanceScore scoreStanceDetection(const std::vector<std::uint8_t>& stance, const 
     return score;
 }
 
+EventTimingScore scoreEventTiming(const std::vector<double>& detected_s, const std::vector<double>& reference_s,
+                                  double windowStart_s, double windowEnd_s)
+{
+    EventTimingScore score;
+    std::vector<double> detected = detected_s;
+    std::sort(detected.begin(), detected.end());
+    std::vector<double> errors;
+    for (double reference : reference_s) {
+        if (reference < windowStart_s || reference > windowEnd_s)
+            continue;
+        ++score.referenceEvents;
+        if (detected.empty())
+            continue;
+        const auto after = std::lower_bound(detected.begin(), detected.end(), reference);
+        double nearest = std::numeric_limits<double>::infinity();
+        if (after != detected.end())
+            nearest = *after - reference;
+        if (after != detected.begin())
+            nearest = std::min(nearest, reference - *(after - 1));
+        errors.push_back(nearest);
+    }
+    if (errors.empty()) {
+        score.medianError_s = score.meanError_s = score.maxError_s = kNaN;
+        return score;
+    }
+    std::sort(errors.begin(), errors.end());
+    const std::size_t half = errors.size() / 2;
+    score.medianError_s = errors.size() % 2 ? errors[half] : (errors[half - 1] + errors[half]) / 2.0;
+    for (double error : errors)
+        score.meanError_s += error / static_cast<double>(errors.size());
+    score.maxError_s = errors.back();
+    return score;
+}
+
+GaitEventTiming scoreGaitEventTiming(const Result& result, const Reference& reference)
+{
+    const std::vector<double>& time_s = result.time_s;
+    std::vector<double> detectedHeelStrikes, detectedToeOffs, referenceHeelStrikes, referenceToeOffs;
+    for (const GaitEvent& event : result.gaitEvents) {
+        if (event.kind == GaitEventKind::HeelStrike)
+            detectedHeelStrikes.push_back(event.time_s);
+        else if (event.kind == GaitEventKind::ToeOff)
+            detectedToeOffs.push_back(event.time_s);
+    }
+    for (const SampleRange& swing : reference.swings) {
+        if (swing.last >= time_s.size())
+            continue;
+        referenceToeOffs.push_back(time_s[swing.first]);
+        referenceHeelStrikes.push_back(time_s[swing.last]);
+    }
+    double start_s = -std::numeric_limits<double>::infinity(), end_s = std::numeric_limits<double>::infinity();
+    if (reference.hasTrialBoundaries && !time_s.empty()) {
+        start_s = time_s[std::min(reference.trialBoundaries.first, time_s.size() - 1)];
+        end_s = time_s[std::min(reference.trialBoundaries.last, time_s.size() - 1)];
+    }
+    return {scoreEventTiming(detectedHeelStrikes, referenceHeelStrikes, start_s, end_s),
+            scoreEventTiming(detectedToeOffs, referenceToeOffs, start_s, end_s)};
+}
+
 }  // namespace footpath

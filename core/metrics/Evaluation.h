@@ -61,4 +61,27 @@ struct StanceScore {
 StanceScore scoreStanceDetection(const std::vector<std::uint8_t>& stance, const std::vector<SampleRange>& swings,
                                  const SampleRange* trialBoundaries = nullptr);
 
+/// Section 4, gait events: how far detected events lie from hand-labelled ones. For every reference
+/// event inside the window, the error is the distance to the nearest detected event (a missed
+/// event counts with the distance to the next one found, so misses raise the figures).
+struct EventTimingScore {
+    std::size_t referenceEvents = 0;  ///< reference events inside the window
+    double medianError_s = 0.0;       ///< NaN when there is no reference or no detected event
+    double meanError_s = 0.0;
+    double maxError_s = 0.0;
+};
+/// detected_s and reference_s in any order; only reference events in [windowStart_s, windowEnd_s]
+/// count (detected events outside the window still count as nearest).
+EventTimingScore scoreEventTiming(const std::vector<double>& detected_s, const std::vector<double>& reference_s,
+                                  double windowStart_s, double windowEnd_s);
+
+/// Heel-strike and toe-off timing of result.gaitEvents against the labelled swings of reference
+/// (a swing's first sample is a toe off, its last a heel strike; times from result.time_s), over
+/// the trial boundaries when the reference has them.
+struct GaitEventTiming {
+    EventTimingScore heelStrike;
+    EventTimingScore toeOff;
+};
+GaitEventTiming scoreGaitEventTiming(const Result& result, const Reference& reference);
+
 }  // namespace footpath

@@ -1,6 +1,7 @@
 #include "nav/Pipeline.h"
 
 #include "detect/StanceDetector.h"
+#include "gait/GaitEvents.h"
 #include "metrics/Evaluation.h"
 #include "nav/Alignment.h"
 #include "nav/Attitude.h"
@@ -11,6 +12,7 @@
 #include "nav/Plausibility.h"
 #include "nav/RtsSmoother.h"
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
@@ -141,8 +143,20 @@ void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSamp
     result.errorStd.push_back(ekf.covariance().diagonal().cwiseMax(0.0).cwiseSqrt().cast<float>());
 }
 
-void appendStep(Result& result, std::size_t first, std::size_t last)
+bool appendStep(Result& result, std::size_t first, std::size_t last)
 {
+    bool merged = false;
+    if (!result.steps.empty()) {
+        const Step& previous = result.steps.back();
+        const Step candidate = makeStep(result, first, last);
+        if (result.time_s[first] - previous.stanceEnd_s <= kStanceMergeGap_s
+            && horizontalDistance(candidate.position_m, previous.position_m) <= kStanceMergeDistance_m) {
+            first = static_cast<std::size_t>(
+                std::lower_bound(result.time_s.begin(), result.time_s.end(), previous.stanceStart_s) - result.time_s.begin());
+            result.steps.pop_back();
+            merged = true;
+        }
+    }
     Step step = makeStep(result, first, last);
     if (!result.steps.empty()) {
         const Step& previous = result.steps.back();
@@ -150,6 +164,7 @@ void appendStep(Result& result, std::size_t first, std::size_t last)
         step.strideDuration_s = step.stanceStart_s - previous.stanceStart_s;
     }
     result.steps.push_back(step);
+    return merged;
 }
 
 void summarize(Result& result, double pathLength_m)
@@ -200,6 +215,7 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
         return output;
     }
     fillStepsAndSummary(result);
+    detectGaitEvents(recording, result);
     classifyMotion(recording, params, result);
     result.warnings = checkPlausibility(result, params);
     result.summary.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

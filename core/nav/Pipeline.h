@@ -50,8 +50,16 @@ void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSamp
                   std::optional<double> previousTime_s, const SampleStanceFlags& flags, Result& result);
 
 /// Appends the stance phase of samples [first, last) of result as a step, with its stride from the
-/// previous step. Summary fields are left alone.
-void appendStep(Result& result, std::size_t first, std::size_t last);
+/// previous step; or, when it begins within kStanceMergeGap_s of the previous step's end no more
+/// than kStanceMergeDistance_m from it, extends that step over both (a stance the detector
+/// flickered out of for a moment is one stance, not a stride of a few millimetres). Returns true
+/// when it merged. Summary fields are left alone.
+bool appendStep(Result& result, std::size_t first, std::size_t last);
+
+/// A stance resumed this soon after the previous one ended ...
+constexpr double kStanceMergeGap_s = 0.2;
+/// ... this close to it is the same stance (a real stride takes longer and goes further).
+constexpr double kStanceMergeDistance_m = 0.1;
 
 /// Sets every summary field but runtime_s from the samples and steps so far, with the given path
 /// length (the sum of the steps' stride lengths). Constant time; result must hold a sample.

@@ -1,6 +1,7 @@
 #include "nav/StreamingEstimator.h"
 
 #include "detect/StanceDetector.h"
+#include "metrics/Evaluation.h"
 #include "nav/Alignment.h"
 #include "nav/ErrorStateEkf.h"
 #include "nav/MeasurementSources.h"
@@ -188,8 +189,11 @@ void StreamingEstimator::Impl::hold(const ImuSample& sample, const SampleStanceF
 /// The open stance phase, result samples [start, end), becomes a step as fillStepsAndSummary makes it.
 void StreamingEstimator::Impl::closeStancePhase(std::size_t end)
 {
-    appendStep(result, *stancePhaseStart, end);
-    pathLength_m += result.steps.back().strideLength_m;
+    // Summed as stancePathLength sums, so live and offline agree to the last bit.
+    if (appendStep(result, *stancePhaseStart, end))
+        pathLength_m = stancePathLength(result.steps);
+    else
+        pathLength_m += result.steps.back().strideLength_m;
     stancePhaseStart.reset();
 }
 
