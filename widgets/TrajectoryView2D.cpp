@@ -356,12 +356,14 @@ void TrajectoryView2D::createLegendRow()
 
 void TrajectoryView2D::wrapLegendToWidth()
 {
-    // The legend sits under the path's column only: with the colour scale beside the path, the
-    // legend has that much less width (wrapping to the whole width clipped the last letters).
-    int available = plot_->width();
-    if (plot_->plotLayout()->hasElement(0, 1))
-        available -= colourScale_->outerRect().width() + plot_->plotLayout()->columnSpacing();
-    footpath::wrapLegendToWidth(plot_->legend, available);
+    // The legend sits under the path's column only: with the colour scale beside the path it has
+    // less than the plot's width (wrapping to the whole width clipped the last letters). A layout
+    // pass tells the column's width; the legend's own width (at least 1) does not change it.
+    QCPLayoutGrid* grid = plot_->plotLayout();
+    grid->setOuterRect(plot_->viewport());
+    for (const auto phase : {QCPLayoutElement::upPreparation, QCPLayoutElement::upMargins, QCPLayoutElement::upLayout})
+        grid->update(phase);
+    footpath::wrapLegendToWidth(plot_->legend, plot_->legend->outerRect().width());
 }
 
 void TrajectoryView2D::resizeEvent(QResizeEvent* event)
