@@ -269,7 +269,11 @@ QWidget* TuneDialog::createSettings()
                            "is the error to minimise"));
     walkForm->addRow(closed_);
     walkForm->addRow(tr("Path length:"), length_);
-    connect(closed_, &QCheckBox::toggled, this, &TuneDialog::updateCriteria);
+    connect(closed_, &QCheckBox::toggled, this, [this](bool closed) {
+        updateCriteria();
+        if (closed)  // said so to use it
+            setCriterion(TuneCriterion::ClosedLoop);
+    });
     connect(length_, &QDoubleSpinBox::valueChanged, this, &TuneDialog::updateCriteria);
 
     criteria_ = new TuneCriterionChoice(this);
