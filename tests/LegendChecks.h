@@ -20,8 +20,9 @@ inline QString legendProblem(QCustomPlot* plot, QCPLegend* legend)
                                  ? qobject_cast<QCPPlottableLegendItem*>(item)->plottable()->name()
                                  : QString::number(i);
         if (got.width() < needed.width() || got.height() < needed.height())
-            return QStringLiteral("item '%1' is %2x%3 px, its text needs %4x%5")
-                .arg(name).arg(got.width()).arg(got.height()).arg(needed.width()).arg(needed.height());
+            return QStringLiteral("item '%1' is %2x%3 px, its text needs %4x%5 (legend %6 px wide, %7 columns)")
+                .arg(name).arg(got.width()).arg(got.height()).arg(needed.width()).arg(needed.height())
+                .arg(legend->outerRect().width()).arg(legend->columnCount());
         if (!plot->viewport().contains(got))
             return QStringLiteral("item '%1' lies outside the plot").arg(name);
     }

@@ -73,7 +73,21 @@ private slots:
         const Run run = runCli({"info", datasetPath("ecg-xmu/straight_40.4m.txt")});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.err.contains("no header row: the first line has 8 numeric columns"));
-        QVERIFY(run.err.contains("--columns"));
+        // The reader says what to give; the CLI adds its option.
+        QVERIFY2(run.err.contains("give the column map (--columns)"), qPrintable(run.err));
+    }
+
+    void readerMessagesGetTheCliOptionThatAnswersThem()
+    {
+        // A counter for time and no rate: the reader asks for the rate, the CLI names --rate.
+        QTemporaryDir dir;
+        QFile file(dir.filePath("counter.csv"));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("counter,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,0,0,9.81,0,0,0\n1,0,0,9.81,0,0,0\n");
+        file.close();
+        const Run run = runCli({"info", file.fileName()});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains("give the sample rate (--rate HZ)"), qPrintable(run.err));
     }
 
     void importPresetSavedAndReused()

@@ -364,7 +364,7 @@ void TestDelimitedTextReader::errors_reportMessageLineAndColumn_data()
                        "the header has: time_s, acc_x, acc_y, acc_z, gyr_x, gyr_y, temperature"};
     QTest::newRow("missing time column")
         << QByteArray("acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,0,9.8,0,0,0\n") << none << none << 1 << 0
-        << QStringList{"missing column", "time (or a counter with --rate)",
+        << QStringList{"missing column", "time (or a counter, with the sample rate given)",
                        "the header has: acc_x, acc_y, acc_z, gyr_x, gyr_y, gyr_z"};
     QTest::newRow("two time columns") << QByteArray("time_s,time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n"
                                                     "0,0,0,0,9.8,0,0,0\n")

@@ -156,6 +156,53 @@ private slots:
         QCOMPARE(live->latency_s(), StreamingEstimator::latency_s(window.session()->parameters()));
     }
 
+    void theStatusLineAndSummaryFollowWhatIsShownWithTheLivePanelRaised()
+    {
+        // Once the status line read "140230212493232 samples, 2913 steps, ... estimated in 21128 ms"
+        // with the live panel raised: a MainWindow object built against an older Result (without
+        // forwardSpeed_mps) read the summary 24 bytes off. Its figures must be the walk's own.
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));
+        MainWindow window(settings);
+        window.resize(1280, 800);
+        window.show();
+        auto* liveDock = window.findChild<QDockWidget*>(QStringLiteral("liveDock"));
+        QVERIFY(liveDock);
+        liveDock->raise();
+        QSignalSpy shown(&window, &MainWindow::resultShown);
+        window.openRecording(path_);
+        QVERIFY(shown.wait(30000));
+        const std::shared_ptr<const Result> result = window.session()->result();
+        const auto* status = window.findChild<QLabel*>(QStringLiteral("status"));
+        QVERIFY(status);
+        if (result->warnings.empty()) {
+            // Counted here from the recording and the step list, not read from the summary.
+            const QString expected = QStringLiteral("%1 samples, %2 steps, path ")
+                                         .arg(window.session()->recording()->samples.size())
+                                         .arg(result->steps.size() - 1);
+            QVERIFY2(status->text().startsWith(expected), qPrintable(status->text() + " / " + expected));
+            const double runtime_ms = status->text().section(QStringLiteral("estimated in "), 1).section(' ', 0, 0).toDouble();
+            QVERIFY2(runtime_ms >= 0.0 && runtime_ms < 60000.0, qPrintable(status->text()));
+        }
+
+        // The live session's figures while its views are in front, the recorded walk's after.
+        auto* summary = window.findChild<SummaryPanel*>();
+        auto* live = window.findChild<LivePanel*>();
+        QVERIFY(summary && live);
+        QVERIFY(!summary->isShowingLive());
+        const double recordedPath_m = summary->statistics().pathLength_m;
+        QVERIFY(recordedPath_m > 1.0);
+        auto* trajectoryTabs = qobject_cast<QTabWidget*>(live->views()->trajectory2D()->parentWidget()->parentWidget());
+        QVERIFY(trajectoryTabs);
+        trajectoryTabs->setCurrentWidget(live->views()->trajectory2D());
+        QVERIFY(summary->isShowingLive());
+        QCOMPARE(summary->statistics().pathLength_m, 0.0);  // nothing connected: no live figures yet
+        QVERIFY(summary->findChild<QLabel*>(QStringLiteral("liveSource"))->isVisibleTo(summary));
+        trajectoryTabs->setCurrentWidget(window.findChild<TrajectoryView2D*>(QStringLiteral("trajectory2D")));
+        QVERIFY(!summary->isShowingLive());
+        QCOMPARE(summary->statistics().pathLength_m, recordedPath_m);
+        QVERIFY(!summary->findChild<QLabel*>(QStringLiteral("liveSource"))->isVisibleTo(summary));
+    }
+
     void togglingZaruChangesTheEstimate()
     {
         AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_mainwindow"));

@@ -330,7 +330,7 @@ private slots:
         }
         const ImportResult r = read(log.data);
         QVERIFY(!r.ok());
-        QVERIFY2(errorText(r).contains("pass the rate with --rate"), qPrintable(errorText(r)));
+        QVERIFY2(errorText(r).contains("states no rate: give the sample rate"), qPrintable(errorText(r)));
     }
 
     void unreadableFilesGiveAClearError_data()

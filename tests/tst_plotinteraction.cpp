@@ -92,6 +92,12 @@ private slots:
         QCOMPARE(formatPlotNumber(-0.0, 0), QStringLiteral("0"));
         QCOMPARE(formatPlotNumber(-0.0006, 3), QStringLiteral("-0.001"));
         QCOMPARE(formatPlotNumber(-10.0, 0), QStringLiteral("-10"));
+        // The tables' figures: the same, in the user's notation, a dash where there is no figure.
+        QCOMPARE(formatFigure(-0.0004, 3), QStringLiteral("0.000"));
+        QCOMPARE(formatFigure(-0.0006, 3), QStringLiteral("-0.001"));
+        QCOMPARE(formatFigure(-0.004, 2, QLocale(QLocale::German)), QStringLiteral("0,00"));
+        QCOMPARE(formatFigure(-1.25, 2, QLocale(QLocale::German)), QStringLiteral("-1,25"));
+        QCOMPARE(formatFigure(std::nan(""), 2), QStringLiteral("\u2013"));
         QCOMPARE(decimalsForSpan(20.0), 2);
         QCOMPARE(decimalsForSpan(0.02), 5);
     }

@@ -119,6 +119,11 @@ private slots:
         QVERIFY(!text.contains(QRegularExpression("\\* gyr_max_radps")));
         // Long descriptions wrap instead of being cut with an ellipsis.
         QVERIFY(!text.contains(QChar(0x2026)));
+        // Units as everywhere else (m/s², not the presets' m/s^2); no figure or tick reads "-0.000".
+        QVERIFY(text.contains(QStringLiteral("m/s²")));
+        QVERIFY(!text.contains(QStringLiteral("m/s^2")));
+        const QRegularExpressionMatch negativeZero = QRegularExpression(QStringLiteral("-0(\\.0+)?(?![.0-9])")).match(text);
+        QVERIFY2(!negativeZero.hasMatch(), qPrintable(negativeZero.captured()));
     }
 
     // The step table counts stance phases from 1, as the window's table does: the first row is

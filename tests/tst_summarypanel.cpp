@@ -335,6 +335,44 @@ private slots:
         QVERIFY(!panel.findChild<QLabel*>("warning_0"));  // the old labels are gone
     }
 
+    void aLiveSessionIsShownInPlaceOfTheRecordedWalkAndBack()
+    {
+        // The recorded walk (with a reference) is in the panel; a live session (with its warnings)
+        // takes its place, a new recorded result meanwhile waits, and going back shows that one.
+        const auto& walk = straightWalk();
+        SummaryPanel panel;
+        panel.setRecording(walk.recording);
+        panel.setResult(walk.result);
+        const double recordedPath_m = panel.statistics().pathLength_m;
+        QVERIFY(panel.statistics().armse.has_value());
+        RunFigures before, after;
+        panel.showChange(&before, after, QStringLiteral("acc_std_max_mps2 0.5 -> 0.4"));
+        auto* change = panel.findChild<QGroupBox*>("lastChange");
+        QVERIFY(change->isVisibleTo(&panel));
+
+        std::size_t markedStep = 0;
+        auto live = std::make_shared<Result>(*withWarnings(markedStep));
+        live->steps.resize(live->steps.size() / 2);  // a session half as far along
+        live->summary.pathLength_m = recordedPath_m / 2.0;
+        panel.showLive(live);
+        QVERIFY(panel.isShowingLive());
+        QCOMPARE(panel.statistics().pathLength_m, recordedPath_m / 2.0);
+        QCOMPARE(panel.stepTable()->model()->rowCount(), static_cast<int>(live->steps.size()));
+        QVERIFY(!panel.statistics().armse.has_value());  // the recorded walk's reference is not the session's
+        QVERIFY(panel.findChild<QLabel*>("warningsTitle")->text().startsWith(QStringLiteral("2 ")));
+        QVERIFY(panel.findChild<QLabel*>("liveSource")->isVisibleTo(&panel));
+        QVERIFY(!change->isVisibleTo(&panel));  // a change of the recorded walk's parameters
+
+        panel.setResult(walk.result);  // the recorded walk re-estimated meanwhile: kept, not shown
+        QCOMPARE(panel.statistics().pathLength_m, recordedPath_m / 2.0);
+        panel.showRecorded();
+        QVERIFY(!panel.isShowingLive());
+        QCOMPARE(panel.statistics().pathLength_m, recordedPath_m);
+        QVERIFY(panel.statistics().armse.has_value());
+        QVERIFY(change->isVisibleTo(&panel));
+        QVERIFY(!panel.findChild<QLabel*>("liveSource")->isVisibleTo(&panel));
+    }
+
     void stepsWhoseStrideOverlapsAWarningAreMarked()
     {
         std::size_t markedStep = 0;

@@ -155,13 +155,24 @@ private slots:
         QVERIFY(dialog.bestLabel()->text().contains(QStringLiteral("%")));
         QVERIFY(outcome.bestScore <= outcome.baseScore);
 
-        // The criterion before -> after first, then a row per changed parameter.
+        // The criterion before -> after first, the path's length and end-to-start distance beside
+        // it (what the criterion does not show), then a row per changed parameter.
         QVERIFY2(outcome.best != poorStart(), "a search from a poor start should find better parameters");
         const QTableWidget* table = dialog.changesTable();
-        QVERIFY(table->rowCount() >= 2);
+        QVERIFY(table->rowCount() >= 4);
         QCOMPARE(table->item(0, 1)->text(), formatTuneScore(TuneCriterion::ClosedLoop, outcome.baseScore));
         QCOMPARE(table->item(0, 2)->text(), formatTuneScore(TuneCriterion::ClosedLoop, outcome.bestScore));
-        for (int row = 1; row < table->rowCount(); ++row) {
+        for (int row = 1; row <= 2; ++row)
+            for (int column = 1; column <= 2; ++column)
+                QVERIFY(table->item(row, column)->text().endsWith(QStringLiteral(" m")));
+        // A path much shorter or longer than before is pointed out (it shrinks the end-to-start distance too).
+        const auto metres = [table](int column) {
+            return QLocale().toDouble(table->item(1, column)->text().chopped(2));
+        };
+        QVERIFY(metres(1) > 0.0 && metres(2) > 0.0);
+        const bool lengthChanged = std::abs(metres(2) / metres(1) - 1.0) > 0.1;
+        QCOMPARE(dialog.findChild<QLabel*>(QStringLiteral("tuneWarning"))->isVisibleTo(&dialog), lengthChanged);
+        for (int row = 3; row < table->rowCount(); ++row) {
             const ParameterField* field = findParameterField(table->item(row, 0)->toolTip().toStdString());
             QVERIFY2(field, qPrintable(table->item(row, 0)->toolTip()));
             QVERIFY(parameterValue(poorStart(), *field) != parameterValue(outcome.best, *field));
@@ -236,6 +247,10 @@ private slots:
             QVERIFY(writeWalkCsv(dir.filePath(name), walk.recording.samples));
             walks << name;
         }
+        // One more walk whose length nobody knows: listed, but not scored by the length criterion.
+        const SimulatedWalk unknown = simulateWalk(closedRectanglePath(6.0, 4.0), mtiClassSensor(100.0, 5));
+        QVERIFY(writeWalkCsv(dir.filePath(QStringLiteral("walk5.csv")), unknown.recording.samples));
+        walks << QStringLiteral("walk5.csv");
         QFile broken(dir.filePath(QStringLiteral("broken.csv")));
         QVERIFY(broken.open(QIODevice::WriteOnly));
         broken.write("this is not,a recording\n1,2\n");
@@ -258,6 +273,7 @@ private slots:
         QVERIFY(!dialog.isCriterionAvailable(TuneCriterion::Reference));
         dialog.findChild<QCheckBox*>(QStringLiteral("tuneAllClosed"))->setChecked(true);
         QVERIFY(dialog.isCriterionAvailable(TuneCriterion::ClosedLoop));
+        QCOMPARE(dialog.criterion(), TuneCriterion::ClosedLoop);
         dialog.setCriterion(TuneCriterion::KnownLength);
 
         dialog.setEvaluations(16);
@@ -269,7 +285,8 @@ private slots:
         QCOMPARE(dialog.progressBar()->value(), 16);
         QVERIFY(dialog.bestLabel()->text().contains(formatTuneScore(TuneCriterion::KnownLength, outcome.bestScore)));
         const QTableWidget* table = dialog.recordingsTable();
-        QCOMPARE(table->rowCount(), 3);  // the two walks and their mean
+        QCOMPARE(table->rowCount(), 4);  // the three walks and the mean
+        QCOMPARE(outcome.basePerRecording.size(), std::size_t(2));  // the unscorable one was not run
         for (int row = 0; row < 2; ++row) {
             const auto r = static_cast<std::size_t>(row);
             QCOMPARE(table->item(row, 0)->text(), walks[row]);
@@ -277,7 +294,9 @@ private slots:
             QCOMPARE(table->item(row, 1)->text(), formatTuneScore(TuneCriterion::KnownLength, outcome.basePerRecording[r]));
             QCOMPARE(table->item(row, 2)->text(), formatTuneScore(TuneCriterion::KnownLength, outcome.bestPerRecording[r]));
         }
-        QCOMPARE(table->item(2, 2)->text(), formatTuneScore(TuneCriterion::KnownLength, outcome.bestScore));
+        QCOMPARE(table->item(2, 0)->text(), walks[2]);
+        QCOMPARE(table->item(2, 1)->text(), formatTuneScore(TuneCriterion::KnownLength, NAN));
+        QCOMPARE(table->item(3, 2)->text(), formatTuneScore(TuneCriterion::KnownLength, outcome.bestScore));
         QVERIFY(outcome.best != poorStart());
 
         // The preset holds the tuned values.

@@ -503,7 +503,7 @@ void TestXsensTextReader::errors_data()
     QTest::newRow("only blank lines") << QByteArray("\n\n  \n") << 0.0 << 0 << 0 << "the file is empty";
     QTest::newRow("metadata only") << rate + "// Filter Profile: human\n" << 0.0 << 0 << 0
                                    << "no column line after 2 metadata line(s)";
-    QTest::newRow("counter without any rate") << kImuHeader + imuRows({0, 1}) << 0.0 << 0 << 0 << "--rate";
+    QTest::newRow("counter without any rate") << kImuHeader + imuRows({0, 1}) << 0.0 << 0 << 0 << "give the sample rate";
     QTest::newRow("a line without end") << QByteArray(70000, 'x') << 0.0 << 1 << 0 << "longer than 64 KiB";
     QTest::newRow("binary bytes") << QByteArray("\xFA\xFF\x36\x10\x20\x02\x00\x01\xFA\xFF\x0D", 11) << 0.0 << 1 << 0
                                   << "missing column(s) Acc_X";

@@ -1,5 +1,7 @@
 #include "ComparisonTable.h"
 
+#include "PlotInteraction.h"
+
 #include <QCoreApplication>
 #include <QStringList>
 
@@ -14,11 +16,6 @@ QString tr(const char* text)
     return QCoreApplication::translate("footpath::ComparisonTable", text);
 }
 
-QString number(double value, int decimals)
-{
-    return std::isfinite(value) ? QString::number(value, 'f', decimals) : QStringLiteral("\u2013");
-}
-
 bool anyValue(const std::vector<ComparisonRow>& rows, double ComparisonRow::*member)
 {
     for (const ComparisonRow& row : rows)
@@ -31,7 +28,7 @@ bool anyValue(const std::vector<ComparisonRow>& rows, double ComparisonRow::*mem
 std::function<QString(const ComparisonRow&)> figure(double ComparisonRow::*member, int decimals)
 {
     return [member, decimals](const ComparisonRow& row) {
-        return comparisonRowProblem(row).isEmpty() ? number(row.*member, decimals) : QStringLiteral("\u2013");
+        return comparisonRowProblem(row).isEmpty() ? formatFigure(row.*member, decimals) : QStringLiteral("\u2013");
     };
 }
 

@@ -102,6 +102,17 @@ QString formatPlotNumber(double value, int decimals)
     return text;
 }
 
+QString formatFigure(double value, int decimals, const QLocale& locale)
+{
+    if (!std::isfinite(value))
+        return QStringLiteral("\u2013");
+    decimals = std::max(0, decimals);
+    const QString text = locale.toString(value, 'f', decimals);
+    // Whatever the locale's digits and signs: a text without a non-zero digit is a zero.
+    const bool roundsToZero = std::none_of(text.cbegin(), text.cend(), [](QChar c) { return c.isDigit() && c.digitValue() > 0; });
+    return roundsToZero ? locale.toString(0.0, 'f', decimals) : text;
+}
+
 int decimalsForSpan(double span)
 {
     if (!(span > 0.0) || !std::isfinite(span))
@@ -229,6 +240,7 @@ PlotInteraction::PlotInteraction(QCustomPlot* plot) : QObject(plot), plot_(plot)
     plot_->addLayer(kInteractionLayer, plot_->layer(plot_->layerCount() - 1), QCustomPlot::limAbove);
     plot_->layer(kInteractionLayer)->setMode(QCPLayer::lmBuffered);
     overlay_ = new Overlay(plot_, this);
+    useReadableTicks(plot_);  // every interactive plot: round ticks, no "-0"
     plot_->setMouseTracking(true);
     plot_->installEventFilter(this);
     if (QWidget* view = plot_->parentWidget())  // keys reach the view, which holds the focus

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QLocale>
 #include <QObject>
 #include <QPointF>
 #include <QString>
@@ -16,6 +17,10 @@ namespace footpath {
 
 /// value with this many decimals, never "-0.000": a value that rounds to zero is written "0.000".
 QString formatPlotNumber(double value, int decimals);
+/// A figure for a table (summary, step table, comparison, PDF report): value with this many
+/// decimals in locale's notation, never "-0.000" (a value that rounds to zero is written as zero),
+/// and a dash for a figure that does not exist (NaN, infinite).
+QString formatFigure(double value, int decimals, const QLocale& locale = QLocale::c());
 /// Decimals that give about four significant digits across a visible span (0 for spans of 1000+).
 int decimalsForSpan(double span);
 

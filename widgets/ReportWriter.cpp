@@ -2,6 +2,7 @@
 
 #include "ComparisonTable.h"
 #include "MotionLanes.h"
+#include "PlotInteraction.h"
 #include "SignalPlots.h"
 #include "StanceFlagsPlot.h"
 #include "SummaryPanel.h"
@@ -29,11 +30,6 @@ QString tr(const char* text)
 {
     // lupdate files these strings under the namespace's context.
     return QCoreApplication::translate("footpath", text);
-}
-
-QString number(double value, int decimals)
-{
-    return std::isfinite(value) ? QString::number(value, 'f', decimals) : QStringLiteral("–");
 }
 
 /// Lays text, tables and figures out down the pages of a QPdfWriter. Coordinates are in the
@@ -199,6 +195,7 @@ void drawScaled(QPainter& painter, const QRectF& target, int width, const std::f
 
 void drawPlot(QPainter& painter, QCustomPlot* plot, const QRectF& target, int width = 760)
 {
+    useReadableTicks(plot);  // 1-2-5 steps, no "-0": the report's plots read like the workspace's
     drawScaled(painter, target, width, [plot](QPainter& recorder, QSize size) {
         plot->toPainter(static_cast<QCPPainter*>(&recorder), size.width(), size.height());
     });
@@ -248,31 +245,31 @@ std::pair<QVector<double>, QVector<double>> histogramBars(const std::vector<doub
 QList<QStringList> summaryRows(const GaitStatistics& g, const Summary& s)
 {
     QList<QStringList> rows{{tr("Figure"), tr("Value")}};
-    rows << QStringList{tr("Path length (between stances)"), tr("%1 m").arg(number(g.pathLength_m, 2))}
+    rows << QStringList{tr("Path length (between stances)"), tr("%1 m").arg(formatFigure(g.pathLength_m, 2))}
          << QStringList{tr("Steps (strides of this foot)"), QString::number(s.steps)}
-         << QStringList{tr("Cadence, both feet"), tr("%1 steps/min").arg(number(g.cadence_stepsPerMin, 1))}
+         << QStringList{tr("Cadence, both feet"), tr("%1 steps/min").arg(formatFigure(g.cadence_stepsPerMin, 1))}
          << QStringList{tr("Mean stride length"),
-                        tr("%1 m (sd %2 m)").arg(number(g.meanStrideLength_m, 3), number(g.strideLengthStd_m, 3))}
-         << QStringList{tr("Mean stride duration"), tr("%1 s").arg(number(g.meanStrideDuration_s, 3))}
-         << QStringList{tr("Mean stance duration"), tr("%1 s").arg(number(g.meanStanceDuration_s, 3))}
+                        tr("%1 m (sd %2 m)").arg(formatFigure(g.meanStrideLength_m, 3), formatFigure(g.strideLengthStd_m, 3))}
+         << QStringList{tr("Mean stride duration"), tr("%1 s").arg(formatFigure(g.meanStrideDuration_s, 3))}
+         << QStringList{tr("Mean stance duration"), tr("%1 s").arg(formatFigure(g.meanStanceDuration_s, 3))}
          << QStringList{tr("End-to-start distance"),
-                        tr("%1 m = %2 % of the path").arg(number(s.endToStart_m, 3), number(s.endToStartPct, 2))};
+                        tr("%1 m = %2 % of the path").arg(formatFigure(s.endToStart_m, 3), formatFigure(s.endToStartPct, 2))};
     if (g.armse)
         rows << QStringList{tr("ARMSE 2D / 3D against the reference"),
-                            tr("%1 m / %2 m").arg(number(g.armse->armse2d_m, 3), number(g.armse->armse3d_m, 3))};
+                            tr("%1 m / %2 m").arg(formatFigure(g.armse->armse2d_m, 3), formatFigure(g.armse->armse3d_m, 3))};
     if (g.loopClosure)
-        rows << QStringList{tr("Loop closure (DBSE)"), tr("%1 m = %2 %").arg(number(g.loopClosure->dbse_m, 3),
-                                                                           number(g.loopClosure->dbsePct, 2))};
+        rows << QStringList{tr("Loop closure (DBSE)"), tr("%1 m = %2 %").arg(formatFigure(g.loopClosure->dbse_m, 3),
+                                                                           formatFigure(g.loopClosure->dbsePct, 2))};
     if (g.distanceError)
         rows << QStringList{tr("Distance error"),
-                            tr("%1 m = %2 % of %3 m").arg(number(g.distanceError->error_m, 3),
-                                                         number(g.distanceError->errorPct, 2),
-                                                         number(g.distanceError->reference_m, 2))};
+                            tr("%1 m = %2 % of %3 m").arg(formatFigure(g.distanceError->error_m, 3),
+                                                         formatFigure(g.distanceError->errorPct, 2),
+                                                         formatFigure(g.distanceError->reference_m, 2))};
     if (g.stanceScore)
         rows << QStringList{tr("Stance detection precision / recall / F1"),
-                            QStringLiteral("%1 / %2 / %3").arg(number(g.stanceScore->precision, 3),
-                                                               number(g.stanceScore->recall, 3),
-                                                               number(g.stanceScore->f1, 3))};
+                            QStringLiteral("%1 / %2 / %3").arg(formatFigure(g.stanceScore->precision, 3),
+                                                               formatFigure(g.stanceScore->recall, 3),
+                                                               formatFigure(g.stanceScore->f1, 3))};
     return rows;
 }
 
@@ -298,7 +295,7 @@ QList<QStringList> parameterRows(const Parameters& params)
         const QString bold = changed ? QStringLiteral("*") : QString();
         rows << QStringList{bold + (changed ? QStringLiteral("* ") : QString()) + QString::fromUtf8(field.name),
                             bold + text(value), text(standard),
-                            QString::fromUtf8(field.unit), QString::fromUtf8(field.description)};
+                            QString::fromStdString(displayUnit(field)), QString::fromUtf8(field.description)};
     }
     return rows;
 }
@@ -318,12 +315,12 @@ QList<QStringList> stepRows(const Result& result)
         rows.first() << MotionLanes::tr("Motion") << MotionLanes::tr("Baro height (m)");
     for (std::size_t i = 0; i < result.steps.size(); ++i) {
         const Step& s = result.steps[i];
-        rows << QStringList{QString::number(i + 1), number(s.stanceStart_s, 2), number(s.stanceEnd_s, 2),
-                            number(s.strideLength_m, 3), number(s.strideDuration_s, 3), number(s.position_m.x(), 3),
-                            number(s.position_m.y(), 3), number(s.position_m.z(), 3)};
+        rows << QStringList{QString::number(i + 1), formatFigure(s.stanceStart_s, 2), formatFigure(s.stanceEnd_s, 2),
+                            formatFigure(s.strideLength_m, 3), formatFigure(s.strideDuration_s, 3), formatFigure(s.position_m.x(), 3),
+                            formatFigure(s.position_m.y(), 3), formatFigure(s.position_m.z(), 3)};
         if (motion)
             rows.last() << (s.motion == MotionClass::Unknown ? QStringLiteral("–") : motionClassLabel(s.motion))
-                        << number(s.baroHeight_m, 2);
+                        << formatFigure(s.baroHeight_m, 2);
     }
     return rows;
 }
@@ -353,8 +350,8 @@ QList<QStringList> headerRows(const ReportContent& c)
     return {{tr("Recording"), QFileInfo(c.recordingPath).fileName()},
             {tr("Format"), QString::fromStdString(c.info.format)},
             {tr("Sensor / device"), c.device.isEmpty() ? tr("not stated in the file") : c.device},
-            {tr("Duration"), tr("%1 s, %2 samples").arg(number(recording.duration_s(), 1)).arg(recording.samples.size())},
-            {tr("Sample rate"), tr("%1 Hz").arg(number(c.info.rate_hz, 1))},
+            {tr("Duration"), tr("%1 s, %2 samples").arg(formatFigure(recording.duration_s(), 1)).arg(recording.samples.size())},
+            {tr("Sample rate"), tr("%1 Hz").arg(formatFigure(c.info.rate_hz, 1))},
             {tr("Parameters"), c.parameterSource},
             {tr("Method set"), methodSetName(c.parameters)},
             {tr("Report made"), QDateTime::currentDateTime().toString(Qt::ISODate)},
@@ -382,11 +379,11 @@ QString detectorFigureCaption(const Parameters& params, double from, double to)
         return tr("Figure 5. Stance detector C1/C2/C3 from %1 s to %2 s: conditions C1, C2, C3, their combination C, "
                   "the median-filtered stance, the std of |a| on a logarithmic axis, and the inputs with their "
                   "thresholds; plausibility warnings shaded red.")
-            .arg(number(from, 1), number(to, 1));
+            .arg(formatFigure(from, 1), formatFigure(to, 1));
     const ParameterField* detector = findParameterField("detector");
     return tr("Figure 5. Stance detector %3 from %1 s to %2 s: the condition C (statistic below threshold), the "
               "stance, and the statistic on a logarithmic axis with its threshold; plausibility warnings shaded red.")
-        .arg(number(from, 1), number(to, 1),
+        .arg(formatFigure(from, 1), formatFigure(to, 1),
              QString::fromUtf8(detector->choiceLabels.at(static_cast<std::size_t>(params.detector))));
 }
 

@@ -1,6 +1,7 @@
 #include "SummaryPanel.h"
 
 #include "MotionLanes.h"
+#include "PlotInteraction.h"
 #include "WarningOverlay.h"
 
 #include <QAbstractTableModel>
@@ -122,13 +123,10 @@ int decimalsFor(double step)
     return 9;
 }
 
+/// In the user's locale, never "-0.00", a dash where there is no figure.
 QString number(double value, int decimals)
 {
-    if (!std::isfinite(value))
-        return QStringLiteral("\u2013");
-    // -0.004 shown with two decimals would read "-0.00".
-    const bool roundsToZero = std::abs(value) < 0.5 * std::pow(10.0, -decimals);
-    return QLocale().toString(roundsToZero ? 0.0 : value, 'f', decimals);
+    return formatFigure(value, decimals, QLocale());
 }
 
 }  // namespace
@@ -411,9 +409,16 @@ QWidget* SummaryPanel::createFigures()
     referenceNotes_->setForegroundRole(QPalette::PlaceholderText);
     referenceGroup_->layout()->addWidget(referenceNotes_);
 
+    liveSource_ = new QLabel(tr("<b>Live session</b>: the figures of the estimate so far. The recorded walk's "
+                                "return when its views are shown again."));
+    liveSource_->setObjectName(QStringLiteral("liveSource"));
+    liveSource_->setWordWrap(true);
+    liveSource_->hide();
+
     auto* content = new QWidget;
     auto* layout = new QVBoxLayout(content);
     layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(liveSource_);
     layout->addWidget(createChangeGroup());
     layout->addWidget(createWarnings());
     layout->addWidget(createMotionAndNotes());
@@ -477,7 +482,8 @@ QColor judgementColour(Judgement judgement, const QPalette& palette)
 
 void SummaryPanel::showChange(const RunFigures* before, const RunFigures& after, const QString& change)
 {
-    changeGroup_->setVisible(before != nullptr);
+    changeShown_ = before != nullptr;
+    changeGroup_->setVisible(changeShown_ && !live_);  // a change of the recorded walk's parameters
     if (!before)
         return;
     changeText_->setText(change);
@@ -636,20 +642,52 @@ QChartView* SummaryPanel::createChartView(const QString& objectName)
 
 void SummaryPanel::setRecording(std::shared_ptr<const Recording> recording)
 {
-    recording_ = std::move(recording);
+    recordedRecording_ = std::move(recording);
+    if (live_)
+        return;  // kept for showRecorded()
+    recording_ = recordedRecording_;
     refresh();
 }
 
 void SummaryPanel::setResult(std::shared_ptr<const Result> result)
 {
-    result_ = std::move(result);
+    recordedResult_ = std::move(result);
+    if (live_)
+        return;
+    result_ = recordedResult_;
+    refresh();
+}
+
+void SummaryPanel::showLive(std::shared_ptr<const Result> live)
+{
+    live_ = true;
+    result_ = std::move(live);
+    recording_.reset();  // the recorded walk's reference is not this session's
+    liveSource_->show();
+    changeGroup_->hide();
+    refresh();
+}
+
+void SummaryPanel::showRecorded()
+{
+    if (!live_)
+        return;
+    live_ = false;
+    result_ = recordedResult_;
+    recording_ = recordedRecording_;
+    liveSource_->hide();
+    changeGroup_->setVisible(changeShown_);
     refresh();
 }
 
 void SummaryPanel::clear()
 {
-    recording_.reset();
-    result_.reset();
+    recordedRecording_.reset();
+    recordedResult_.reset();
+    if (!live_) {
+        recording_.reset();
+        result_.reset();
+    }
     refresh();
 }
 

@@ -96,8 +96,16 @@ public:
 
     /// The recording whose reference the figures are evaluated against; kept until replaced.
     void setRecording(std::shared_ptr<const Recording> recording);
-    /// null shows an empty panel.
+    /// The recorded walk's result; null shows an empty panel. While the live session is shown it
+    /// is kept for showRecorded().
     void setResult(std::shared_ptr<const Result> result);
+    /// Shows a live session's estimate so far (with its plausibility warnings) in place of the
+    /// recorded walk, under a line saying so; call again as the estimate grows.
+    void showLive(std::shared_ptr<const Result> live);
+    /// Back to the recorded walk (its result, reference figures and last change).
+    void showRecorded();
+    bool isShowingLive() const { return live_; }
+    /// Forgets the recorded walk (and shows nothing, unless the live session is shown).
     void clear();
 
     const GaitStatistics& statistics() const { return statistics_; }
@@ -143,11 +151,16 @@ private:
     void showHistogram(QChartView* view, const QString& title, const QString& xTitle, const Histogram& histogram);
     void labelHistogramEdges(QChartView* view);
 
-    std::shared_ptr<const Recording> recording_;
+    std::shared_ptr<const Recording> recording_;  ///< what is shown: null while live
     std::shared_ptr<const Result> result_;
+    std::shared_ptr<const Recording> recordedRecording_;  ///< the recorded walk's, kept while live
+    std::shared_ptr<const Result> recordedResult_;
+    bool live_ = false;
+    bool changeShown_ = false;  ///< the recorded walk has a last change to show
     GaitStatistics statistics_;
 
     std::map<QString, FigureRow> figures_;  ///< by key, e.g. "armse2d"
+    QLabel* liveSource_ = nullptr;  ///< "Live session: ..." while the live estimate is shown
     QGroupBox* changeGroup_ = nullptr;
     QLabel* changeText_ = nullptr;
     std::map<QString, FigureRow> changeFigures_;  ///< "pathLength", "endToStart", "armse2d", "steps"

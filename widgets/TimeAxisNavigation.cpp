@@ -60,17 +60,17 @@ void wrapLegendToWidth(QCPLegend* legend, int available)
         std::vector<int> columnWidths(static_cast<std::size_t>(perRow), 0);
         for (std::size_t i = 0; i < itemWidths.size(); ++i)
             columnWidths[i % columnWidths.size()] = std::max(columnWidths[i % columnWidths.size()], itemWidths[i]);
-        // A pixel per column to spare: the grid rounds each column's share of the width, and an item
-        // a pixel short of its text clips the last letter ("Foot patl").
+        // The spacing before the trailing packing column counts too, and a pixel per column to
+        // spare for the grid's rounding: an item short of its text clips the last letter ("Foot patl").
         const int needed = std::accumulate(columnWidths.cbegin(), columnWidths.cend(), 0)
-                           + (perRow - 1) * legend->columnSpacing() + perRow;
+                           + perRow * legend->columnSpacing() + perRow;
         if (needed <= available)
             break;
     }
     legend->setWrap(std::max(1, perRow));
     legend->setFillOrder(QCPLegend::foColumnsFirst, true);
-    // Pack the items to the left: a trailing empty column takes the spare width (the next
-    // rearrangement simplifies it away again).
+    legend->simplify();  // drops the last call's packing column: one, with its spacing, is counted
+    // Pack the items to the left: a trailing empty column takes the spare width.
     legend->insertColumn(legend->columnCount());
     legend->setColumnStretchFactor(legend->columnCount() - 1, 1000.0);
 }

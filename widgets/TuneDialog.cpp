@@ -31,6 +31,10 @@ namespace footpath {
 
 namespace {
 
+/// A tuned path this much longer or shorter than the current one is pointed out: the end-to-start
+/// distance and the ARMSE shrink with the path itself.
+constexpr double kSuspectLengthChange = 0.1;
+
 constexpr TuneCriterion kCriteria[] = {TuneCriterion::ClosedLoop, TuneCriterion::KnownLength, TuneCriterion::Reference};
 
 std::size_t indexOf(TuneCriterion criterion)
@@ -60,9 +64,9 @@ QString fieldLabel(const ParameterField& field)
 }
 
 void addChangeRow(QTableWidget* table, const QString& name, const QString& before, const QString& after,
-                  const QString& toolTip)
+                  const QString& toolTip, int row = -1)
 {
-    const int row = table->rowCount();
+    row = row < 0 ? table->rowCount() : row;
     table->insertRow(row);
     auto* nameItem = new QTableWidgetItem(name);
     nameItem->setToolTip(toolTip);
@@ -318,6 +322,11 @@ QWidget* TuneDialog::createResultArea()
     message_ = new QLabel(this);
     message_->setObjectName(QStringLiteral("tuneMessage"));
     message_->setWordWrap(true);
+    warning_ = new QLabel(this);
+    warning_->setObjectName(QStringLiteral("tuneWarning"));
+    warning_->setWordWrap(true);
+    warning_->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold;"));
+    warning_->hide();
 
     view_ = new TrajectoryView2D(this);
     view_->setObjectName(QStringLiteral("tunePath"));
@@ -345,6 +354,7 @@ QWidget* TuneDialog::createResultArea()
     progressRow->addWidget(best_);
     layout->addLayout(progressRow);
     layout->addWidget(message_);
+    layout->addWidget(warning_);
     layout->addWidget(splitter, 1);
     return area;
 }
@@ -443,6 +453,10 @@ void TuneDialog::start()
     progress_->setRange(0, options.evaluations);
     progress_->setValue(0);
     best_->clear();
+    warning_->hide();
+    view_->setOverlays({});  // a previous run's paths give way to the current one
+    if (session_.result())
+        view_->setResult(session_.result());
     message_->setText(tr("Trying the current parameters, then a spread over the whole range..."));
     changes_->setRowCount(0);
     setStage(true, false);
@@ -475,6 +489,8 @@ void TuneDialog::onFinished()
 {
     showOutcome(job_->result());
     setStage(false, true);
+    if (warning_->isVisibleTo(this))  // Enter should not take a suspect result
+        rejectButton_->setDefault(true);
     emit tuningFinished();
 }
 
@@ -495,14 +511,39 @@ void TuneDialog::showOutcome(const TuneJobResult& result)
     message_->setText(changed == 0 ? how + QLatin1Char(' ') + tr("No better parameters were found; the current ones stay.")
                                    : how + QLatin1Char(' ') + tr("The path with the tuned parameters, over the current one "
                                                                  "(orange). Use them, or keep the current ones."));
-    if (result.after && !result.after->position_m.empty()) {
-        view_->setResult(result.after);
-        const std::shared_ptr<const Recording> recording = session_.recording();
-        if (recording && !recording->reference.positions_m.empty())
-            view_->setReference(alignReferenceToEstimate(recording->reference.positions_m, result.after->position_m));
-        if (changed > 0 && result.before)
-            view_->setOverlays({{tr("Current parameters"), QColor(230, 120, 0), result.before->position_m}});
+    if (changed > 0 && result.before && result.after) {
+        showPathFigures(result.before->summary, result.after->summary);
+        showPaths(result.before, result.after);
     }
+}
+
+void TuneDialog::showPathFigures(const Summary& before, const Summary& after)
+{
+    // What the criterion does not say: a path that shrank also ends nearer its start.
+    const auto metres = [](double value) { return tr("%1 m").arg(QLocale().toString(value, 'f', 2)); };
+    addChangeRow(changes_, tr("Path length"), metres(before.pathLength_m), metres(after.pathLength_m),
+                 tr("The estimated path's length, for comparison"), 1);
+    addChangeRow(changes_, tr("End to start"), metres(before.endToStart_m), metres(after.endToStart_m),
+                 tr("The distance from the path's end to its start, for comparison"), 2);
+    changes_->resizeColumnsToContents();
+    const double lengthChange = after.pathLength_m / before.pathLength_m - 1.0;
+    const QString percent = QLocale().toString(std::abs(lengthChange) * 100.0, 'f', 0);
+    warning_->setText(lengthChange < 0.0 ? tr("Beware: the tuned path is %1 % shorter than the current one; a smaller "
+                                              "error may come from a path that shrank rather than from a better one.")
+                                               .arg(percent)
+                                         : tr("Beware: the tuned path is %1 % longer than the current one.").arg(percent));
+    warning_->setVisible(runCriterion_ != TuneCriterion::KnownLength && std::abs(lengthChange) > kSuspectLengthChange);
+}
+
+void TuneDialog::showPaths(const std::shared_ptr<const Result>& before, const std::shared_ptr<const Result>& after)
+{
+    if (after->position_m.empty())
+        return;
+    view_->setResult(after);
+    const std::shared_ptr<const Recording> recording = session_.recording();
+    if (recording && !recording->reference.positions_m.empty())
+        view_->setReference(alignReferenceToEstimate(recording->reference.positions_m, after->position_m));
+    view_->setOverlays({{tr("Current parameters"), QColor(230, 120, 0), before->position_m}});
 }
 
 void TuneDialog::setStage(bool running, bool done)

@@ -137,6 +137,9 @@ private:
     void showProgress(int evaluations, int budget, double bestScore);
     void onFinished();
     void showOutcome(const TuneJobResult& result);
+    /// The path's length and end-to-start distance before and after, and a warning when it changed much.
+    void showPathFigures(const Summary& before, const Summary& after);
+    void showPaths(const std::shared_ptr<const Result>& before, const std::shared_ptr<const Result>& after);
     void setStage(bool running, bool done);
 
     AnalysisSession& session_;
@@ -149,6 +152,7 @@ private:
     QProgressBar* progress_;
     QLabel* best_;
     QLabel* message_;
+    QLabel* warning_;  ///< a tuned path much longer or shorter than the current one
     TrajectoryView2D* view_;
     QTableWidget* changes_;
     QPushButton* startButton_ = nullptr;

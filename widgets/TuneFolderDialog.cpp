@@ -57,6 +57,20 @@ ImportResult readRecording(const QString& path, const std::optional<ImportPreset
     return guessed.ok() ? guessed : read;
 }
 
+/// What the criterion needs (as tuneScore asks for it): recordings without it are not run at all.
+bool canBeScored(const Recording& recording, TuneCriterion criterion)
+{
+    switch (criterion) {
+    case TuneCriterion::ClosedLoop:
+        return recording.reference.closedLoop;
+    case TuneCriterion::KnownLength:
+        return recording.reference.knownLength_m > 0.0;
+    case TuneCriterion::Reference:
+        return recording.reference.positions_m.size() == recording.samples.size();
+    }
+    return false;
+}
+
 }  // namespace
 
 FolderRecordings readFolderRecordings(const QString& folder, const std::optional<ImportPreset>& preset,
@@ -131,7 +145,11 @@ QWidget* TuneFolderDialog::createSettings()
     allClosed_ = new QCheckBox(tr("Every walk ends where it started"), this);
     allClosed_->setObjectName(QStringLiteral("tuneAllClosed"));
     allClosed_->setToolTip(tr("Score every recording by its end-to-start distance, also those not marked closed"));
-    connect(allClosed_, &QCheckBox::toggled, this, &TuneFolderDialog::updateCriteria);
+    connect(allClosed_, &QCheckBox::toggled, this, [this](bool closed) {
+        updateCriteria();
+        if (closed)  // said so to use it
+            setCriterion(TuneCriterion::ClosedLoop);
+    });
 
     auto* folderRow = new QHBoxLayout;
     folderRow->addWidget(new QLabel(tr("Folder:"), this));
@@ -288,7 +306,7 @@ bool TuneFolderDialog::isReading() const
 
 void TuneFolderDialog::onFolderRead()
 {
-    if (cancelRead_ && cancelRead_->load())
+    if ((cancelRead_ && cancelRead_->load()) || !reader_.isFinished())
         return;  // a newer folder (or the dialog closing) superseded this read
     contents_ = reader_.result();
     listRecordings();
@@ -360,23 +378,35 @@ const TuneOutcome& TuneFolderDialog::outcome() const
     return job_->result().outcome;
 }
 
-std::vector<std::shared_ptr<const Recording>> TuneFolderDialog::recordingsToTune() const
+std::vector<std::shared_ptr<const Recording>> TuneFolderDialog::recordingsToTune()
 {
-    if (!allClosed_->isChecked() || criterion() != TuneCriterion::ClosedLoop)
-        return contents_.recordings;
-    std::vector<std::shared_ptr<const Recording>> closed;
-    for (const std::shared_ptr<const Recording>& recording : contents_.recordings) {
-        auto copy = std::make_shared<Recording>(*recording);
-        copy->reference.closedLoop = true;
-        closed.push_back(std::move(copy));
+    const bool markClosed = allClosed_->isChecked() && criterion() == TuneCriterion::ClosedLoop;
+    std::vector<std::shared_ptr<const Recording>> tuned;
+    tunedRows_.clear();
+    for (std::size_t i = 0; i < contents_.recordings.size(); ++i) {
+        std::shared_ptr<const Recording> recording = contents_.recordings[i];
+        if (markClosed && !recording->reference.closedLoop) {
+            auto copy = std::make_shared<Recording>(*recording);
+            copy->reference.closedLoop = true;
+            recording = std::move(copy);
+        }
+        if (!canBeScored(*recording, criterion()))
+            continue;
+        tuned.push_back(std::move(recording));
+        tunedRows_.push_back(static_cast<int>(i));
     }
-    return closed;
+    return tuned;
 }
 
 void TuneFolderDialog::start()
 {
     if (isRunning() || isReading() || contents_.recordings.empty() || !isCriterionAvailable(criterion()))
         return;
+    std::vector<std::shared_ptr<const Recording>> recordings = recordingsToTune();
+    if (recordings.empty()) {
+        message_->setText(tr("None of the recordings has what this criterion needs."));
+        return;
+    }
     base_ = session_.parameters();
     runCriterion_ = criterion();
     TuneOptions options;
@@ -387,9 +417,10 @@ void TuneFolderDialog::start()
     best_->clear();
     changes_->setRowCount(0);
     listRecordings();
-    message_->setText(tr("Trying the current parameters, then a spread over the whole range..."));
+    message_->setText(tr("Tuning on %n recording(s): the current parameters, then a spread over the whole range...",
+                         nullptr, static_cast<int>(recordings.size())));
     setStage(true, false);
-    job_->start(recordingsToTune(), base_, options, false);
+    job_->start(std::move(recordings), base_, options, false);
 }
 
 void TuneFolderDialog::stop()
@@ -446,9 +477,14 @@ void TuneFolderDialog::showScores(const TuneOutcome& outcome)
         return item;
     };
     for (int row = 0; row < recordingsTable_->rowCount(); ++row) {
-        const auto r = static_cast<std::size_t>(row);
-        recordingsTable_->setItem(row, 1, cell(r < outcome.basePerRecording.size() ? outcome.basePerRecording[r] : NAN));
-        recordingsTable_->setItem(row, 2, cell(r < outcome.bestPerRecording.size() ? outcome.bestPerRecording[r] : NAN));
+        recordingsTable_->setItem(row, 1, cell(NAN));
+        recordingsTable_->setItem(row, 2, cell(NAN));
+    }
+    for (std::size_t t = 0; t < tunedRows_.size(); ++t) {
+        if (t < outcome.basePerRecording.size())
+            recordingsTable_->setItem(tunedRows_[t], 1, cell(outcome.basePerRecording[t]));
+        if (t < outcome.bestPerRecording.size())
+            recordingsTable_->setItem(tunedRows_[t], 2, cell(outcome.bestPerRecording[t]));
     }
     const int mean = recordingsTable_->rowCount();
     recordingsTable_->insertRow(mean);

@@ -89,7 +89,8 @@ private:
     void onFolderRead();
     void listRecordings();
     void updateCriteria();
-    std::vector<std::shared_ptr<const Recording>> recordingsToTune() const;
+    /// The recordings the chosen criterion can score (the others are not run); notes their rows.
+    std::vector<std::shared_ptr<const Recording>> recordingsToTune();
     void showProgress(int evaluations, int budget, double bestScore);
     void onFinished();
     void showScores(const TuneOutcome& outcome);
@@ -105,6 +106,7 @@ private:
     std::shared_ptr<std::atomic<bool>> cancelRead_;
     TuneJob* job_;
     TuneCriterion runCriterion_ = TuneCriterion::ClosedLoop;
+    std::vector<int> tunedRows_;  ///< the table row of each recording tuned on, in the run's order
 
     QLineEdit* folderEdit_ = nullptr;
     QComboBox* importPreset_ = nullptr;

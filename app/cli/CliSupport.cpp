@@ -81,18 +81,39 @@ ImportOptions importOptionsOf(const CommandLine& cmd)
     return options;
 }
 
+std::string withFlagHints(std::string message)
+{
+    // The phrases of core/io's messages (tst_cli_import checks that they still meet).
+    static const std::pair<const char*, const char*> hints[] = {
+        {"give the column map", "--columns"},
+        {"set the accelerometer unit", "--acc-unit mps2|g"},
+        {"check the accelerometer unit", "--acc-unit"},
+        {"set the gyroscope unit to rad/s", "--gyr-unit radps"},
+        {"check the gyroscope unit", "--gyr-unit"},
+        {"set the time unit", "--time-unit s|ms|us"},
+        {"give the sample rate", "--rate HZ"},
+        {"with the sample rate given", "--rate HZ"},
+    };
+    for (const auto& [phrase, flag] : hints) {
+        const std::size_t at = message.find(phrase);
+        if (at != std::string::npos)
+            message.insert(at + std::char_traits<char>::length(phrase), std::string(" (") + flag + ")");
+    }
+    return message;
+}
+
 ImportResult importFile(const std::string& path, const ImportOptions& options)
 {
     ImportResult read = importRecording(path, options);
     if (!read.ok())
-        throw BadInput{read.error->text()};
+        throw BadInput{withFlagHints(read.error->text())};
     return read;
 }
 
 void printImportWarnings(const std::string& path, const std::vector<std::string>& warnings)
 {
     for (const std::string& warning : warnings)
-        std::cerr << "warning: " << path << ": " << warning << "\n";
+        std::cerr << "warning: " << path << ": " << withFlagHints(warning) << "\n";
 }
 
 ImportResult importInput(const CommandLine& cmd, bool echoWarnings)

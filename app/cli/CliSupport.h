@@ -27,6 +27,10 @@ ImportOptions importOptionsOf(const CommandLine& cmd);
 ImportResult importFile(const std::string& path, const ImportOptions& options);
 /// Stores options under --save-import-preset when it is given.
 void saveImportPresetIfAsked(const CommandLine& cmd, const ImportOptions& options);
+/// An import message with the option that does what it asks: the readers' messages say what to set
+/// ("give the sample rate") without naming flags, which the GUI does not have; here they get one
+/// ("give the sample rate (--rate HZ)").
+std::string withFlagHints(std::string message);
 /// "warning: PATH: text" on stderr for each import warning.
 void printImportWarnings(const std::string& path, const std::vector<std::string>& warnings);
 /// Reads INPUT with the import options (and a preset); saves the preset when asked; prints the

@@ -82,7 +82,7 @@ void printInfoTable(const ImportResult& read)
     for (const std::string& note : recording.reference.notes)
         std::printf("reference   %s\n", note.c_str());
     for (const std::string& warning : recording.warnings)
-        std::printf("warning     %s\n", warning.c_str());
+        std::printf("warning     %s\n", withFlagHints(warning).c_str());
 }
 
 EvalSetup evalSetupOf(const CommandLine& cmd)

@@ -43,9 +43,9 @@ const std::vector<Column>& columns()
         {"stance_precision", "precision", "stance precision", 3, "gait events", Worst::Smallest},
         {"stance_recall", "recall", "stance recall", 3, "gait events", Worst::Smallest},
         {"stance_f1", "F1", "stance F1", 3, "gait events", Worst::Smallest},
-        {"gait_stance_f1", "gait F1", "gait stance F1 (heel strike to toe off)", 3, "gait events", Worst::Smallest},
-        {"heel_strike_error_ms", "HS ms", "heel strike median timing error (ms)", 1, "gait events", Worst::Largest},
-        {"toe_off_error_ms", "TO ms", "toe off median timing error (ms)", 1, "gait events", Worst::Largest},
+        {"gait_stance_f1", "gait F1", "gait stance F1", 3, "gait events", Worst::Smallest},
+        {"heel_strike_error_ms", "HS ms", "heel strike error (ms, median)", 1, "gait events", Worst::Largest},
+        {"toe_off_error_ms", "TO ms", "toe off error (ms, median)", 1, "gait events", Worst::Largest},
         {"steps", "steps", "steps", 0, nullptr, Worst::Largest},
         {"warning_count", "warnings", "plausibility warnings", 0, "plausibility checks", Worst::Largest},
     };

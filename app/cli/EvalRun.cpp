@@ -67,11 +67,11 @@ void addStanceMetrics(std::vector<Metric>& metrics, const Recording& recording, 
                        static_cast<double>(stance.stepCountError), true});
     const StanceScore gaitStance =
         scoreStanceDetection(result.gaitStance, r.swings, r.hasTrialBoundaries ? &r.trialBoundaries : nullptr);
-    metrics.push_back({"gait_stance_f1", "gait stance F1 (heel strike to toe off)", gaitStance.f1});
+    metrics.push_back({"gait_stance_f1", "gait stance F1", gaitStance.f1});
     const GaitEventTiming timing = scoreGaitEventTiming(result, r);
-    metrics.push_back({"heel_strike_error_ms", "heel strike median timing error (ms)",
+    metrics.push_back({"heel_strike_error_ms", "heel strike error (ms, median)",
                        1000.0 * timing.heelStrike.medianError_s});
-    metrics.push_back({"toe_off_error_ms", "toe off median timing error (ms)", 1000.0 * timing.toeOff.medianError_s});
+    metrics.push_back({"toe_off_error_ms", "toe off error (ms, median)", 1000.0 * timing.toeOff.medianError_s});
 }
 
 /// Every metric the recording's reference allows, in the order of the single-file table.

@@ -4,6 +4,11 @@
 #include "PortDiscovery.h"
 #include "ReconnectOffer.h"
 #include "Recorder.h"
+#include "SignalPlots.h"
+#include "StanceFlagsPlot.h"
+#include "SummaryPanel.h"
+#include "TrajectoryView2D.h"
+#include "TrajectoryView3D.h"
 #include "WarningOverlay.h"
 #include "nav/Plausibility.h"
 #include "nav/StreamingEstimator.h"
@@ -299,6 +304,39 @@ void LivePanel::moveViewsInto(QTabWidget* trajectoryTabs, QTabWidget* signalTabs
     moveTabs(views_->signalTabs(), signalTabs);
     viewArea_->hide();
     contentLayout_->addStretch(1);
+    workspaceTabs_ = {trajectoryTabs, signalTabs};
+    for (QTabWidget* tabs : workspaceTabs_)
+        connect(tabs, &QTabWidget::currentChanged, this, &LivePanel::showSummarySource);
+}
+
+void LivePanel::linkSummary(SummaryPanel* summary)
+{
+    summary_ = summary;
+    connect(this, &LivePanel::trajectoryUpdated, this, &LivePanel::showSummarySource);
+    showSummarySource();
+}
+
+bool LivePanel::liveViewShown() const
+{
+    const QWidget* liveViews[] = {views_->trajectory2D(), views_->trajectory3D(), views_->signalPlots(),
+                                  views_->stanceFlags()};
+    for (const QTabWidget* tabs : workspaceTabs_) {
+        const QWidget* current = tabs ? tabs->currentWidget() : nullptr;
+        for (const QWidget* view : liveViews)
+            if (current != nullptr && (current == view || current->isAncestorOf(view)))
+                return true;
+    }
+    return false;
+}
+
+void LivePanel::showSummarySource()
+{
+    if (summary_ == nullptr)
+        return;
+    if (liveViewShown())
+        summary_->showLive(lastResult_);
+    else
+        summary_->showRecorded();
 }
 
 void LivePanel::wireSession()
@@ -664,7 +702,7 @@ void LivePanel::refreshViews(bool force)
         return;
     viewsDirty_ = false;
     views_->showSignals(received_, estimator_->result());
-    if (std::shared_ptr<const Result> path = views_->showPath(estimator_->result(), force)) {
+    if (std::shared_ptr<const Result> path = views_->showPath(estimator_->result(), currentWarnings(), force)) {
         lastResult_ = std::move(path);
         emit trajectoryUpdated();
     }
@@ -689,7 +727,15 @@ void LivePanel::showEstimateFigures()
     showLiveSummary();
 }
 
-/// The live session's own figures (the workspace's summary is of the recorded walk).
+std::vector<PlausibilityWarning> LivePanel::currentWarnings() const
+{
+    // While streaming the checks run on the estimate so far; at the end the estimator has them.
+    const Result& result = estimator_->result();
+    return session_->state() == SessionState::Idle || result.time_s.empty() ? result.warnings
+                                                                            : checkPlausibility(result, params_);
+}
+
+/// The live session's own figures in the panel and over the live path.
 void LivePanel::showLiveSummary()
 {
     const Result& result = estimator_->result();
@@ -698,9 +744,7 @@ void LivePanel::showLiveSummary()
     distance_->setText(tr("%1 m").arg(summary.pathLength_m, 0, 'f', 2));
     duration_->setText(tr("%1 s").arg(received_.back().imu.time_s - received_.front().imu.time_s, 0, 'f', 1));
     endToStart_->setText(result.time_s.empty() ? QStringLiteral("-") : tr("%1 m").arg(summary.endToStart_m, 0, 'f', 2));
-    // While streaming the checks run on the estimate so far; at the end the estimator has them.
-    const std::vector<PlausibilityWarning> warnings =
-        session_->state() == SessionState::Idle || result.time_s.empty() ? result.warnings : checkPlausibility(result, params_);
+    const std::vector<PlausibilityWarning> warnings = currentWarnings();
     QStringList kinds;
     for (const PlausibilityWarning& warning : warnings)
         if (!kinds.contains(warningLabel(warning.kind)))

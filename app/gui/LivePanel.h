@@ -6,6 +6,7 @@
 
 #include <QWidget>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -22,6 +23,7 @@ class QVBoxLayout;
 namespace footpath {
 
 class LiveViews;
+class SummaryPanel;
 class ReconnectOffer;
 class StreamingEstimator;
 
@@ -48,6 +50,10 @@ public:
     void setParameters(const Parameters& params);
     /// Moves the live views out of the panel into the workspace's tab widgets.
     void moveViewsInto(QTabWidget* trajectoryTabs, QTabWidget* signalTabs);
+    /// While a live view is the current tab of the workspace (after moveViewsInto), `summary`
+    /// shows this session's figures as they grow; when the user goes back to the recorded walk's
+    /// views, the recorded walk's.
+    void linkSummary(SummaryPanel* summary);
 
     DeviceSession* session() const { return session_; }
     LiveViews* views() const { return views_; }
@@ -57,7 +63,8 @@ public:
     std::size_t sampleCount() const { return received_.size(); }
     /// The causal estimate so far (null before the first connection).
     const StreamingEstimator* estimator() const { return estimator_.get(); }
-    /// What the trajectory views show now (null until the first path was drawn).
+    /// What the trajectory views show now, with the plausibility warnings so far (null until the
+    /// first path was drawn).
     std::shared_ptr<const Result> lastResult() const { return lastResult_; }
     /// How far the estimate trails the newest sample: the detector's look-ahead.
     double latency_s() const;
@@ -104,6 +111,9 @@ private:
     void refreshViews(bool force = false);
     void showEstimateFigures();
     void showLiveSummary();
+    std::vector<PlausibilityWarning> currentWarnings() const;
+    bool liveViewShown() const;
+    void showSummarySource();
     void updateButtons();
 
     DeviceSession* session_;
@@ -134,6 +144,8 @@ private:
     QVBoxLayout* contentLayout_ = nullptr;
     QSplitter* viewArea_ = nullptr;
     LiveViews* views_ = nullptr;
+    std::array<QTabWidget*, 2> workspaceTabs_{};  ///< where moveViewsInto put the views
+    SummaryPanel* summary_ = nullptr;             ///< the workspace's, from linkSummary
     QTimer* viewTimer_ = nullptr;
 
     Parameters params_;

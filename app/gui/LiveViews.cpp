@@ -213,13 +213,16 @@ void LiveViews::showSignals(const std::vector<LiveSample>& samples, const Result
     flags_->setTimeRange(from_s, newest_s);
 }
 
-std::shared_ptr<const Result> LiveViews::showPath(const Result& estimate, bool force)
+std::shared_ptr<const Result> LiveViews::showPath(const Result& estimate, std::vector<PlausibilityWarning> warnings,
+                                                  bool force)
 {
     if (!force && sincePathUpdate_.elapsed() < kPathCostFactor * lastPathUpdateCost_ms_)
         return {};
     QElapsedTimer cost;
     cost.start();
-    auto path = std::make_shared<const Result>(pathOnly(estimate));
+    Result shown = pathOnly(estimate);
+    shown.warnings = std::move(warnings);
+    auto path = std::make_shared<const Result>(std::move(shown));
     trajectory2D_->followResult(path);
     trajectory3D_->followResult(path);
     lastPathUpdateCost_ms_ = cost.elapsed();

@@ -60,9 +60,11 @@ public:
     /// Shows the last kWindow_s of `samples` and of `estimate`.
     void showSignals(const std::vector<LiveSample>& samples, const Result& estimate);
     /// Shows the whole path of `estimate` in the trajectory views and returns the copy they
-    /// keep. Long walks make copying and drawing the path slow, so this skips (and returns
-    /// null) until five times the last update's duration has passed.
-    std::shared_ptr<const Result> showPath(const Result& estimate, bool force = false);
+    /// keep, carrying `warnings` (the plausibility checks of the estimate so far) for the summary.
+    /// Long walks make copying and drawing the path slow, so this skips (and returns null) until
+    /// five times the last update's duration has passed.
+    std::shared_ptr<const Result> showPath(const Result& estimate, std::vector<PlausibilityWarning> warnings,
+                                           bool force = false);
 
 private:
     TrajectoryView2D* trajectory2D_;

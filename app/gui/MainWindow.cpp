@@ -133,6 +133,7 @@ void MainWindow::createDocks()
     summary_ = new SummaryPanel(this);
     live_ = new LivePanel(this);
     live_->moveViewsInto(trajectoryTabs_, signalTabs_);
+    live_->linkSummary(summary_);  // the live session's figures while its views are in front
     connect(live_, &LivePanel::sessionStarted, this, [this] {
         trajectoryTabs_->setCurrentWidget(live_->views()->trajectory2D());
         signalTabs_->setCurrentWidget(live_->views()->signalPlots());

@@ -12,9 +12,10 @@ namespace footpath {
 
 namespace {
 
-/// A swing turns the foot faster than this about the sagittal axis (slow patients' swings peak
-/// near 3 rad/s, brisk walking at 6-8, while a foot shuffling in place stays under 1).
-constexpr double kMinSwingPeak_radps = 1.5;
+/// A swing turns the foot faster than this about the sagittal axis, averaged over kSmoothing_s
+/// (slow patients' swings peak near 3 rad/s, brisk walking at 6-8; a pivot in a U-turn may stay
+/// under it and is not counted).
+constexpr double kMinSwingPeak_radps = 1.0;
 /// ... and the estimated foot moves at least this fast at the swing's peak (mid-swing feet move
 /// at 2-5 m/s); a turn of the foot on the spot is no swing.
 constexpr double kMinSwingSpeed_mps = 0.3;
@@ -26,6 +27,12 @@ constexpr double kEventLevel = 0.5;
 /// The quiet part of a stance: |w| within this of the stance's quietest sample (foot-flat
 /// walking feet rest below 0.5 rad/s; a sensor that never rests still has a quietest stretch).
 constexpr double kQuietMargin_radps = 0.5;
+/// The window the angular rate is averaged over to find the sagittal axis and the swings' peaks
+/// (not the events, which need the sharp edges of the raw rate).
+constexpr double kSmoothing_s = 0.1;
+/// A swing lasts longer than this (0.3-0.5 s from a shuffle to a sprint); shorter ones are a heel
+/// strike's impact ringing through the gyro.
+constexpr double kMinSwing_s = 0.1;
 /// A stance longer than this is standing, not walking: the stride is marked paused.
 constexpr double kMaxWalkingStance_s = 2.0;
 
@@ -37,20 +44,39 @@ struct Swing {
 
 /// The part of the foot on the ground between two swings (or the start/end of the recording).
 struct Stance {
-    std::size_t first = 0, last = 0;          ///< the samples it spans
-    std::size_t quietFirst = 0, quietLast = 0; ///< foot flat and heel off
+    std::size_t quietFirst = 0, quietLast = 0;  ///< foot flat and heel off
     Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  ///< mean over the quiet part
     Eigen::Matrix3d bodyToNav = Eigen::Matrix3d::Identity();  ///< in the middle of the quiet part
 };
 
+/// The angular rate averaged over kSmoothing_s around each sample: a heel strike rings through the
+/// gyro for a few samples at up to 15 rad/s about any axis, and must neither tilt the axis nor
+/// pass for a swing.
+std::vector<Eigen::Vector3d> smoothedRates(const std::vector<ImuSample>& samples, const std::vector<double>& time_s)
+{
+    std::vector<Eigen::Vector3d> smoothed;
+    smoothed.reserve(samples.size());
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    std::size_t first = 0, end = 0;  // the window [first, end)
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        for (; end < samples.size() && time_s[end] <= time_s[k] + 0.5 * kSmoothing_s; ++end)
+            sum += samples[end].gyr_radps;
+        for (; time_s[first] < time_s[k] - 0.5 * kSmoothing_s; ++first)
+            sum -= samples[first].gyr_radps;
+        smoothed.push_back(sum / static_cast<double>(end - first));
+    }
+    return smoothed;
+}
+
 /// The principal axis of the angular rate, signed so that the rotation about it is positive
 /// while the estimated foot moves forwards through mid-swing (speed weights the swing over
 /// push-off and foot slap, whose rotation is the other way).
-Eigen::Vector3d sagittalAxis(const std::vector<ImuSample>& samples, const Result& result)
+Eigen::Vector3d sagittalAxis(const std::vector<ImuSample>& samples, const std::vector<Eigen::Vector3d>& smoothed,
+                             const Result& result)
 {
     Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-    for (const ImuSample& sample : samples)
-        scatter += sample.gyr_radps * sample.gyr_radps.transpose();
+    for (const Eigen::Vector3d& rate : smoothed)
+        scatter += rate * rate.transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
     Eigen::Vector3d axis = solver.eigenvectors().col(2);  // eigenvalues ascending
     // Toe rising while moving forwards is a positive turn about the axis to the right of the
@@ -65,12 +91,12 @@ Eigen::Vector3d sagittalAxis(const std::vector<ImuSample>& samples, const Result
     return agreement >= 0.0 ? axis : Eigen::Vector3d(-axis);
 }
 
-std::vector<double> projectedRate(const std::vector<ImuSample>& samples, const Eigen::Vector3d& axis)
+std::vector<double> projected(const std::vector<Eigen::Vector3d>& rates, const Eigen::Vector3d& axis)
 {
     std::vector<double> rate;
-    rate.reserve(samples.size());
-    for (const ImuSample& sample : samples)
-        rate.push_back(sample.gyr_radps.dot(axis));
+    rate.reserve(rates.size());
+    for (const Eigen::Vector3d& w : rates)
+        rate.push_back(w.dot(axis));
     return rate;
 }
 
@@ -80,8 +106,8 @@ std::size_t indexAtOrAfter(const std::vector<double>& time_s, double t)
     return static_cast<std::size_t>(std::lower_bound(time_s.begin(), time_s.end(), t) - time_s.begin());
 }
 
-/// Local maxima above kMinSwingPeak_radps where the foot moves; of peaks that the rate does not
-/// leave the positive side between, only the highest (one swing, one peak).
+/// Local maxima of the smoothed rate above kMinSwingPeak_radps where the foot moves; of peaks that
+/// the rate does not leave the positive side between, only the highest (one swing, one peak).
 std::vector<std::size_t> swingPeaks(const std::vector<double>& rate, const Result& result)
 {
     std::vector<std::size_t> peaks;
@@ -99,11 +125,14 @@ std::vector<std::size_t> swingPeaks(const std::vector<double>& rate, const Resul
     return peaks;
 }
 
-/// Where the rate crosses `level` between samples k and k + 1 (it must lie between their values).
+/// Where the rate crosses `level` between samples k and k + 1 (it must lie between their values),
+/// as a position among the samples' times. A reading is the mean rate over the interval before
+/// its time stamp (Xsens' delta-q, a decimating MEMS gyro; the strapdown assumes the same), so
+/// rate sample k belongs half an interval earlier, at k - 0.5.
 double crossing(const std::vector<double>& rate, std::size_t k, double level)
 {
     const double span = rate[k + 1] - rate[k];
-    return static_cast<double>(k) + (span == 0.0 ? 0.0 : (level - rate[k]) / span);
+    return static_cast<double>(k) + (span == 0.0 ? 0.0 : (level - rate[k]) / span) - 0.5;
 }
 
 /// Toe off before the swing peaking at `peak`, not before sample `earliest`.
@@ -121,7 +150,7 @@ std::optional<double> toeOffBefore(const std::vector<double>& rate, const std::v
         - rate.begin());
     const double level = kEventLevel * rate[minimum];
     std::size_t k = minimum;
-    while (rate[k + 1] < level)
+    while (k + 2 < rate.size() && rate[k + 1] < level)
         ++k;
     return crossing(rate, k, level);
 }
@@ -140,15 +169,25 @@ std::optional<double> heelStrikeAfter(const std::vector<double>& rate, const std
         std::min_element(rate.begin() + static_cast<long>(zero), rate.begin() + static_cast<long>(to) + 1)
         - rate.begin());
     const double level = kEventLevel * rate[minimum];
-    std::size_t k = minimum;
-    while (rate[k - 1] < level)
+    std::size_t k = std::max<std::size_t>(minimum, 1);
+    while (k > 1 && rate[k - 1] < level)
         --k;
     return crossing(rate, k - 1, level);
 }
 
-std::vector<Swing> findSwings(const std::vector<double>& rate, const Result& result)
+/// The time at a fractional sample position, interpolated.
+double fractionalTime(const std::vector<double>& time_s, double position)
 {
-    const std::vector<std::size_t> peaks = swingPeaks(rate, result);
+    const std::size_t below = std::min(time_s.size() - 1, static_cast<std::size_t>(std::floor(std::max(0.0, position))));
+    if (below + 1 >= time_s.size())
+        return time_s[below];
+    return time_s[below] + (position - static_cast<double>(below)) * (time_s[below + 1] - time_s[below]);
+}
+
+std::vector<Swing> findSwings(const std::vector<double>& rate, const std::vector<double>& smoothedRate,
+                              const Result& result)
+{
+    const std::vector<std::size_t> peaks = swingPeaks(smoothedRate, result);
     std::vector<Swing> swings;
     for (std::size_t i = 0; i < peaks.size(); ++i) {
         // A dip is searched only up to the neighbouring swings' peaks.
@@ -157,6 +196,8 @@ std::vector<Swing> findSwings(const std::vector<double>& rate, const Result& res
         const std::optional<double> toeOff = toeOffBefore(rate, result.time_s, peaks[i], earliest);
         const std::optional<double> heelStrike = heelStrikeAfter(rate, result.time_s, peaks[i], latest);
         if (!toeOff || !heelStrike)
+            continue;
+        if (fractionalTime(result.time_s, *heelStrike) - fractionalTime(result.time_s, *toeOff) < kMinSwing_s)
             continue;
         if (!swings.empty() && *toeOff <= swings.back().heelStrike)
             continue;  // overlaps the previous swing: a second peak of one swing
@@ -168,8 +209,6 @@ std::vector<Swing> findSwings(const std::vector<double>& rate, const Result& res
 Stance quietPart(const std::vector<ImuSample>& samples, const Result& result, std::size_t first, std::size_t last)
 {
     Stance stance;
-    stance.first = first;
-    stance.last = last;
     double quietest = samples[first].gyr_radps.norm();
     for (std::size_t k = first; k <= last; ++k)
         quietest = std::min(quietest, samples[k].gyr_radps.norm());
@@ -195,12 +234,7 @@ std::size_t nearestSample(double position, std::size_t sampleCount)
 
 GaitEvent eventAt(GaitEventKind kind, double position, const std::vector<double>& time_s)
 {
-    const std::size_t below = std::min(time_s.size() - 1, static_cast<std::size_t>(std::floor(position)));
-    const double fraction = position - static_cast<double>(below);
-    const double time = below + 1 < time_s.size()
-        ? time_s[below] + fraction * (time_s[below + 1] - time_s[below])
-        : time_s[below];
-    return {kind, nearestSample(position, time_s.size()), time};
+    return {kind, nearestSample(position, time_s.size()), fractionalTime(time_s, position)};
 }
 
 GaitEvent eventAtSample(GaitEventKind kind, std::size_t k, const std::vector<double>& time_s)
@@ -338,8 +372,13 @@ void detectGaitEvents(const Recording& recording, Result& result)
     result.gaitStance.assign(result.time_s.size(), 1);
     if (samples.size() < 3 || result.time_s.size() != samples.size() || result.velocity_mps.size() != samples.size())
         return;
-    const std::vector<double> rate = projectedRate(samples, sagittalAxis(samples, result));
-    const std::vector<Swing> swings = findSwings(rate, result);
+    std::vector<Eigen::Vector3d> rates;
+    rates.reserve(samples.size());
+    for (const ImuSample& sample : samples)
+        rates.push_back(sample.gyr_radps);
+    const std::vector<Eigen::Vector3d> smoothed = smoothedRates(samples, result.time_s);
+    const Eigen::Vector3d axis = sagittalAxis(samples, smoothed, result);
+    const std::vector<Swing> swings = findSwings(projected(rates, axis), projected(smoothed, axis), result);
     if (swings.empty())
         return;
     const std::vector<Stance> stances = stancesAround(swings, samples, result);

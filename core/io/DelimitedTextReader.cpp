@@ -244,7 +244,7 @@ bool TextParser::checkRequiredRoles()
     std::string missing;
     const int clocks = count(ColumnRole::Time) + count(ColumnRole::Counter);
     if (clocks == 0)
-        missing += " time (or a counter with --rate)";
+        missing += " time (or a counter, with the sample rate given)";
     else if (count(ColumnRole::Time) > 1 || count(ColumnRole::Counter) > 1)
         missing += " exactly one time column";
     const std::pair<ColumnRole, const char*> required[] = {
@@ -293,7 +293,7 @@ bool TextParser::resolveUnits()
         }
         if (m.role == ColumnRole::Counter && column.needed) {
             if (!(options_.rate_hz > 0.0))
-                return fail(0, "time comes from a counter column: the sample rate is needed (--rate HZ)");
+                return fail(0, "time comes from a counter column: give the sample rate");
             counterPeriod_s_ = 1.0 / options_.rate_hz;
             info.timeUnitAsRead = TimeUnit::Seconds;
             info.rate_hz = options_.rate_hz;

@@ -100,8 +100,8 @@ std::string detectFormat(const std::string& head, const ImportOptions& options, 
         return "pyshoe-vicon";
     if (!startsWithHeaderRow(head) && options.columnMap.empty()) {
         error = "no header row: the first line has " + std::to_string(columnCount(header))
-                + " numeric columns; say what they are with --columns (e.g. time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,"
-                  "gyr_z,...) or an import preset";
+                + " numeric columns; give the column map (what each column is, e.g. time_ms,acc_x,acc_y,acc_z,"
+                  "gyr_x,gyr_y,gyr_z,...) or an import preset";
         return {};
     }
     return "delimited";
@@ -132,12 +132,12 @@ void resolveAccUnit(ImportResult& r, const ImportOptions& options)
         if (unit == AccUnit::Unknown) {
             unit = AccUnit::MetresPerSecond2;
             r.recording.warnings.push_back("cannot tell the accelerometer unit (median |a| = " + formatNumber(median)
-                                           + "); assuming m/s^2 - pass --acc-unit mps2|g to say");
+                                           + "); assuming m/s^2 - set the accelerometer unit to say");
         }
     } else if (fromData != AccUnit::Unknown && fromData != unit) {
         r.recording.warnings.push_back(std::string("the accelerometer is read as ") + unitName(unit)
                                        + " but its median |a| of " + formatNumber(median) + " looks like "
-                                       + unitName(fromData) + " - check --acc-unit");
+                                       + unitName(fromData) + " - check the accelerometer unit");
     }
     r.info.accUnitAsRead = unit;
     if (unit == AccUnit::StandardGravity)
@@ -165,11 +165,11 @@ void resolveGyrUnit(ImportResult& r, const ImportOptions& options)
         unit = fromData == GyrUnit::Unknown ? GyrUnit::RadiansPerSecond : fromData;
         if (fromData == GyrUnit::DegreesPerSecond)
             r.recording.warnings.push_back("angular rates up to " + formatNumber(p99)
-                                           + " are read as deg/s (as rad/s they would be implausible); pass "
-                                             "--gyr-unit radps to override");
+                                           + " are read as deg/s (as rad/s they would be implausible); set the "
+                                             "gyroscope unit to rad/s to override");
     } else if (unit == GyrUnit::RadiansPerSecond && fromData == GyrUnit::DegreesPerSecond) {
         r.recording.warnings.push_back("the gyroscope is read as rad/s but rates up to " + formatNumber(p99)
-                                       + " look like deg/s - check --gyr-unit");
+                                       + " look like deg/s - check the gyroscope unit");
     }
     r.info.gyrUnitAsRead = unit;
     if (unit == GyrUnit::DegreesPerSecond)
@@ -202,7 +202,7 @@ void resolveTimeUnit(ImportResult& r, const ImportOptions& options)
                : step >= 100.0 && step < 1e5 ? TimeUnit::Microseconds
                                               : TimeUnit::Seconds;
         r.recording.warnings.push_back("time column without a unit: a median step of " + formatNumber(step)
-                                       + " is read as " + unitName(unit) + " - pass --time-unit s|ms|us to say");
+                                       + " is read as " + unitName(unit) + " - set the time unit to say");
     }
     const double scale = unit == TimeUnit::Milliseconds ? 1e-3 : unit == TimeUnit::Microseconds ? 1e-6 : 1.0;
     for (ImuSample& s : r.recording.samples)

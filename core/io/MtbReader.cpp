@@ -419,7 +419,7 @@ bool MtbParser::resolveRate()
     }
     if (rate > 0.0 || timeBase_ == TimeBase::SampleTimeFine)
         return true;
-    return fail("the data messages have no SampleTimeFine and the file states no rate: pass the rate with --rate");
+    return fail("the data messages have no SampleTimeFine and the file states no rate: give the sample rate");
 }
 
 /// The median step is the nominal period even when some packets are lost.

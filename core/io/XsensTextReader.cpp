@@ -633,8 +633,8 @@ bool XsensTextParser::resolveRate()
     }
     if (rate > 0.0 || layout_.has(Field::SampleTimeFine))
         return true;
-    return fail(0, 0, "the file has a PacketCounter but no SampleTimeFine and states no rate: pass the rate with "
-                      "--rate (the IPOL MTw exports use 100)");
+    return fail(0, 0, "the file has a PacketCounter but no SampleTimeFine and states no rate: give the sample "
+                      "rate; the IPOL MTw exports use 100 Hz");
 }
 
 /// The median step is the nominal period even when some packets are lost.

@@ -192,7 +192,7 @@ StanceScore scoreStanceDetection(const std::vector<std::uint8_t>& stance, const 
 }
 
 EventTimingScore scoreEventTiming(const std::vector<double>& detected_s, const std::vector<double>& reference_s,
-                                  double windowStart_s, double windowEnd_s)
+                                  double windowStart_s, double windowEnd_s, double missTolerance_s)
 {
     EventTimingScore score;
     std::vector<double> detected = detected_s;
@@ -202,8 +202,10 @@ EventTimingScore scoreEventTiming(const std::vector<double>& detected_s, const s
         if (reference < windowStart_s || reference > windowEnd_s)
             continue;
         ++score.referenceEvents;
-        if (detected.empty())
+        if (detected.empty()) {
+            ++score.missed;
             continue;
+        }
         const auto after = std::lower_bound(detected.begin(), detected.end(), reference);
         double nearest = std::numeric_limits<double>::infinity();
         if (after != detected.end())
@@ -211,6 +213,7 @@ EventTimingScore scoreEventTiming(const std::vector<double>& detected_s, const s
         if (after != detected.begin())
             nearest = std::min(nearest, reference - *(after - 1));
         errors.push_back(nearest);
+        score.missed += nearest > missTolerance_s;
     }
     if (errors.empty()) {
         score.medianError_s = score.meanError_s = score.maxError_s = kNaN;

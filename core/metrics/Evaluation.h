@@ -69,11 +69,12 @@ struct EventTimingScore {
     double medianError_s = 0.0;       ///< NaN when there is no reference or no detected event
     double meanError_s = 0.0;
     double maxError_s = 0.0;
+    std::size_t missed = 0;  ///< reference events with no detected one within missTolerance_s
 };
 /// detected_s and reference_s in any order; only reference events in [windowStart_s, windowEnd_s]
 /// count (detected events outside the window still count as nearest).
 EventTimingScore scoreEventTiming(const std::vector<double>& detected_s, const std::vector<double>& reference_s,
-                                  double windowStart_s, double windowEnd_s);
+                                  double windowStart_s, double windowEnd_s, double missTolerance_s = 0.15);
 
 /// Heel-strike and toe-off timing of result.gaitEvents against the labelled swings of reference
 /// (a swing's first sample is a toe off, its last a heel strike; times from result.time_s), over
