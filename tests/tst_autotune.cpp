@@ -100,6 +100,22 @@ private slots:
         QVERIFY(one.bestScore <= one.baseScore);
     }
 
+    void closedLoopTuningKeepsThePathLength()
+    {
+        // A shrunken path closes better without being better: closed-loop candidates may not
+        // change a walk's path length by more than 10 %.
+        TuneOptions options;
+        options.criterion = TuneCriterion::ClosedLoop;
+        options.evaluations = 40;
+        const TuneOutcome outcome = tuneParameters(pointers_, Parameters(), options);
+        QVERIFY(outcome.error.empty());
+        for (const Recording* walk : pointers_) {
+            const double before = runPipeline(*walk, Parameters()).result.summary.pathLength_m;
+            const double after = runPipeline(*walk, outcome.best).result.summary.pathLength_m;
+            QVERIFY2(std::abs(after - before) <= 0.1 * before, qPrintable(QString("%1 -> %2 m").arg(before).arg(after)));
+        }
+    }
+
     void rejectsSettingsThatAddWarnings()
     {
         // A threshold range that only holds settings which miss stances (long swings): nothing

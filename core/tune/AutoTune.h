@@ -67,7 +67,8 @@ struct TuneOutcome {
 /// base, then a spread of samples over the whole space, then a shrinking local search around the
 /// best (each generation evaluated in parallel). A candidate that raises a plausibility warning the
 /// base did not have on some recording is rejected however good its number: tuning must not trade
-/// a plausible path for a smaller figure. progress is called from the calling thread after each
+/// a plausible path for a smaller figure; so is, for the closed-loop criterion, one that changes a
+/// path's length by more than 10 % (a shrunken path closes better without being better). progress is called from the calling thread after each
 /// generation; cancel stops at the next one (the best so far is returned, cancelled set).
 TuneOutcome tuneParameters(const std::vector<const Recording*>& recordings, const Parameters& base,
                            const TuneOptions& options,
