@@ -101,6 +101,17 @@ QString formatTuneScore(TuneCriterion criterion, double score)
     return TuneDialog::tr("%1 %").arg(QLocale().toString(score, 'f', 2));
 }
 
+QTableWidget* makeTuneTable(const QStringList& headers, QWidget* parent)
+{
+    auto* table = new QTableWidget(0, static_cast<int>(headers.size()), parent);
+    table->setHorizontalHeaderLabels(headers);
+    table->verticalHeader()->hide();
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table->setSelectionMode(QAbstractItemView::NoSelection);
+    table->horizontalHeader()->setStretchLastSection(true);
+    return table;
+}
+
 int showTuneChanges(QTableWidget* table, const Parameters& before, const Parameters& after, TuneCriterion criterion,
                     double scoreBefore, double scoreAfter)
 {
@@ -333,13 +344,8 @@ QWidget* TuneDialog::createResultArea()
     view_->setMinimumSize(360, 260);
     if (session_.result())
         view_->setResult(session_.result());
-    changes_ = new QTableWidget(0, 3, this);
+    changes_ = makeTuneTable({tr("What changed"), tr("Before"), tr("After")}, this);
     changes_->setObjectName(QStringLiteral("tuneChanges"));
-    changes_->setHorizontalHeaderLabels({tr("What changed"), tr("Before"), tr("After")});
-    changes_->verticalHeader()->hide();
-    changes_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    changes_->setSelectionMode(QAbstractItemView::NoSelection);
-    changes_->horizontalHeader()->setStretchLastSection(true);
     auto* splitter = new QSplitter(Qt::Horizontal, this);
     splitter->addWidget(view_);
     splitter->addWidget(changes_);

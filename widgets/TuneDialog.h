@@ -32,6 +32,8 @@ class TrajectoryView2D;
 QString tuneCriterionText(TuneCriterion criterion);
 /// "2.31 %" or "0.412 m"; a dash for a recording the criterion could not score (NaN).
 QString formatTuneScore(TuneCriterion criterion, double score);
+/// A read-only table with these column headers, the last column stretched: the dialogs' result tables.
+QTableWidget* makeTuneTable(const QStringList& headers, QWidget* parent);
 /// Fills the table with one row per parameter that differs (label with unit, before, after), the
 /// criterion's mean first when given (not NaN). Returns the number of changed parameters.
 int showTuneChanges(QTableWidget* table, const Parameters& before, const Parameters& after, TuneCriterion criterion,

@@ -57,20 +57,6 @@ ImportResult readRecording(const QString& path, const std::optional<ImportPreset
     return guessed.ok() ? guessed : read;
 }
 
-/// What the criterion needs (as tuneScore asks for it): recordings without it are not run at all.
-bool canBeScored(const Recording& recording, TuneCriterion criterion)
-{
-    switch (criterion) {
-    case TuneCriterion::ClosedLoop:
-        return recording.reference.closedLoop;
-    case TuneCriterion::KnownLength:
-        return recording.reference.knownLength_m > 0.0;
-    case TuneCriterion::Reference:
-        return recording.reference.positions_m.size() == recording.samples.size();
-    }
-    return false;
-}
-
 }  // namespace
 
 FolderRecordings readFolderRecordings(const QString& folder, const std::optional<ImportPreset>& preset,
@@ -206,18 +192,10 @@ QWidget* TuneFolderDialog::createResultArea()
     skipped_->setStyleSheet(QStringLiteral("color: #b00020;"));
     skipped_->hide();
 
-    recordingsTable_ = new QTableWidget(0, 3, this);
+    recordingsTable_ = makeTuneTable({tr("Recording"), tr("Before"), tr("After")}, this);
     recordingsTable_->setObjectName(QStringLiteral("tuneRecordings"));
-    recordingsTable_->setHorizontalHeaderLabels({tr("Recording"), tr("Before"), tr("After")});
-    changes_ = new QTableWidget(0, 3, this);
+    changes_ = makeTuneTable({tr("What changed"), tr("Before"), tr("After")}, this);
     changes_->setObjectName(QStringLiteral("tuneChanges"));
-    changes_->setHorizontalHeaderLabels({tr("What changed"), tr("Before"), tr("After")});
-    for (QTableWidget* table : {recordingsTable_, changes_}) {
-        table->verticalHeader()->hide();
-        table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-        table->setSelectionMode(QAbstractItemView::NoSelection);
-        table->horizontalHeader()->setStretchLastSection(true);
-    }
     auto* splitter = new QSplitter(Qt::Horizontal, this);
     splitter->addWidget(recordingsTable_);
     splitter->addWidget(changes_);
@@ -390,7 +368,7 @@ std::vector<std::shared_ptr<const Recording>> TuneFolderDialog::recordingsToTune
             copy->reference.closedLoop = true;
             recording = std::move(copy);
         }
-        if (!canBeScored(*recording, criterion()))
+        if (!tuneCriterionApplies(*recording, criterion()))
             continue;
         tuned.push_back(std::move(recording));
         tunedRows_.push_back(static_cast<int>(i));

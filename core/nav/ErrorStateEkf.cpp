@@ -68,8 +68,8 @@ void ErrorStateEkf::propagate(const Eigen::Vector3d& acc_mps2, const Eigen::Vect
         lastPropagation_.dt_s = 0.0;  // a repeated timestamp carries no motion
         return;
     }
-    lastNavAcc_ = strapdownStep(state_, acc_mps2, gyr_radps, dt_s, params_.gravity_mps2);
-    lastPropagation_ = PropagationStep{lastNavAcc_, state_.bodyToNav, dt_s};
+    const Eigen::Vector3d navSpecificForce = strapdownStep(state_, acc_mps2, gyr_radps, dt_s, params_.gravity_mps2);
+    lastPropagation_ = PropagationStep{navSpecificForce, state_.bodyToNav, dt_s};
     propagateCovariance(covariance_, lastPropagation_, processVariance(dt_s));
 }
 

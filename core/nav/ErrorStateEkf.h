@@ -74,7 +74,7 @@ public:
     /// Phi P Phi^T + Q for one step with the block structure of eq. 26 (Phi = I + four 3x3 blocks).
     static void propagateCovariance(Matrix15& covariance, const PropagationStep& step, const Vector15& processVariance);
     /// Navigation-frame specific force of the last propagation (a_n = C f, eq. 27).
-    const Eigen::Vector3d& lastNavAcceleration() const { return lastNavAcc_; }
+    const Eigen::Vector3d& lastNavAcceleration() const { return lastPropagation_.navSpecificForce; }
 
     /// Transition matrix of eq. 26 for the current attitude and a navigation-frame specific force,
     /// as a dense matrix: for tests and documentation; propagate() uses the block structure.
@@ -90,7 +90,6 @@ private:
     NavState state_;
     Matrix15 covariance_;
     Eigen::Matrix<double, kStates, 1> processVariancePerStep_;  ///< at the 10 ms reference step
-    Eigen::Vector3d lastNavAcc_ = Eigen::Vector3d::Zero();
     PropagationStep lastPropagation_;
     Vector15 correctionsSincePropagation_ = Vector15::Zero();
 };

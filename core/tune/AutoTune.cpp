@@ -247,25 +247,50 @@ std::vector<TuneDimension> defaultTuneSpace(const Parameters& base)
     return space;
 }
 
-double tuneScore(const Recording& recording, const Result& result, TuneCriterion criterion)
+bool tuneCriterionApplies(const Recording& recording, TuneCriterion criterion)
 {
     const Reference& reference = recording.reference;
     switch (criterion) {
     case TuneCriterion::ClosedLoop:
-        if (!reference.closedLoop || result.position_m.empty())
-            return std::nan("");
+        return reference.closedLoop;
+    case TuneCriterion::KnownLength:
+        return reference.knownLength_m > 0.0;
+    case TuneCriterion::Reference:
+        return !reference.positions_m.empty() && reference.positions_m.size() == recording.samples.size();
+    }
+    return false;
+}
+
+double tuneScore(const Recording& recording, const Result& result, TuneCriterion criterion)
+{
+    const Reference& reference = recording.reference;
+    if (!tuneCriterionApplies(recording, criterion) || result.position_m.size() != recording.samples.size())
+        return std::nan("");
+    switch (criterion) {
+    case TuneCriterion::ClosedLoop:
         return computeLoopClosure(result.position_m, result.summary.pathLength_m, reference.knownLength_m).dbsePct;
     case TuneCriterion::KnownLength:
-        if (!(reference.knownLength_m > 0.0))
-            return std::nan("");
         return computeDistanceError(result.summary.pathLength_m, reference.knownLength_m).errorPct;
     case TuneCriterion::Reference:
-        if (reference.positions_m.empty() || reference.positions_m.size() != result.position_m.size())
-            return std::nan("");
         return computeArmse(result.position_m, reference.positions_m).armse2d_m;
     }
     return std::nan("");
 }
+
+namespace {
+
+/// Per-recording figures of the scored recordings back in the order of all of them (NaN for the
+/// others).
+std::vector<double> inAllRecordings(const std::vector<double>& scoredValues, const std::vector<std::size_t>& scoredIndex,
+                                    std::size_t recordings)
+{
+    std::vector<double> all(recordings, std::nan(""));
+    for (std::size_t i = 0; i < scoredIndex.size(); ++i)
+        all[scoredIndex[i]] = scoredValues[i];
+    return all;
+}
+
+}  // namespace
 
 TuneOutcome tuneParameters(const std::vector<const Recording*>& recordings, const Parameters& base,
                            const TuneOptions& options, const std::function<void(const TuneProgress&)>& progress,
@@ -278,10 +303,19 @@ TuneOutcome tuneParameters(const std::vector<const Recording*>& recordings, cons
     if (!outcome.error.empty())
         return outcome;
     const int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    Search search{recordings, base, options, space, progress, cancel, threads, {}, {}, {}, kRejected, 0};
+    // Recordings the criterion cannot score are not run at all (they would cost every candidate
+    // a pipeline run for nothing).
+    std::vector<const Recording*> scored;
+    std::vector<std::size_t> scoredIndex;
+    for (std::size_t i = 0; i < recordings.size(); ++i)
+        if (tuneCriterionApplies(*recordings[i], options.criterion)) {
+            scored.push_back(recordings[i]);
+            scoredIndex.push_back(i);
+        }
+    Search search{scored, base, options, space, progress, cancel, threads, {}, {}, {}, kRejected, 0};
 
     // The base itself: what every candidate must beat, and the warnings it may not add to.
-    search.baseEvaluation = evaluateAll(recordings, {base}, options.criterion, 1, cancel).front();
+    search.baseEvaluation = evaluateAll(scored, {base}, options.criterion, threads, cancel).front();
     search.evaluations = 1;
     const double baseScore = meanScore(search.baseEvaluation, search.baseEvaluation, options.criterion);
     if (!std::isfinite(baseScore)) {
@@ -310,8 +344,8 @@ TuneOutcome tuneParameters(const std::vector<const Recording*>& recordings, cons
     outcome.evaluations = search.evaluations;
     outcome.baseScore = baseScore;
     outcome.bestScore = search.bestScore;
-    outcome.basePerRecording = search.baseEvaluation.scores;
-    outcome.bestPerRecording = search.bestEvaluation.scores;
+    outcome.basePerRecording = inAllRecordings(search.baseEvaluation.scores, scoredIndex, recordings.size());
+    outcome.bestPerRecording = inAllRecordings(search.bestEvaluation.scores, scoredIndex, recordings.size());
     if (search.bestPoint != basePoint)
         outcome.best = applyPoint(base, space, search.bestPoint);
     return outcome;

@@ -34,6 +34,10 @@ struct TuneDimension {
 /// bounds instead of the adaptive ones.
 std::vector<TuneDimension> defaultTuneSpace(const Parameters& base);
 
+/// Whether the recording has what the criterion needs: a walk marked closed, a known length, or
+/// reference positions for every sample. tuneParameters runs only these.
+bool tuneCriterionApplies(const Recording& recording, TuneCriterion criterion);
+
 /// The criterion on one recording's result, lower is better; NaN when the recording lacks what
 /// the criterion needs (not closed, no known length, no reference positions).
 double tuneScore(const Recording& recording, const Result& result, TuneCriterion criterion);
