@@ -162,6 +162,7 @@ Parameters guo2015Parameters()
     params.use_zaru = true;
     params.q_att_rad = 1e-4;
     params.q_vel_mps = 1e-4;
+    params.r_zupt_mps = 0.01;
     params.estimator = static_cast<int>(EstimatorKind::Ekf);  // the paper filters; it has no smoother
     return params;
 }

@@ -42,15 +42,15 @@ struct Parameters {
 
     // Stance detector: which statistic, and how its threshold is found
     int detector = static_cast<int>(DetectorKind::Shoe);
-    double zv_window_s = 0.025;          ///< statistic window (pyshoe: 5 samples at 200 Hz)
+    double zv_window_s = 0.02;           ///< statistic window (pyshoe: 25 ms, 5 samples at 200 Hz)
     double zv_sigma_acc_mps2 = 0.01;     ///< accelerometer noise the statistics are normalised by (OpenShoe)
     double zv_sigma_gyr_radps = 0.1 * 3.14159265358979323846 / 180.0;  ///< gyro noise (OpenShoe: 0.1 deg/s)
     bool zv_adaptive = true;             ///< threshold follows the motion; off: zv_log_threshold
     double zv_log_threshold = 4.5;       ///< fixed threshold, log10 of the normalised statistic
-    double zv_adapt_window_s = 1.5;      ///< running minimum/maximum of the log statistic over this centred window
-    double zv_adapt_offset_dec = 0.1;    ///< threshold = running minimum + this many decades
-    double zv_adapt_fraction = 0.3;      ///< ... + this fraction of the way to the running maximum
-    double zv_log_always = 3.5;          ///< below this (log10) the foot is always at rest
+    double zv_adapt_window_s = 1.25;     ///< running minimum/maximum of the log statistic over this centred window
+    double zv_adapt_offset_dec = 0.05;   ///< threshold = running minimum + this many decades
+    double zv_adapt_fraction = 0.25;     ///< ... + this fraction of the way to the running maximum
+    double zv_log_always = 4.0;          ///< below this (log10) the foot is always at rest
     double zv_log_never = 6.5;           ///< above this (log10) it never is
     double zv_min_stance_s = 0.05;       ///< shorter stance runs are dropped (seed 002's thr_time)
 
@@ -116,7 +116,7 @@ struct Parameters {
     double q_acc_bias_mps2 = 0.0;
 
     // Measurement noise R: std
-    double r_zupt_mps = 0.01;
+    double r_zupt_mps = 0.005;
     double r_zaru_radps = 0.1;
 
     // Initial covariance P0: std per 3-block
