@@ -385,7 +385,15 @@ QRectF TrajectoryView3D::sceneArea(const QRectF& target) const
     if (target.width() <= 1.0 || target.height() <= 1.0)
         return target;  // the unit square resetView() measures the scene in
     const QRectF legend = legendLayout(font(), target, legendEntries()).box;
-    return legend.isEmpty() ? target : target.adjusted(0.0, 0.0, 0.0, -(legend.height() + 8.0));
+    if (legend.isEmpty())
+        return target;
+    // Beside the key or above it, whichever leaves the path the larger scale.
+    const QRectF above = target.adjusted(0.0, 0.0, 0.0, -(legend.height() + 8.0));
+    const QRectF beside = target.adjusted(legend.width() + 8.0, 0.0, 0.0, 0.0);
+    const auto scale = [this](const QRectF& area) {
+        return std::min(area.width() / fitHalfExtent_m_.x(), area.height() / fitHalfExtent_m_.y());
+    };
+    return scale(beside) > scale(above) ? beside : above;
 }
 
 TrajectoryView3D::Grid TrajectoryView3D::groundGrid() const
