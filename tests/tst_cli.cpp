@@ -148,6 +148,8 @@ private slots:
     void badRows_areSkippedWithAWarningOrRefused();
     void counts_printAsIntegers();
     void screenshotOfAHeaderlessFile_finishes();
+    void guiHelpAndVersion_needNoDisplay_data();
+    void guiHelpAndVersion_needNoDisplay();
 
 private:
     /// A folder with copies of the walk under names, beside files eval must skip.
@@ -1082,6 +1084,40 @@ void TestCli::screenshotOfAHeaderlessFile_finishes()
     const auto [refused, refusedErr] = screenshot(prose, work.filePath(QStringLiteral("prose.png")));
     QVERIFY2(refused == kExitBadInput, qPrintable(refusedErr));
     QVERIFY2(refusedErr.contains(QStringLiteral("does not look like sensor data")), qPrintable(refusedErr));
+}
+
+void TestCli::guiHelpAndVersion_needNoDisplay_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("--help") << QStringList{QStringLiteral("--help")} << QStringLiteral("--screenshot <file>");
+    QTest::newRow("-h") << QStringList{QStringLiteral("-h")} << QStringLiteral("Recording to open");
+    QTest::newRow("--version") << QStringList{QStringLiteral("--version")} << QStringLiteral("Footpath " FOOTPATH_VERSION);
+}
+
+void TestCli::guiHelpAndVersion_needNoDisplay()
+{
+    // On a server or over ssh: no X display, no Wayland, no platform chosen. A QApplication would
+    // abort there ("could not connect to display"); the answer needs none.
+    QFETCH(QStringList, args);
+    QFETCH(QString, expected);
+    const QString gui = QFileInfo(QString::fromUtf8(FOOTPATH_CLI)).dir().filePath(QStringLiteral("footpath"));
+    if (!QFileInfo(gui).isExecutable())
+        QSKIP("the footpath binary is not built");
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+        environment.remove(QString::fromLatin1(name));
+    QProcess process;
+    process.setProcessEnvironment(environment);
+    process.start(gui, args);
+    const bool finished = process.waitForFinished(30000);
+    if (!finished)
+        process.kill();
+    const QString out = QString::fromLocal8Bit(process.readAllStandardOutput());
+    const QString err = QString::fromLocal8Bit(process.readAllStandardError());
+    QVERIFY2(finished && process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0,
+             qPrintable(QStringLiteral("exit %1\n%2\n%3").arg(process.exitCode()).arg(out, err)));
+    QVERIFY2(out.contains(expected), qPrintable(out));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

@@ -384,6 +384,18 @@ void TestLivePanel::unrecordedSessionCanBeSavedAfterDisconnect()
     // ... and in a line over the live path, where the user looks while walking.
     QVERIFY2(panel.views()->summaryLine().startsWith(QStringLiteral("Live: %1 steps, ").arg(summary.steps)),
              qPrintable(panel.views()->summaryLine()));
+    // Wrapped, not cut at the edge of a narrow view (the 2D tab at 1280x800 cut it after "warnings: n").
+    QWidget* path = panel.views()->trajectory2D();
+    auto* line = path->findChild<QLabel*>(QStringLiteral("liveSummaryLine"));
+    QVERIFY(line);
+    for (const int width : {600, 240}) {
+        panel.resize(width, 1200);
+        QTRY_VERIFY2(path->rect().contains(line->geometry()),
+                     qPrintable(QStringLiteral("%1 px view, %2 px line").arg(path->width()).arg(line->geometry().right())));
+        QVERIFY(line->height() >= line->heightForWidth(line->width()));
+        if (width == 600)  // room for one line: one line, as before
+            QVERIFY2(line->height() < 2 * line->fontMetrics().height(), qPrintable(QString::number(line->height())));
+    }
 
     QVERIFY(panel.hasUnsavedSamples());
     QVERIFY(panel.findChild<QPushButton*>(QStringLiteral("liveSave"))->isEnabled());

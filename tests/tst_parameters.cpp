@@ -301,11 +301,11 @@ void TestParameters::validate_reportsOutOfRangeWithTheFieldName_data()
     QTest::addColumn<double>("value");
     QTest::addColumn<QString>("expected");
 
-    QTest::newRow("gravity above") << "gravity_mps2" << 12.0 << "gravity_mps2 (12) must be between 9.7 and 9.9 m/s^2";
-    QTest::newRow("gravity below") << "gravity_mps2" << 9.0 << "gravity_mps2 (9) must be between 9.7 and 9.9 m/s^2";
+    QTest::newRow("gravity above") << "gravity_mps2" << 12.0 << "gravity_mps2 (12) must be between 9.7 and 9.9 m/s\u00b2";
+    QTest::newRow("gravity below") << "gravity_mps2" << 9.0 << "gravity_mps2 (9) must be between 9.7 and 9.9 m/s\u00b2";
     QTest::newRow("alignment too short") << "alignment_s" << 0.01 << "alignment_s (0.01) must be between 0.05 and 600 s";
     QTest::newRow("negative std") << "acc_std_max_mps2" << -0.5
-                                  << "acc_std_max_mps2 (-0.5) must be between 0 and 20 m/s^2";
+                                  << "acc_std_max_mps2 (-0.5) must be between 0 and 20 m/s\u00b2";
     QTest::newRow("zero R ZUPT") << "r_zupt_mps" << 0.0 << "r_zupt_mps (0) must be between 1e-06 and 10 m/s";
     QTest::newRow("declination beyond pi") << "declination_rad" << 4.0 << "declination_rad (4) must be between";
     QTest::newRow("window too long") << "median_window_s" << 2.5 << "median_window_s (2.5) must be between 0 and 2 s";

@@ -149,6 +149,12 @@ private slots:
         QCOMPARE(numbers.first(), 1);
         QCOMPARE(numbers.last(), int(content.result->steps.size()));
         QCOMPARE(numbers.size(), int(content.result->steps.size()));
+        // The first stance ends no stride: dashes, as in the window's table, where a stride of 0 would mislead.
+        static const QRegularExpression first("^\\s*1\\s+\\d+\\.\\d\\d\\s+\\d+\\.\\d\\d\\s+(\\S+)\\s+(\\S+)\\s", QRegularExpression::MultilineOption);
+        const QRegularExpressionMatch firstRow = first.match(table);
+        QVERIFY2(firstRow.hasMatch(), qPrintable(table.left(500)));
+        QCOMPARE(firstRow.captured(1), QStringLiteral("\u2013"));
+        QCOMPARE(firstRow.captured(2), QStringLiteral("\u2013"));
 
         std::ostringstream csv;
         writeStepsCsv(csv, *content.result);

@@ -91,6 +91,41 @@ private slots:
         }
     }
 
+    void anglesAreDrawnAroundTheirMeanAndWrapsAreGaps()
+    {
+        // A sensor worn upside down: roll flickers between +179 and -179 degrees. Drawn around its
+        // mean it is one curve near 180; yaw turning through whole circles has a gap at each wrap
+        // (between the two samples, not a line through the row).
+        auto result = knownResult(true);
+        for (std::size_t k = 0; k < kSamples; ++k) {
+            const double roll_deg = (k % 2 == 0 ? 179.0 : -179.0) + 0.5 * std::sin(0.1 * static_cast<double>(k));
+            const double yaw_deg = std::remainder(3.0 * static_cast<double>(k), 360.0);  // 4 turns
+            result->rollPitchYaw_rad[k] = Eigen::Vector3d(roll_deg, 5.0, yaw_deg) * kPi / 180.0;
+        }
+        StatePlots plots;
+        plots.setResult(result);
+        const QCPGraph* roll = plots.graph(Row::Attitude, 0);
+        QCOMPARE(roll->dataCount(), static_cast<int>(kSamples));  // no gaps: it never wraps
+        const double first = roll->data()->begin()->value;
+        QVERIFY2(std::abs(std::abs(first) - 180.0) < 2.0, qPrintable(QString::number(first)));
+        for (const QCPGraphData& point : *roll->data())  // one side of the turn: +180 or -180, not both
+            QVERIFY2(std::abs(point.value - first) < 3.0, qPrintable(QString::number(point.value)));
+        const QCPGraph* yaw = plots.graph(Row::Attitude, 2);
+        QVERIFY(!yaw->adaptiveSampling());  // it would join the values across a gap
+        int gaps = 0;
+        double previousKey = -1.0, previousValue = std::nan("");
+        for (const QCPGraphData& point : *yaw->data()) {
+            QVERIFY(point.key > previousKey);  // strictly between its neighbours
+            if (std::isnan(point.value))
+                ++gaps;
+            else if (!std::isnan(previousValue))
+                QVERIFY2(std::abs(point.value - previousValue) < 10.0, qPrintable(QString::number(point.key)));
+            previousKey = point.key;
+            previousValue = point.value;
+        }
+        QVERIFY2(gaps >= 3 && gaps <= 5, qPrintable(QString::number(gaps)));
+    }
+
     void constantBiasesAreNotPresentedAsEstimates()
     {
         auto result = knownResult(true);

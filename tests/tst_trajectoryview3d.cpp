@@ -291,6 +291,37 @@ private slots:
         QCOMPARE(differingPixels(without, rendered(view, view.size())), 0);
     }
 
+    void aSmallViewKeepsItsKeyBelowThePath_data()
+    {
+        QTest::addColumn<QSize>("size");
+        QTest::newRow("3D tab at 1280x800") << QSize(330, 470);
+        QTest::newRow("3D tab at 1920x1080") << QSize(650, 760);
+    }
+
+    void aSmallViewKeepsItsKeyBelowThePath()
+    {
+        // The dashed reference and the markers need their key wherever they are drawn; at 1280x800
+        // the key used to vanish. Fitted above it, the path is not covered by it.
+        QFETCH(QSize, size);
+        const Result& result = stairsResult();
+        TrajectoryView3D view;
+        view.resize(size);
+        view.showResult(result);
+        std::vector<Eigen::Vector3d> reference = result.position_m;
+        for (Eigen::Vector3d& p : reference)
+            p.y() += 0.3;
+        view.setReference(reference);
+        view.resetView();
+        const QRectF key = view.legendRect(QSizeF(size));
+        QVERIFY2(!key.isEmpty(), "no key");
+        QVERIFY(QRectF(QPointF(0, 0), QSizeF(size)).contains(key));
+        for (const std::vector<Eigen::Vector3d>* path : {&result.position_m, static_cast<const std::vector<Eigen::Vector3d>*>(&reference)})
+            for (const Eigen::Vector3d& p : *path) {
+                const QPointF at = view.project(p, QRectF(QPointF(0, 0), QSizeF(size)));
+                QVERIFY2(!key.contains(at), qPrintable(QStringLiteral("%1,%2 under the key").arg(at.x()).arg(at.y())));
+            }
+    }
+
     void emptyAndDegenerateResultsDoNotCrash_data()
     {
         QTest::addColumn<std::vector<Eigen::Vector3d>>("positions");

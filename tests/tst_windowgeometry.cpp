@@ -10,6 +10,8 @@
 #include <QScreen>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -93,6 +95,44 @@ private slots:
         QVERIFY(summary->height() >= 0.12 * window.height());
         QVERIFY(summary->isVisible());  // in front of the history that shares its place
         QVERIFY(window.centralWidget()->height() >= 0.55 * window.height());
+    }
+
+    void everyTabIsReadableAtTheLaptopSize()
+    {
+        // At 1280x800 the central tab bars once scrolled ("Li" and "Live si" at their ends): the live
+        // views' tabs come with the live input, and the recorded walk's tabs fit without scrolling.
+        const QRect available = screenWithGeometry(kLaptop)->availableGeometry();
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_windowgeometry"));
+        MainWindow window(settings);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.placeOnScreen(available);
+        QTRY_VERIFY(available.contains(window.frameGeometry()));
+        QTest::qWait(50);  // the docks' first sizes
+        const QList<QTabWidget*> central = window.centralWidget()->findChildren<QTabWidget*>(QString(), Qt::FindDirectChildrenOnly);
+        QCOMPARE(central.size(), 2);
+        const auto visibleTabs = [](const QTabWidget* tabs) {
+            QStringList names;
+            for (int i = 0; i < tabs->count(); ++i)
+                if (tabs->isTabVisible(i))
+                    names << tabs->tabText(i);
+            return names;
+        };
+        for (const QTabWidget* tabs : central) {
+            const QStringList shown = visibleTabs(tabs);
+            QVERIFY2(shown.filter(QStringLiteral("Live")).isEmpty(), qPrintable(shown.join(", ")));  // no session yet
+            const QWidget* corner = tabs->cornerWidget(Qt::TopRightCorner);
+            const int needed = tabs->tabBar()->sizeHint().width() + (corner ? corner->sizeHint().width() : 0);
+            QVERIFY2(needed <= tabs->width(), qPrintable(QStringLiteral("%1: %2 px needed, %3 px there")
+                                                             .arg(shown.join(", ")).arg(needed).arg(tabs->width())));
+        }
+        auto* liveDock = window.findChild<QDockWidget*>(QStringLiteral("liveDock"));
+        liveDock->raise();
+        for (const QTabWidget* tabs : central)
+            QTRY_VERIFY2(visibleTabs(tabs).filter(QStringLiteral("Live")).size() == 2, qPrintable(visibleTabs(tabs).join(", ")));
+        window.findChild<QDockWidget*>(QStringLiteral("inputDock"))->raise();
+        for (const QTabWidget* tabs : central)
+            QTRY_VERIFY(visibleTabs(tabs).filter(QStringLiteral("Live")).isEmpty());
     }
 
     void opensAtTheScreenSizeWithoutASavedGeometry()

@@ -74,6 +74,11 @@ void HelpDialog::fillShortcuts(const QList<QAction*>& menus)
     rows.append({tr("Click"), tr("Plots and 2D path: move the time cursor there")});
     rows.append({tr("Wheel"), tr("Plots: zoom the time axis; 3D: zoom about the pointer")});
     rows.append({tr("Drag"), tr("Plots and 2D path: pan; 3D: orbit (right or middle button: pan)")});
+    rows.append({tr("Ctrl+Wheel"), tr("Plots: zoom the value axis of the row under the pointer")});
+    rows.append({tr("Wheel or drag on a value axis"), tr("Plots: zoom or pan that row's values")});
+    rows.append({tr("Pointer over a plot"), tr("Plots and 2D path: read the time and the values there")});
+    rows.append({tr("Shift+Click"), tr("Plots and 2D path: set a marker; the readout then gives \u0394t and \u0394y from it")});
+    rows.append({tr("Right-click"), tr("Plots: reset the view, export as PNG or PDF, or the visible data as CSV")});
     rows.append({tr("Double-click"), tr("Plots and paths: show everything again")});
     rows.append({tr("Up / Down"), tr("Parameter value field: one slider step")});
     rows.append({tr("Page Up / Page Down"), tr("Parameter value field: ten slider steps")});
@@ -116,11 +121,17 @@ QString HelpDialog::guideText()
         "too long, a stance missed) and, with a barometer, the motion class of each step (level, stairs, "
         "elevator).</li>"
         "<li><b>Stance detector</b>: the statistic the detector thresholds and the threshold itself; where "
-        "the curve is below the threshold the foot is taken to be at rest.</li>"
+        "the curve is below the threshold the foot is taken to be at rest. A <i>Reference stance</i> lane "
+        "shows the stances the file's own labels give (gait events, motion capture), to compare with.</li>"
+        "<li><b>States</b>: the filter's attitude, velocity, height and sensor biases over time, with a band "
+        "of one standard deviation where the filter estimates it.</li>"
         "<li><b>Summary</b>: the walk's figures (path length, strides, cadence, end-to-start distance), the "
         "figures against the reference when there is one, and a table of the steps. Selecting a step moves "
         "the time cursor to it in every view.</li></ul>"
-        "<p>One time cursor links every view: click a plot or the path and all views show that moment.</p>"
+        "<p>One time cursor links every view: click a plot or the path and all views show that moment. "
+        "Hold the pointer over a plot to read the values; Shift+click sets a marker to measure time and "
+        "value differences from; right-click a plot to export it. <b>Help &gt; Keyboard shortcuts</b> "
+        "lists every key.</p>"
         "<h3>Tuning</h3>"
         "<ul><li>The <b>Parameters</b> panel lists every setting with its unit; the tool tip names the "
         "identifier used in presets and on the command line. A setting that has no effect with the others "
@@ -133,8 +144,11 @@ QString HelpDialog::guideText()
         "<h3>Live input</h3>"
         "<ul><li>In the <b>Live input</b> panel choose the sensor's serial port (or the emulator) and "
         "connect: the live path and signals appear in their own tabs while you walk.</li>"
-        "<li>Record writes the samples to a file; when recording stops, the file opens for the full "
-        "analysis.</li></ul>"
+        "<li>Record writes the samples to a file (the name offered is the device's and the time's, in the "
+        "folder of the last recording); when recording stops, the file opens for the full "
+        "analysis. A session you did not record can still be saved after Disconnect.</li>"
+        "<li>A recording that starts while walking is still read: the path then starts at the first stance, "
+        "and a warning says so.</li></ul>"
         "<h3>Exporting</h3>"
         "<p><b>File &gt; Export report</b> writes a PDF with the figures, plots and parameters; <b>Export "
         "CSV</b> writes the trajectory, steps, summary and parameters as CSV files.</p>");

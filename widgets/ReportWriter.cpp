@@ -315,8 +315,10 @@ QList<QStringList> stepRows(const Result& result)
         rows.first() << MotionLanes::tr("Motion") << MotionLanes::tr("Baro height (m)");
     for (std::size_t i = 0; i < result.steps.size(); ++i) {
         const Step& s = result.steps[i];
+        // The first stance ends no stride (nothing before it): a dash, as in the window's table, not 0.000.
+        const auto stride = [i](double value) { return i == 0 ? QStringLiteral("\u2013") : formatFigure(value, 3); };
         rows << QStringList{QString::number(i + 1), formatFigure(s.stanceStart_s, 2), formatFigure(s.stanceEnd_s, 2),
-                            formatFigure(s.strideLength_m, 3), formatFigure(s.strideDuration_s, 3), formatFigure(s.position_m.x(), 3),
+                            stride(s.strideLength_m), stride(s.strideDuration_s), formatFigure(s.position_m.x(), 3),
                             formatFigure(s.position_m.y(), 3), formatFigure(s.position_m.z(), 3)};
         if (motion)
             rows.last() << (s.motion == MotionClass::Unknown ? QStringLiteral("–") : motionClassLabel(s.motion))

@@ -101,6 +101,24 @@ bool wraps(Row row, double a, double b)
     return row == Row::Attitude && std::abs(b - a) > 180.0;
 }
 
+/// The circular mean of an attitude component, in degrees: the value its curve is drawn around.
+double circularMean_deg(const Result& result, int component)
+{
+    double sine = 0.0, cosine = 0.0;
+    for (const Eigen::Vector3d& angles : result.rollPitchYaw_rad) {
+        sine += std::sin(angles[component]);
+        cosine += std::cos(angles[component]);
+    }
+    return sine == 0.0 && cosine == 0.0 ? 0.0 : std::atan2(sine, cosine) * kDegreesPerRadian;
+}
+
+/// The angle written within half a turn of `centre` (both in degrees): the roll of a sensor worn
+/// upside down reads 175..185 degrees, not a curve jumping between +179 and -179.
+double nearCentre_deg(double angle, double centre)
+{
+    return centre + std::remainder(angle - centre, 360.0);
+}
+
 bool isConstant(const Result& result, Row row)
 {
     const std::size_t n = result.time_s.size();
@@ -235,11 +253,16 @@ void StatePlots::plotRow(std::size_t r)
     for (int c = 0; c < row.componentCount; ++c) {
         Component& component = row.components[static_cast<std::size_t>(c)];
         QVector<double> keys, values, bandKeys, lower, upper, sigma;
+        const bool angle = which == Row::Attitude && n > 0;
+        const double centre = angle ? circularMean_deg(*result_, c) : 0.0;
+        bool wrapped = false;
         for (std::size_t k = 0; k < n; ++k) {
-            const double value = stateValue(*result_, which, k, c);
+            const double raw = stateValue(*result_, which, k, c);
+            const double value = angle ? nearCentre_deg(raw, centre) : raw;
             if (!values.isEmpty() && wraps(which, values.back(), value)) {
-                keys << result_->time_s[k];
+                keys << 0.5 * (keys.back() + result_->time_s[k]);
                 values << gap;  // QCustomPlot leaves a gap at NaN
+                wrapped = true;
             }
             keys << result_->time_s[k];
             values << value;
@@ -247,7 +270,7 @@ void StatePlots::plotRow(std::size_t r)
                 continue;
             const double s = stateSigma(*result_, which, k, c);
             if (!lower.isEmpty() && wraps(which, lower.back() + sigma.back(), value)) {
-                bandKeys << result_->time_s[k];
+                bandKeys << 0.5 * (bandKeys.back() + result_->time_s[k]);
                 lower << gap;
                 upper << gap;
                 sigma << sigma.back();
@@ -257,6 +280,9 @@ void StatePlots::plotRow(std::size_t r)
             upper << value + s;
             sigma << s;
         }
+        // Adaptive sampling joins a pixel column's lowest and highest value across a gap: a wrap
+        // would be drawn as a line through the whole row.
+        component.curve->setAdaptiveSampling(!wrapped);
         component.curve->setData(keys, values, true);
         component.lower->setData(bandKeys, lower, true);
         component.upper->setData(bandKeys, upper, true);

@@ -366,16 +366,34 @@ TrajectoryView3D::ViewTransform TrajectoryView3D::viewTransform(const QRectF& ta
     view.heightFactor = heightFactor_;
     const Eigen::Vector3d scale(1.0, 1.0, heightFactor_);
     view.centre_m = (0.5 * (sceneMin_m_ + sceneMax_m_)).cwiseProduct(scale);
-    const double fitScale = std::min(target.width() / (2.0 * fitHalfExtent_m_.x()),
-                                     target.height() / (2.0 * fitHalfExtent_m_.y()));
+    const QRectF area = sceneArea(target);
+    const double fitScale = std::min(area.width() / (2.0 * fitHalfExtent_m_.x()),
+                                     area.height() / (2.0 * fitHalfExtent_m_.y()));
     view.pixelsPerMetre = kFitFraction * fitScale * zoom_;
     view.perspective = projection_ == Projection::Perspective;
     const double radius = (0.5 * (sceneMax_m_ - sceneMin_m_).cwiseProduct(scale)).norm();
     view.eyeDistance_m = kEyeDistanceInRadii * std::max(radius, kMinHalfExtent_m);
     if (view.perspective)  // the nearest point of the scene is magnified by up to this much: still fits
         view.pixelsPerMetre *= 1.0 - 1.0 / kEyeDistanceInRadii;
-    view.origin_px = target.center() + pan_m_ * view.pixelsPerMetre;
+    view.origin_px = area.center() + pan_m_ * view.pixelsPerMetre;
     return view;
+}
+
+QRectF TrajectoryView3D::sceneArea(const QRectF& target) const
+{
+    // The path is fitted above the key, so the key at the bottom does not cover it.
+    if (target.width() <= 1.0 || target.height() <= 1.0)
+        return target;  // the unit square resetView() measures the scene in
+    const QRectF legend = legendLayout(font(), target, legendEntries()).box;
+    if (legend.isEmpty())
+        return target;
+    // Beside the key or above it, whichever leaves the path the larger scale.
+    const QRectF above = target.adjusted(0.0, 0.0, 0.0, -(legend.height() + 8.0));
+    const QRectF beside = target.adjusted(legend.width() + 8.0, 0.0, 0.0, 0.0);
+    const auto scale = [this](const QRectF& area) {
+        return std::min(area.width() / fitHalfExtent_m_.x(), area.height() / fitHalfExtent_m_.y());
+    };
+    return scale(beside) > scale(above) ? beside : above;
 }
 
 TrajectoryView3D::Grid TrajectoryView3D::groundGrid() const
@@ -582,9 +600,9 @@ void TrajectoryView3D::drawMarkers(QPainter& painter, const ViewTransform& view,
     drawCursor(painter, view(cursor));
 }
 
-void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target) const
+std::vector<std::pair<QString, TrajectoryView3D::LegendIcon>> TrajectoryView3D::legendEntries() const
 {
-    using Icon = std::function<void(QPainter&, const QPointF&)>;
+    using Icon = LegendIcon;
     const auto line = [](QPen pen) {
         return Icon([pen](QPainter& p, const QPointF& at) {
             p.setPen(pen);
@@ -611,29 +629,67 @@ void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target) const
         entries.emplace_back(tr("Time cursor"), drawCursor);
     if (heightFactor_ != 1.0)
         entries.emplace_back(tr("Heights drawn \u00d7 %1").arg(heightFactor_, 0, 'g', 3), Icon());
+    return entries;
+}
 
-    const QFontMetricsF metrics(painter.font());
-    const double lineHeight = std::max(metrics.height() + 2.0, 16.0);
-    double textWidth = 0.0;
-    for (const auto& entry : entries)
-        textWidth = std::max(textWidth, metrics.horizontalAdvance(entry.first));
-    const double rows = static_cast<double>(entries.size());
-    const QRectF box(target.left() + 8.0, target.bottom() - 16.0 - rows * lineHeight, textWidth + 50.0,
-                     rows * lineHeight + 8.0);
-    if (box.height() > 0.4 * target.height() || box.width() > 0.4 * target.width())
-        return;  // a small view needs its room for the path more than for the key
+TrajectoryView3D::LegendLayout TrajectoryView3D::legendLayout(
+    const QFont& font, const QRectF& target, const std::vector<std::pair<QString, LegendIcon>>& entries)
+{
+    const std::size_t entryCount = entries.size();
+    // A small view (the 3D tab on a 1280-pixel screen) gets a smaller key rather than none: the
+    // dashed reference and the markers must be explained wherever they are drawn.
+    for (const double scale : {1.0, 0.85}) {
+        for (const int columns : {1, 2}) {
+            LegendLayout layout;
+            layout.font = font;
+            if (scale != 1.0)
+                layout.font.setPointSizeF(font.pointSizeF() * scale);
+            const QFontMetricsF metrics(layout.font);
+            layout.lineHeight = std::max(metrics.height() + 2.0, 14.0);
+            double widestText = 0.0;
+            for (const auto& entry : entries)
+                widestText = std::max(widestText, metrics.horizontalAdvance(entry.first));
+            layout.columnWidth = widestText + 50.0;
+            layout.rows = static_cast<int>((entryCount + static_cast<std::size_t>(columns) - 1) / static_cast<std::size_t>(columns));
+            const QSizeF size(columns * layout.columnWidth, layout.rows * layout.lineHeight + 8.0);
+            if (size.height() <= 0.4 * target.height() && size.width() <= 0.6 * target.width()) {
+                layout.box = QRectF(QPointF(target.left() + 8.0, target.bottom() - 8.0 - size.height()), size);
+                return layout;
+            }
+        }
+    }
+    return {};
+}
+
+QRectF TrajectoryView3D::legendRect(const QSizeF& size) const
+{
+    if (positions().empty() && reference_m_.empty())
+        return {};
+    return legendLayout(font(), QRectF(QPointF(0, 0), size), legendEntries()).box;
+}
+
+void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target) const
+{
+    const auto entries = legendEntries();
+    const LegendLayout layout = legendLayout(painter.font(), target, entries);
+    if (layout.box.isEmpty())
+        return;  // a very small view needs its room for the path more than for the key
+    painter.save();
+    painter.setFont(layout.font);
     painter.setPen(QPen(QColor(200, 200, 200), 1.0));
     painter.setBrush(QColor(255, 255, 255, 225));
-    painter.drawRect(box);
-    double y = box.top() + 4.0 + 0.5 * lineHeight;
-    for (const auto& [text, icon] : entries) {
+    painter.drawRect(layout.box);
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        const auto& [text, icon] = entries[i];
+        const double left = layout.box.left() + static_cast<double>(i / static_cast<std::size_t>(layout.rows)) * layout.columnWidth;
+        const double y = layout.box.top() + 4.0 + (static_cast<double>(i % static_cast<std::size_t>(layout.rows)) + 0.5) * layout.lineHeight;
         if (icon)
-            icon(painter, QPointF(box.left() + 20.0, y));
+            icon(painter, QPointF(left + 20.0, y));
         painter.setPen(icon ? Qt::black : QColor(170, 40, 40));
-        painter.drawText(QRectF(box.left() + 40.0, y - 0.5 * lineHeight, textWidth + 4.0, lineHeight),
+        painter.drawText(QRectF(left + 40.0, y - 0.5 * layout.lineHeight, layout.columnWidth - 40.0, layout.lineHeight),
                          Qt::AlignVCenter | Qt::AlignLeft, text);
-        y += lineHeight;
     }
+    painter.restore();
 }
 
 void TrajectoryView3D::setOverlays(const std::vector<PathOverlay>& overlays)
@@ -786,7 +842,7 @@ void TrajectoryView3D::mouseDoubleClickEvent(QMouseEvent*)
 void TrajectoryView3D::wheelEvent(QWheelEvent* event)
 {
     // Zoom about the pointer: the scene point under it stays under it.
-    const QPointF fromCentre = event->position() - QRectF(rect()).center();
+    const QPointF fromCentre = event->position() - sceneArea(rect()).center();
     const QPointF underPointer_m = fromCentre / viewTransform(rect()).pixelsPerMetre - pan_m_;
     cameraMovedByUser_ = true;
     zoom_ = std::clamp(zoom_ * std::pow(kZoomPerWheelNotch, event->angleDelta().y() / 120.0), 0.05, 500.0);

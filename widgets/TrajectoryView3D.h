@@ -5,13 +5,16 @@
 
 #include <Eigen/Core>
 
+#include <QFont>
 #include <QPoint>
 #include <QPolygonF>
 #include <QRectF>
 #include <QWidget>
 
 #include <cstddef>
+#include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 class QCheckBox;
@@ -51,6 +54,9 @@ public:
     /// change shows; empty hides it. It does not move the camera.
     void setGhostPath(const std::vector<Eigen::Vector3d>& positions_m);
     const std::vector<Eigen::Vector3d>& ghostPath() const { return ghost_m_; }
+    /// Where the key (path, reference, markers) is drawn in a view of this size; empty when the
+    /// view is too small to hold it beside the path.
+    QRectF legendRect(const QSizeF& size) const;
     /// Colours each stride by the motion class of the step it leads to (seed 004), with a key;
     /// a result without classified steps keeps the one path colour.
     void setMotionColouring(bool on);
@@ -100,6 +106,8 @@ private:
     void layOutToolbar();
     void rebuildScene();
     ViewTransform viewTransform(const QRectF& target) const;
+    /// Where the scene is fitted in a target: above the key when the key is drawn.
+    QRectF sceneArea(const QRectF& target) const;
     Grid groundGrid() const;
     void drawGrid(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
     void drawAxisArrows(QPainter& painter, const ViewTransform& view, const QRectF& target) const;
@@ -108,6 +116,18 @@ private:
     static void drawInPieces(QPainter& painter, const QPolygonF& polyline);
     void drawPaths(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
     void drawMarkers(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
+    using LegendIcon = std::function<void(QPainter&, const QPointF&)>;
+    std::vector<std::pair<QString, LegendIcon>> legendEntries() const;
+    struct LegendLayout {
+        QFont font;
+        QRectF box;  ///< empty: no room
+        double lineHeight = 0.0;
+        double columnWidth = 0.0;
+        int rows = 0;
+    };
+    /// One column in the view's font, or in a smaller one, or two columns: the first that fits.
+    static LegendLayout legendLayout(const QFont& font, const QRectF& target,
+                                     const std::vector<std::pair<QString, LegendIcon>>& entries);
     void drawLegend(QPainter& painter, const QRectF& target) const;
     void drawMotionColouredPath(QPainter& painter, const ViewTransform& view) const;
     void drawOverlays(QPainter& painter, const ViewTransform& view) const;

@@ -29,32 +29,19 @@ std::vector<T> tailFrom(const std::vector<T>& values, std::size_t first)
                                  : std::vector<T>();
 }
 
-/// A label centred over its parent view that follows the parent's size.
-class CentredNotice : public QLabel {
+/// A label over its parent view that places itself again whenever the view is resized or shown.
+class ViewNote : public QLabel {
 public:
-    explicit CentredNotice(QWidget* view) : QLabel(view)
+    explicit ViewNote(QWidget* view, const QString& style) : QLabel(view)
     {
-        setObjectName(QStringLiteral("liveNotice"));
-        setAlignment(Qt::AlignCenter);
         setWordWrap(true);
         setAttribute(Qt::WA_TransparentForMouseEvents);
-        setStyleSheet(QStringLiteral("QLabel { background: rgba(255, 255, 255, 230); color: #303030; "
-                                     "border: 1px solid #a0a0a0; border-radius: 6px; padding: 12px; }"));
-        QFont bigger = font();
-        bigger.setPointSizeF(bigger.pointSizeF() * 1.25);
-        setFont(bigger);
+        setStyleSheet(style);
         view->installEventFilter(this);
         hide();
     }
 
-    void place()
-    {
-        const QWidget* view = parentWidget();
-        const int width = std::min(view->width() - 20, 520);
-        const int height = heightForWidth(width) > 0 ? heightForWidth(width) : sizeHint().height();
-        setGeometry((view->width() - width) / 2, (view->height() - height) / 2, width, height);
-        raise();
-    }
+    virtual void place() = 0;
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override
@@ -63,20 +50,56 @@ protected:
             place();
         return false;
     }
+
+    /// The label's height at this width (wrapped text), or its one-line height.
+    int heightAt(int width) const { return heightForWidth(width) > 0 ? heightForWidth(width) : sizeHint().height(); }
 };
 
-/// A one-line label in the top left corner of its parent view (over the plot's margin).
-QLabel* cornerNote(QWidget* view)
-{
-    auto* label = new QLabel(view);
-    label->setObjectName(QStringLiteral("liveSummaryLine"));
-    label->setAttribute(Qt::WA_TransparentForMouseEvents);
-    label->setStyleSheet(QStringLiteral("QLabel { background: rgba(255, 255, 255, 215); color: #202020; "
-                                        "border: 1px solid #c0c0c0; border-radius: 3px; padding: 2px 6px; }"));
-    label->move(8, 6);
-    label->hide();
-    return label;
-}
+/// Centred over its view: why the view is empty.
+class CentredNotice : public ViewNote {
+public:
+    explicit CentredNotice(QWidget* view)
+        : ViewNote(view, QStringLiteral("QLabel { background: rgba(255, 255, 255, 230); color: #303030; "
+                                        "border: 1px solid #a0a0a0; border-radius: 6px; padding: 12px; }"))
+    {
+        setObjectName(QStringLiteral("liveNotice"));
+        setAlignment(Qt::AlignCenter);
+        QFont bigger = font();
+        bigger.setPointSizeF(bigger.pointSizeF() * 1.25);
+        setFont(bigger);
+    }
+
+    void place() override
+    {
+        const QWidget* view = parentWidget();
+        const int width = std::min(view->width() - 20, 520);
+        const int height = heightAt(width);
+        setGeometry((view->width() - width) / 2, (view->height() - height) / 2, width, height);
+        raise();
+    }
+};
+
+/// In the top left corner of its view (over the plot's margin): one line where the view is wide
+/// enough, wrapped where it is not, never cut at the view's edge.
+class CornerNote : public ViewNote {
+public:
+    explicit CornerNote(QWidget* view)
+        : ViewNote(view, QStringLiteral("QLabel { background: rgba(255, 255, 255, 215); color: #202020; "
+                                        "border: 1px solid #c0c0c0; border-radius: 3px; padding: 2px 6px; }"))
+    {
+        setObjectName(QStringLiteral("liveSummaryLine"));
+    }
+
+    void place() override
+    {
+        const QWidget* view = parentWidget();
+        // The text, the padding and the frame, and a little for the rich-text layout that wraps early.
+        const int oneLine = fontMetrics().horizontalAdvance(text()) + 2 * (margin() + 8) + 12;
+        const int width = std::max(40, std::min(oneLine, view->width() - 16));
+        setGeometry(8, 6, width, heightAt(width));
+        raise();
+    }
+};
 
 }  // namespace
 
@@ -139,7 +162,7 @@ LiveViews::LiveViews(QWidget* parent)
                           static_cast<QWidget*>(signals_), static_cast<QWidget*>(flags_)})
         noticeLabels_.push_back(new CentredNotice(view));
     for (QWidget* view : {static_cast<QWidget*>(trajectory2D_), static_cast<QWidget*>(trajectory3D_)})
-        summaryLabels_.push_back(cornerNote(view));
+        summaryLabels_.push_back(new CornerNote(view));
     sincePathUpdate_.start();
 }
 
@@ -157,9 +180,8 @@ void LiveViews::setSummaryLine(const QString& text)
 {
     for (QLabel* label : summaryLabels_) {
         label->setText(text);
-        label->adjustSize();
+        static_cast<CornerNote*>(label)->place();
         label->setVisible(!text.isEmpty());
-        label->raise();
     }
 }
 

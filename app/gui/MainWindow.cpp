@@ -43,6 +43,9 @@
 #include <QUndoStack>
 #include <qcustomplot.h>
 
+#include <algorithm>
+#include <iterator>
+
 namespace footpath {
 
 namespace {
@@ -135,6 +138,7 @@ void MainWindow::createDocks()
     live_->moveViewsInto(trajectoryTabs_, signalTabs_);
     live_->linkSummary(summary_);  // the live session's figures while its views are in front
     connect(live_, &LivePanel::sessionStarted, this, [this] {
+        showLiveTabs(true);
         trajectoryTabs_->setCurrentWidget(live_->views()->trajectory2D());
         signalTabs_->setCurrentWidget(live_->views()->signalPlots());
     });
@@ -147,12 +151,31 @@ void MainWindow::createDocks()
     QDockWidget* liveDock = dock(this, tr("Live input"), "liveDock", live_, Qt::LeftDockWidgetArea);
     tabifyDockWidget(inputDock, liveDock);
     inputDock->raise();
+    // The live tabs while the live input is in front or holds samples: a 1280-pixel screen has
+    // room for the tabs of the recorded walk's views, not for both sets beside each other.
+    connect(liveDock, &QDockWidget::visibilityChanged, this, &MainWindow::showLiveTabs);
+    showLiveTabs(false);
     dock(this, tr("Parameters"), "parametersDock", parameters_, Qt::RightDockWidgetArea);
     QDockWidget* summaryDock = dock(this, tr("Summary"), "summaryDock", summary_, Qt::BottomDockWidgetArea);
     history_ = new RunHistory(this);
     historyPanel_ = new RunHistoryPanel(history_, this);
     tabifyDockWidget(summaryDock, dock(this, tr("History"), "historyDock", historyPanel_, Qt::BottomDockWidgetArea));
     summaryDock->raise();
+}
+
+void MainWindow::showLiveTabs(bool liveInputInFront)
+{
+    const bool shown = liveInputInFront || live_->sampleCount() > 0;
+    const QWidget* liveViews[] = {live_->views()->trajectory2D(), live_->views()->trajectory3D(),
+                                  live_->views()->signalPlots(), live_->views()->stanceFlags()};
+    for (QTabWidget* tabs : {trajectoryTabs_, signalTabs_})
+        for (int i = 0; i < tabs->count(); ++i) {
+            const QWidget* page = tabs->widget(i);
+            const bool live = std::any_of(std::begin(liveViews), std::end(liveViews),
+                                          [page](const QWidget* view) { return page == view || page->isAncestorOf(view); });
+            if (live)
+                tabs->setTabVisible(i, shown);
+        }
 }
 
 void MainWindow::connectLive(const QString& port)

@@ -79,6 +79,8 @@ protected:
 private:
     void createViews();
     void createDocks();
+    /// Shows the live views' tabs while the live input dock is in front or a session has samples.
+    void showLiveTabs(bool liveInputInFront);
     void createMenus();
     void createFileMenu();
     void createEditMenu();

@@ -132,7 +132,7 @@ void resolveAccUnit(ImportResult& r, const ImportOptions& options)
         if (unit == AccUnit::Unknown) {
             unit = AccUnit::MetresPerSecond2;
             r.recording.warnings.push_back("cannot tell the accelerometer unit (median |a| = " + formatNumber(median)
-                                           + "); assuming m/s^2 - set the accelerometer unit to say");
+                                           + "); assuming m/s\u00b2 - set the accelerometer unit to say");
         }
     } else if (fromData != AccUnit::Unknown && fromData != unit) {
         r.recording.warnings.push_back(std::string("the accelerometer is read as ") + unitName(unit)
@@ -361,7 +361,7 @@ ColumnMapGuess guessColumnMap(const std::string& path, const ImportOptions& opti
     const double gravity = sampledMedian(read.recording.samples, accNorm);
     const double rate = read.info.rate_hz;
     if (!(gravity > 7.0 && gravity < 13.0))
-        guess.doubt = "read so, the median |a| is " + formatNumber(gravity) + " m/s^2, not gravity";
+        guess.doubt = "read so, the median |a| is " + formatNumber(gravity) + " m/s\u00b2, not gravity";
     else if (!(rate >= 10.0 && rate <= 2000.0))
         guess.doubt = "read so, the rate is " + formatNumber(rate) + " Hz, not an IMU's";
     guess.confident = guess.doubt.empty();

@@ -337,8 +337,8 @@ std::vector<std::string> Parameters::validate() const
         const double value = this->*field.real;
         if (!std::isfinite(value) || value < field.minimum || value > field.maximum)
             problems.push_back(std::string(field.name) + " (" + formatNumber(value) + ") must be between "
-                               + formatNumber(field.minimum) + " and " + formatNumber(field.maximum) + " "
-                               + field.unit);
+                               + formatNumber(field.minimum) + " and " + formatNumber(field.maximum)
+                               + (displayUnit(field).empty() ? "" : " " + displayUnit(field)));  // m/s², as the window writes it
     }
     if (acc_min_mps2 >= acc_max_mps2)
         problems.push_back("acc_min_mps2 (" + formatNumber(acc_min_mps2) + ") must be below acc_max_mps2 ("
