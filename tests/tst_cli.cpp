@@ -848,7 +848,7 @@ void TestCli::noArguments_printsUsageToStderrAndExitsTwo()
     VERIFY_EXIT(run, kExitBadInput);
     QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
     QVERIFY(run.err.contains(QStringLiteral("no command given")));
-    QVERIFY(run.err.contains(QStringLiteral("process, eval, compare, tune, info, report, record")));
+    QVERIFY(run.err.contains(QStringLiteral("process, eval, compare, tune, gait, info, report, record")));
 }
 
 void TestCli::commandHelp_printsThatCommandsOptions_data()

@@ -403,6 +403,31 @@ QWidget* SummaryPanel::createFigures()
                                                                       {"stanceRecall", tr("Stance recall")},
                                                                       {"stanceF1", tr("Stance F1")},
                                                                       {"stancePhases", tr("Stance phases")}});
+    gaitGroup_ = createFigureGroup(tr("Gait (heel strike to toe off)"),
+                                   {{"gaitStrides", tr("Strides")},
+                                    {"gaitStrideTime", tr("Stride time")},
+                                    {"gaitStrideLength", tr("Stride length")},
+                                    {"gaitCadence", tr("Cadence")},
+                                    {"gaitStanceSwing", tr("Stance / swing")},
+                                    {"gaitClearance", tr("Foot clearance")}});
+    gaitGroup_->setObjectName(QStringLiteral("gaitFigures"));
+    gaitGroup_->setToolTip(tr("From the gait events (heel strike, toe off) of this foot: means over the strides "
+                              "that neither turn nor pause"));
+    bothFeetGroup_ = createFigureGroup(tr("Both feet"), {{"doubleSupport", tr("Double support")},
+                                                         {"stanceLeftRight", tr("Stance left / right")},
+                                                         {"symmetryStrideTime", tr("Symmetry: stride time")},
+                                                         {"symmetryStrideLength", tr("Symmetry: stride length")},
+                                                         {"symmetryStance", tr("Symmetry: stance")},
+                                                         {"symmetrySwing", tr("Symmetry: swing")}});
+    bothFeetGroup_->setObjectName(QStringLiteral("bothFeet"));
+    bothFeetGroup_->setToolTip(tr("Double support: the share of the gait cycle both feet are on the ground. "
+                                  "Symmetry index: 100 (left - right) / mean, 0 symmetric, positive: the left larger."));
+    bothFeetNotes_ = new QLabel;
+    bothFeetNotes_->setObjectName(QStringLiteral("bothFeetNotes"));
+    bothFeetNotes_->setWordWrap(true);
+    bothFeetGroup_->layout()->addWidget(bothFeetNotes_);
+    bothFeetGroup_->hide();
+
     referenceNotes_ = new QLabel;
     referenceNotes_->setObjectName(QStringLiteral("referenceNotes"));
     referenceNotes_->setWordWrap(true);
@@ -423,6 +448,8 @@ QWidget* SummaryPanel::createFigures()
     layout->addWidget(createWarnings());
     layout->addWidget(createMotionAndNotes());
     layout->addWidget(walk);
+    layout->addWidget(bothFeetGroup_);
+    layout->addWidget(gaitGroup_);
     layout->addWidget(referenceGroup_);
     layout->addStretch(1);
     auto* scroll = new QScrollArea;
@@ -696,6 +723,8 @@ void SummaryPanel::refresh()
     statistics_ = result_ ? computeGaitStatistics(*result_, recording_.get()) : GaitStatistics();
     stepModel_->setResult(result_);
     showWalkFigures();
+    showGaitFigures();
+    showBothFeetFigures();
     showReferenceFigures();
     showWarnings();
     showMotionAndNotes();
@@ -800,6 +829,52 @@ void SummaryPanel::showWalkFigures()
                                     .arg(number(s.meanStrideDuration_s, 3), number(s.medianStrideDuration_s, 3)));
     setFigure("stanceDuration", tr("%1 s").arg(number(s.meanStanceDuration_s, 3)));
     setFigure("endToStart", tr("%1 m (%2 % of the path)").arg(number(s.endToStart_m, 2), number(s.endToStartPct, 2)));
+}
+
+void SummaryPanel::showGaitFigures()
+{
+    const bool shown = result_ && result_->gait.strides > 0;
+    gaitGroup_->setVisible(shown);
+    if (!shown)
+        return;
+    const GaitSummary& g = result_->gait;
+    const bool means = g.straightStrides > 0;  // else every mean is a dash, not a zero
+    const auto figure = [means](double value, int decimals) { return number(means ? value : GaitStatistics::kNone, decimals); };
+    setFigure("gaitStrides", tr("%1 (%2 turning)").arg(g.strides).arg(g.turningStrides));
+    setFigure("gaitStrideTime", tr("%1 s").arg(figure(g.strideTime_s, 3)));
+    setFigure("gaitStrideLength", tr("%1 m").arg(figure(g.strideLength_m, 3)));
+    setFigure("gaitCadence", tr("%1 steps/min").arg(figure(g.cadence_spm, 1)));
+    setFigure("gaitStanceSwing", tr("%1 % / %2 %").arg(figure(g.stancePct, 1), figure(g.swingPct, 1)));
+    setFigure("gaitClearance", tr("%1 m").arg(figure(g.clearance_m, 3)));
+}
+
+void SummaryPanel::setBothFeet(const std::optional<BilateralGait>& walk)
+{
+    bothFeet_ = walk;
+    showBothFeetFigures();
+}
+
+void SummaryPanel::showBothFeetFigures()
+{
+    const bool shown = bothFeet_.has_value() && !live_;
+    bothFeetGroup_->setVisible(shown);
+    if (!shown)
+        return;
+    const BilateralGait& walk = *bothFeet_;
+    const DoubleSupportSummary& ds = walk.doubleSupport;
+    setFigure("doubleSupport", tr("%1 % of the gait cycle (%2 strides)").arg(number(ds.meanPct, 1)).arg(ds.cycles));
+    const auto stance = [](const GaitSummary& g) { return number(g.straightStrides > 0 ? g.stancePct : GaitStatistics::kNone, 1); };
+    setFigure("stanceLeftRight", tr("%1 % / %2 %").arg(stance(walk.left), stance(walk.right)));
+    const auto index = [](double value) { return tr("%1 %").arg(number(value, 1)); };
+    setFigure("symmetryStrideTime", index(walk.symmetry.strideTimePct));
+    setFigure("symmetryStrideLength", index(walk.symmetry.strideLengthPct));
+    setFigure("symmetryStance", index(walk.symmetry.stancePct));
+    setFigure("symmetrySwing", index(walk.symmetry.swingPct));
+    QStringList notes;
+    for (const std::string& warning : walk.warnings)
+        notes.append(QString::fromStdString(warning));
+    bothFeetNotes_->setText(notes.join(QLatin1Char('\n')));
+    bothFeetNotes_->setVisible(!notes.isEmpty());
 }
 
 void SummaryPanel::showReferenceFigures()
