@@ -74,7 +74,10 @@ QJsonObject walkJson(const FootPair& pair, const BilateralGait& walk, const std:
                                                         {"swing", figure(s.swingPct)}}}};
     if (check)
         json["against_labels"] = QJsonObject{{"labelled", doubleSupportJson(check->labelled)},
-                                             {"detected", doubleSupportJson(check->detected)}};
+                                             {"detected", doubleSupportJson(check->detected)},
+                                             {"matched_strides", static_cast<qint64>(check->matchedStrides)},
+                                             {"matched_labelled_pct", figure(check->matchedLabelledPct)},
+                                             {"matched_detected_pct", figure(check->matchedDetectedPct)}};
     QJsonArray notes;
     for (const std::string& note : pair.notes)
         notes.append(QString::fromStdString(note));
@@ -104,10 +107,13 @@ void printWalk(const FootPair& pair, const BilateralGait& walk, const std::optio
     std::printf("symmetry index  stride time %+.1f %%, stride length %+.1f %%, stance %+.1f %%, swing %+.1f %% "
                 "(100 (L - R) / mean; + left larger)\n",
                 s.strideTimePct, s.strideLengthPct, s.stancePct, s.swingPct);
-    if (check)
-        std::printf("against labels  double support %.1f %% detected over %zu strides, %.1f %% labelled over %zu "
-                    "(every stride of the labelled trial, turns included)\n",
+    if (check) {
+        std::printf("against labels  double support on the %zu strides both have: %.1f %% detected, %.1f %% labelled\n",
+                    check->matchedStrides, check->matchedDetectedPct, check->matchedLabelledPct);
+        std::printf("                over every stride of the labelled trial (turns included): %.1f %% detected over "
+                    "%zu strides, %.1f %% labelled over %zu\n",
                     check->detected.meanPct, check->detected.cycles, check->labelled.meanPct, check->labelled.cycles);
+    }
     for (const std::string& note : pair.notes)
         std::printf("note            %s\n", note.c_str());
     for (const std::string& warning : walk.warnings)

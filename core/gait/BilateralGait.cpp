@@ -92,6 +92,29 @@ std::vector<GaitCycle> cyclesInsideTrial(const Recording& recording, const Resul
     return cycles;
 }
 
+/// Means over the strides of both lists whose heel strikes lie within 0.1 s of each other (a
+/// tenth of a stride: the other foot strikes half a stride away).
+void matchStrides(const std::vector<CycleDoubleSupport>& labelled, const std::vector<CycleDoubleSupport>& detected,
+                  DoubleSupportCheck& check)
+{
+    constexpr double kMatch_s = 0.1;
+    double labelledSum = 0.0, detectedSum = 0.0;
+    for (const CycleDoubleSupport& label : labelled) {
+        const auto found = std::find_if(detected.begin(), detected.end(), [&label](const CycleDoubleSupport& d) {
+            return std::abs(d.heelStrike_s - label.heelStrike_s) < kMatch_s;
+        });
+        if (found == detected.end())
+            continue;
+        ++check.matchedStrides;
+        labelledSum += label.pct;
+        detectedSum += found->pct;
+    }
+    if (check.matchedStrides == 0)
+        return;
+    check.matchedLabelledPct = labelledSum / static_cast<double>(check.matchedStrides);
+    check.matchedDetectedPct = detectedSum / static_cast<double>(check.matchedStrides);
+}
+
 }  // namespace
 
 double symmetryIndexPct(double left, double right)
@@ -105,13 +128,13 @@ double symmetryIndexPct(double left, double right)
 std::vector<FootSwing> swingsOf(const std::vector<GaitEvent>& events)
 {
     std::vector<FootSwing> swings;
-    std::optional<double> toeOff;
+    double toeOff = std::numeric_limits<double>::quiet_NaN();  // NaN: no toe off since the last heel strike
     for (const GaitEvent& event : events) {
         if (event.kind == GaitEventKind::ToeOff)
             toeOff = event.time_s;
-        else if (event.kind == GaitEventKind::HeelStrike && toeOff) {
-            swings.push_back({*toeOff, event.time_s});
-            toeOff.reset();
+        else if (event.kind == GaitEventKind::HeelStrike && !std::isnan(toeOff)) {
+            swings.push_back({toeOff, event.time_s});
+            toeOff = std::numeric_limits<double>::quiet_NaN();
         }
     }
     return swings;
@@ -237,12 +260,15 @@ std::optional<DoubleSupportCheck> checkDoubleSupportAgainstLabels(const Recordin
     const std::vector<FootSwing> rightLabels = referenceSwings(rightRecording);
     if (leftLabels.empty() || rightLabels.empty())
         return std::nullopt;
+    const BilateralGait labelled =
+        doubleSupportOfWalk(cyclesBetween(leftLabels), leftLabels, cyclesBetween(rightLabels), rightLabels);
+    const BilateralGait detected =
+        doubleSupportOfWalk(cyclesInsideTrial(leftRecording, left), swingsOf(left.gaitEvents),
+                            cyclesInsideTrial(rightRecording, right), swingsOf(right.gaitEvents));
     DoubleSupportCheck check;
-    check.labelled = doubleSupportOfWalk(cyclesBetween(leftLabels), leftLabels, cyclesBetween(rightLabels), rightLabels)
-                         .doubleSupport;
-    check.detected = doubleSupportOfWalk(cyclesInsideTrial(leftRecording, left), swingsOf(left.gaitEvents),
-                                         cyclesInsideTrial(rightRecording, right), swingsOf(right.gaitEvents))
-                         .doubleSupport;
+    check.labelled = labelled.doubleSupport;
+    check.detected = detected.doubleSupport;
+    matchStrides(labelled.perCycle, detected.perCycle, check);
     return check;
 }
 

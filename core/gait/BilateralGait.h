@@ -104,9 +104,14 @@ BilateralGait analyseBilateralGait(const Result& left, const Result& right);
 /// LeftFootEvents and RightFootEvents): the labels' figure and the detector's over the same span,
 /// every cycle inside each recording's labelled trial, turning ones included (the labels do not
 /// mark turns). Nothing when either recording has no labelled swings.
+/// matched*: the strides both have (heel strikes within 0.1 s of each other), where the two
+/// figures differ only by the event timing, not by which strides count.
 struct DoubleSupportCheck {
     DoubleSupportSummary labelled;
     DoubleSupportSummary detected;
+    std::size_t matchedStrides = 0;
+    double matchedLabelledPct = DoubleSupportSummary::kNone;
+    double matchedDetectedPct = DoubleSupportSummary::kNone;
 };
 std::optional<DoubleSupportCheck> checkDoubleSupportAgainstLabels(const Recording& leftRecording, const Result& left,
                                                                   const Recording& rightRecording, const Result& right);
