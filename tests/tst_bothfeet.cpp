@@ -13,6 +13,7 @@
 #include <QFileInfo>
 #include <QGroupBox>
 #include <QLabel>
+#include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -86,6 +87,19 @@ private slots:
         const QString pdf = dir.filePath(QStringLiteral("both.pdf"));
         QCOMPARE(window.writeReport(pdf), QString());
         QVERIFY(QFileInfo(pdf).size() > 10000);
+        if (!QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty()) {
+            QProcess text;
+            text.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+            QVERIFY(text.waitForFinished(60000));
+            const QString report = QString::fromUtf8(text.readAllStandardOutput()).simplified();
+            for (const QString& expectedText :
+                 {QStringLiteral("1-4_lf.txt + 1-4_rf.txt"), QStringLiteral("Gait (heel strike to toe"),  // "off" is set with an ff ligature
+                  QStringLiteral("Both feet"), QStringLiteral("Double support (both feet on the ground) ")
+                                                   + QString::number(walk.doubleSupport.meanPct, 'f', 1)
+                                                   + QStringLiteral(" % of the gait cycle"),
+                  QStringLiteral("Symmetry index: stride length")})
+                QVERIFY2(report.contains(expectedText), qPrintable(expectedText));
+        }
 
         // A parameter change re-estimates the right foot too.
         const std::shared_ptr<const Result> rightBefore = window.otherFoot()->result();
