@@ -171,6 +171,33 @@ private slots:
         QVERIFY(figureText(panel, "pathLength").contains(QLocale().toString(walk.result->summary.pathLength_m, 'f', 2)));
     }
 
+    void theGaitFiguresAreTheResultsGaitMeans()
+    {
+        const EstimatedWalk& walk = straightWalk();
+        const GaitSummary& gait = walk.result->gait;
+        QVERIFY(gait.straightStrides > 5);
+        SummaryPanel panel;
+        panel.setResult(walk.result);
+        QVERIFY(panel.findChild<QGroupBox*>(QStringLiteral("gaitFigures"))->isVisibleTo(&panel));
+        QCOMPARE(figureText(panel, "gaitStrides"), QStringLiteral("%1 (%2 turning)").arg(gait.strides).arg(gait.turningStrides));
+        QCOMPARE(figureText(panel, "gaitStrideTime"), QLocale().toString(gait.strideTime_s, 'f', 3) + QStringLiteral(" s"));
+        QCOMPARE(figureText(panel, "gaitStanceSwing"), QLocale().toString(gait.stancePct, 'f', 1) + QStringLiteral(" % / ")
+                                                           + QLocale().toString(gait.swingPct, 'f', 1) + QStringLiteral(" %"));
+        // Both feet only when set, and not under a live session.
+        auto* bothFeet = panel.findChild<QGroupBox*>(QStringLiteral("bothFeet"));
+        QVERIFY(!bothFeet->isVisibleTo(&panel));
+        const BilateralGait both = analyseBilateralGait(*walk.result, *walk.result);  // one foot twice: symmetric
+        panel.setBothFeet(both);
+        QVERIFY(bothFeet->isVisibleTo(&panel));
+        QCOMPARE(figureText(panel, "symmetryStrideLength"), QLocale().toString(0.0, 'f', 1) + QStringLiteral(" %"));
+        panel.showLive(walk.result);
+        QVERIFY(!bothFeet->isVisibleTo(&panel));
+        panel.showRecorded();
+        QVERIFY(bothFeet->isVisibleTo(&panel));
+        panel.setBothFeet(std::nullopt);
+        QVERIFY(!bothFeet->isVisibleTo(&panel));
+    }
+
     void theTableHasOneSortableRowPerStep()
     {
         const Result& result = *straightWalk().result;
