@@ -1,5 +1,6 @@
 #include "SummaryPanel.h"
 #include "WarningOverlay.h"
+#include "gait/GaitEvents.h"
 #include "nav/Pipeline.h"
 #include "sim/WalkSimulator.h"
 
@@ -207,7 +208,21 @@ private slots:
         QVERIFY(table);
         QAbstractItemModel* model = table->model();
         QCOMPARE(static_cast<std::size_t>(model->rowCount()), result.steps.size());
-        QCOMPARE(model->columnCount(), 11);  // with Motion and Baro height (hidden without pressure)
+        // With Motion and Baro height (hidden without pressure), then the gait stride's heel strike,
+        // toe off, stance % and clearance.
+        QCOMPARE(model->columnCount(), 15);
+        QCOMPARE(model->headerData(11, Qt::Horizontal).toString(), QStringLiteral("Heel strike (s)"));
+        const std::vector<const GaitStride*> strides = gaitStridesOfSteps(result);
+        int withStride = 0;
+        for (int row = 0; row < model->rowCount(); ++row) {
+            const GaitStride* stride = strides[std::size_t(row)];
+            const double heelStrike = model->index(row, 11).data(Qt::UserRole).toDouble();
+            withStride += stride != nullptr;
+            QVERIFY(stride ? heelStrike == stride->heelStrike.time_s : std::isnan(heelStrike));
+            if (stride)
+                QCOMPARE(model->index(row, 13).data(Qt::UserRole).toDouble(), stride->stancePct);
+        }
+        QVERIFY(withStride >= model->rowCount() - 2);  // all but the first and last stance
         constexpr int strideColumn = 4;
         table->sortByColumn(strideColumn, Qt::DescendingOrder);
         for (int row = 1; row < model->rowCount(); ++row)

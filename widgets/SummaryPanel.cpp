@@ -3,6 +3,7 @@
 #include "MotionLanes.h"
 #include "PlotInteraction.h"
 #include "WarningOverlay.h"
+#include "gait/GaitEvents.h"
 
 #include <QAbstractTableModel>
 #include <QApplication>
@@ -207,7 +208,7 @@ Histogram makeHistogram(const std::vector<double>& values, double minimumBinWidt
 class SummaryPanel::StepTableModel : public QAbstractTableModel {
 public:
     enum Column { Number, StanceStart, StanceEnd, StanceDuration, StrideLength, StrideDuration, X, Y, Z, Motion, BaroHeight,
-                  ColumnCount };
+                  HeelStrike, ToeOff, GaitStancePct, Clearance, ColumnCount };
     static constexpr int kSortRole = Qt::UserRole;
 
     using QAbstractTableModel::QAbstractTableModel;
@@ -219,6 +220,7 @@ public:
         stepWarnings_.clear();
         for (std::size_t step = 0; result_ && step < result_->steps.size(); ++step)
             stepWarnings_.push_back(warningsOfStep(*result_, step));
+        gaitStrides_ = result_ ? gaitStridesOfSteps(*result_) : std::vector<const GaitStride*>();
         endResetModel();
     }
 
@@ -305,6 +307,21 @@ private:
         case Z: return step.position_m.z();
         case Motion: return static_cast<int>(step.motion);
         case BaroHeight: return step.baroHeight_m;
+        default: return gaitValueAt(row, column);
+        }
+    }
+
+    /// The gait stride's figures (heel strike to toe off); NaN, shown as a dash, without a stride.
+    double gaitValueAt(int row, int column) const
+    {
+        const GaitStride* stride = gaitStrides_[static_cast<std::size_t>(row)];
+        if (!stride)
+            return std::numeric_limits<double>::quiet_NaN();
+        switch (column) {
+        case HeelStrike: return stride->heelStrike.time_s;
+        case ToeOff: return stride->toeOff.time_s;
+        case GaitStancePct: return stride->stancePct;
+        case Clearance: return stride->clearance_m;
         default: return 0.0;
         }
     }
@@ -312,7 +329,14 @@ private:
     static int decimalsOf(int column)
     {
         // Times to a millisecond (a 200 Hz sample is 5 ms), positions to a centimetre.
-        return column == Number ? 0 : (column >= X ? 2 : 3);
+        switch (column) {
+        case Number: return 0;
+        case GaitStancePct: return 1;
+        case HeelStrike:
+        case ToeOff:
+        case Clearance: return 3;
+        default: return column >= X ? 2 : 3;
+        }
     }
 
     static QString title(int column)
@@ -329,6 +353,10 @@ private:
         case Z: return SummaryPanel::tr("z (m)");
         case Motion: return MotionLanes::tr("Motion");
         case BaroHeight: return MotionLanes::tr("Baro height (m)");
+        case HeelStrike: return SummaryPanel::tr("Heel strike (s)");
+        case ToeOff: return SummaryPanel::tr("Toe off (s)");
+        case GaitStancePct: return SummaryPanel::tr("Gait stance (%)");
+        case Clearance: return SummaryPanel::tr("Clearance (m)");
         default: return {};
         }
     }
@@ -346,12 +374,17 @@ private:
         case Z: return SummaryPanel::tr("Mean position during the stance, relative to the start");
         case Motion: return MotionLanes::tr("How the foot got to this step: level, stairs or elevator (from the barometer)");
         case BaroHeight: return MotionLanes::tr("Barometric height at this stance against the first one");
+        case HeelStrike: return SummaryPanel::tr("The gait stride whose stance holds this step: when the foot landed");
+        case ToeOff: return SummaryPanel::tr("When the foot left the ground (the end of the gait lab's stance)");
+        case GaitStancePct: return SummaryPanel::tr("Heel strike to toe off, % of the stride time");
+        case Clearance: return SummaryPanel::tr("Highest point of the swing after this stance above it");
         default: return {};
         }
     }
 
     std::shared_ptr<const Result> result_;
     std::vector<std::vector<std::size_t>> stepWarnings_;  ///< per step: indices into result_->warnings
+    std::vector<const GaitStride*> gaitStrides_;  ///< per step: its gait stride or null (gaitStridesOfSteps)
 };
 
 // --- Construction -------------------------------------------------------------------------------
