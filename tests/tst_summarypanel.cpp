@@ -249,6 +249,14 @@ private slots:
         QVERIFY(strideBars && stanceBars);
         QCOMPARE(sum(*strideBars), static_cast<double>(stats.strides));
         QCOMPARE(sum(*stanceBars), static_cast<double>(stats.stancePhases));
+        // The gait tab: one point per gait stride.
+        const std::vector<GaitStride>& strides = straightWalk().result->gaitStrides;
+        QXYSeries* gaitStance = lineSeries(panel, "gaitStanceChart");
+        QXYSeries* clearance = lineSeries(panel, "clearanceChart");
+        QVERIFY(gaitStance && clearance && !strides.empty());
+        QCOMPARE(std::size_t(gaitStance->count()), strides.size());
+        QCOMPARE(gaitStance->at(0).y(), strides.front().stancePct);
+        QCOMPARE(clearance->at(clearance->count() - 1).y(), strides.back().clearance_m);
     }
 
     void histogramsUseNiceBinsAndCountEveryValue()

@@ -395,6 +395,8 @@ SummaryPanel::SummaryPanel(QWidget* parent) : QWidget(parent)
     stanceDurationChart_ = createChartView(QStringLiteral("stanceDurationChart"));
     strideLengthHistogram_ = createChartView(QStringLiteral("strideLengthHistogram"));
     stanceDurationHistogram_ = createChartView(QStringLiteral("stanceDurationHistogram"));
+    gaitStanceChart_ = createChartView(QStringLiteral("gaitStanceChart"));
+    clearanceChart_ = createChartView(QStringLiteral("clearanceChart"));
     strideLengthHistogram_->installEventFilter(this);
     stanceDurationHistogram_->installEventFilter(this);
 
@@ -403,6 +405,7 @@ SummaryPanel::SummaryPanel(QWidget* parent) : QWidget(parent)
     tabs->addTab(createTable(), tr("Steps"));
     tabs->addTab(createChartPair(strideLengthChart_, stanceDurationChart_), tr("Per step"));
     tabs->addTab(createChartPair(strideLengthHistogram_, stanceDurationHistogram_), tr("Distributions"));
+    tabs->addTab(createChartPair(gaitStanceChart_, clearanceChart_), tr("Gait"));
 
     auto* splitter = new QSplitter(Qt::Horizontal);
     splitter->addWidget(createFigures());
@@ -1029,10 +1032,19 @@ void SummaryPanel::showCharts()
                   makeHistogram(s.strideLengths_m, kStrideLengthBin_m));
     showHistogram(stanceDurationHistogram_, tr("Stance duration"), tr("Stance duration (s)"),
                   makeHistogram(s.stanceDurations_s, kStanceDurationBin_s));
+    std::vector<double> stancePct, clearance_m;
+    static const std::vector<GaitStride> none;  // both branches lvalues: the strides are not copied
+    for (const GaitStride& stride : result_ ? result_->gaitStrides : none) {
+        stancePct.push_back(stride.stancePct);
+        clearance_m.push_back(stride.clearance_m);
+    }
+    showPerStepChart(gaitStanceChart_, tr("Gait stance per stride (heel strike to toe off)"), tr("Stance (% of the stride)"),
+                     1, stancePct, tr("Stride"));
+    showPerStepChart(clearanceChart_, tr("Foot clearance per stride"), tr("Clearance (m)"), 1, clearance_m, tr("Stride"));
 }
 
 void SummaryPanel::showPerStepChart(QChartView* view, const QString& title, const QString& yTitle,
-                                    std::size_t firstStep, const std::vector<double>& values)
+                                    std::size_t firstStep, const std::vector<double>& values, const QString& xTitle)
 {
     QChart* chart = view->chart();
     removeSeriesAndAxes(chart);
@@ -1044,7 +1056,7 @@ void SummaryPanel::showPerStepChart(QChartView* view, const QString& title, cons
     for (std::size_t i = 0; i < values.size(); ++i)
         series->append(static_cast<double>(firstStep + i), values[i]);
     chart->addSeries(series);
-    QValueAxis* x = addValueAxis(chart, Qt::AlignBottom, tr("Step"));
+    QValueAxis* x = addValueAxis(chart, Qt::AlignBottom, xTitle.isEmpty() ? tr("Step") : xTitle);
     QValueAxis* y = addValueAxis(chart, Qt::AlignLeft, yTitle);
     series->attachAxis(x);
     series->attachAxis(y);

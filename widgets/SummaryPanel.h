@@ -153,8 +153,9 @@ private:
     void showMotionAndNotes();
     void setFigure(const QString& key, const QString& text);
     void showCharts();
+    /// xTitle empty: "Step".
     void showPerStepChart(QChartView* view, const QString& title, const QString& yTitle, std::size_t firstStep,
-                          const std::vector<double>& values);
+                          const std::vector<double>& values, const QString& xTitle = QString());
     void showHistogram(QChartView* view, const QString& title, const QString& xTitle, const Histogram& histogram);
     void labelHistogramEdges(QChartView* view);
 
@@ -190,6 +191,8 @@ private:
     QChartView* stanceDurationChart_ = nullptr;
     QChartView* strideLengthHistogram_ = nullptr;
     QChartView* stanceDurationHistogram_ = nullptr;
+    QChartView* gaitStanceChart_ = nullptr;  ///< per gait stride: heel strike to toe off, %
+    QChartView* clearanceChart_ = nullptr;   ///< per gait stride: foot clearance
     std::map<QChartView*, Histogram> shownHistograms_;  ///< to relabel the edges on resize
 };
 
