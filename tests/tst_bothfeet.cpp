@@ -97,7 +97,7 @@ private slots:
                   QStringLiteral("Both feet"), QStringLiteral("Double support (both feet on the ground) ")
                                                    + QString::number(walk.doubleSupport.meanPct, 'f', 1)
                                                    + QStringLiteral(" % of the gait cycle"),
-                  QStringLiteral("Symmetry index: stride length")})
+                  QStringLiteral("Symmetry index: stride length"), QStringLiteral("Figure 9. Gait stance")})
                 QVERIFY2(report.contains(expectedText), qPrintable(expectedText));
         }
 

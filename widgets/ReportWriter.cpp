@@ -531,6 +531,28 @@ void drawGaitFigures(PageComposer& page, QPainter& painter, const GaitStatistics
                 });
 }
 
+/// The gait lab's stance (heel strike to toe off) and the foot clearance of every gait stride.
+void drawGaitStrideFigures(PageComposer& page, QPainter& painter, const std::vector<GaitStride>& gaitStrides)
+{
+    if (gaitStrides.empty())
+        return;
+    QVector<double> numbers, stancePct, clearance;
+    for (const GaitStride& stride : gaitStrides) {
+        numbers << double(numbers.size() + 1);
+        stancePct << stride.stancePct;
+        clearance << stride.clearance_m;
+    }
+    page.figure(tr("Figure 9. Gait stance (heel strike to toe off, left) and foot clearance (right) per stride."),
+                page.mm(50), [&](const QRectF& r) {
+                    const QRectF left(r.left(), r.top(), r.width() / 2 - page.mm(2), r.height());
+                    const QRectF right(r.center().x() + page.mm(2), r.top(), r.width() / 2 - page.mm(2), r.height());
+                    painter.save();
+                    drawBars(painter, left, numbers, stancePct, tr("stride"), tr("stance (% of the stride)"), 0.7, 380);
+                    painter.restore();
+                    drawBars(painter, right, numbers, clearance, tr("stride"), tr("clearance (m)"), 0.7, 380);
+                });
+}
+
 void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
 {
     const Result& result = *c.result;
@@ -574,6 +596,7 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
     page.figure(detectorFigureCaption(c.parameters, from, to), page.mm(paper ? 170 : 110),
                 [&](const QRectF& r) { drawPlot(painter, flags.plot(), r); });
     drawGaitFigures(page, painter, computeGaitStatistics(result, c.recording.get()));
+    drawGaitStrideFigures(page, painter, result.gaitStrides);
 }
 
 }  // namespace
