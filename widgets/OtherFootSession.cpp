@@ -72,6 +72,9 @@ void OtherFootSession::combine()
         return;
     if (left && result_) {
         bothFeet_ = analyseBilateralGait(*left, *result_);
+        // How the sides were decided travels with the figures (summary, report).
+        for (const QString& note : notes_)
+            bothFeet_->warnings.insert(bothFeet_->warnings.begin(), note.toStdString());
         alignedPath_ = otherFootPathAligned(*left, *result_);
     } else {
         bothFeet_.reset();

@@ -39,7 +39,8 @@ public:
     QStringList notes() const { return notes_; }
     std::shared_ptr<const Recording> recording() const { return recording_; }
     std::shared_ptr<const Result> result() const { return result_; }
-    /// Double support and symmetry; nothing until both feet have a result.
+    /// Double support and symmetry (its warnings led by the pairing's notes); nothing until both
+    /// feet have a result.
     const std::optional<BilateralGait>& bothFeet() const { return bothFeet_; }
     /// The right foot's path turned and shifted onto the left's; empty until both have a result.
     const std::vector<Eigen::Vector3d>& alignedPath() const { return alignedPath_; }
