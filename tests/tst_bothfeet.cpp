@@ -125,6 +125,24 @@ private slots:
         QVERIFY2(problem.contains(QStringLiteral("both named as the left foot")), qPrintable(problem));
         QVERIFY(!window.otherFoot()->isActive());
         QVERIFY(!window.session()->recording());
+        // A folder of many walks: which pair is meant is not for Footpath to guess.
+        const QString folder = window.openRecordings({datasetPath(QStringLiteral("xsens-mtw-ipol"))});
+        QVERIFY2(folder.contains(QStringLiteral("6 left/right pairs")), qPrintable(folder));
+        QVERIFY(!window.session()->recording());
+    }
+
+    void opensTheOnePairOfAFolder()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        QTemporaryDir dir;
+        for (const char* name : {"10-1_lf.txt", "10-1_rf.txt", "10-1.json"})
+            QVERIFY(QFile::copy(datasetPath(QStringLiteral("xsens-mtw-ipol/") + QLatin1String(name)), dir.filePath(QLatin1String(name))));
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_bothfeet"));
+        MainWindow window(settings);
+        QCOMPARE(window.openRecordings({dir.path()}), QString());
+        QTRY_VERIFY_WITH_TIMEOUT(window.otherFoot()->bothFeet().has_value() && !window.session()->isEstimating(), 60000);
+        QCOMPARE(QFileInfo(window.session()->recordingPath()).fileName(), QStringLiteral("10-1_lf.txt"));
+        QCOMPARE(QFileInfo(window.otherFoot()->path()).fileName(), QStringLiteral("10-1_rf.txt"));
     }
 };
 
