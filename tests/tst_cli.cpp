@@ -147,6 +147,8 @@ private slots:
     void writeFailure_namesTheFileAndTheReason();
     void badRows_areSkippedWithAWarningOrRefused();
     void counts_printAsIntegers();
+    void gait_pairsTheFeetByNameAndReportsDoubleSupport();
+    void gait_refusesAnythingButOneWalksTwoFeet();
     void screenshotOfAHeaderlessFile_finishes();
     void guiHelpAndVersion_needNoDisplay_data();
     void guiHelpAndVersion_needNoDisplay();
@@ -850,7 +852,7 @@ void TestCli::noArguments_printsUsageToStderrAndExitsTwo()
     VERIFY_EXIT(run, kExitBadInput);
     QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
     QVERIFY(run.err.contains(QStringLiteral("no command given")));
-    QVERIFY(run.err.contains(QStringLiteral("process, eval, compare, tune, info, report, record")));
+    QVERIFY(run.err.contains(QStringLiteral("process, eval, compare, tune, gait, info, report, record")));
 }
 
 void TestCli::commandHelp_printsThatCommandsOptions_data()
@@ -868,6 +870,8 @@ void TestCli::commandHelp_printsThatCommandsOptions_data()
                           << QStringLiteral("footpath-cli record");
     QTest::newRow("compare") << QStringList{"compare", "--help"}
                              << QStringList{"footpath-cli compare INPUT", "--sets", "zupt"} << eval;
+    QTest::newRow("gait") << QStringList{"gait", "--help"}
+                          << QStringList{"footpath-cli gait LEFT RIGHT", "double support", "one clock"} << eval;
     QTest::newRow("info") << QStringList{"info", "--help"} << QStringList{"footpath-cli info INPUT", "--columns"}
                           << eval;
     QTest::newRow("report") << QStringList{"report", "--help"}
@@ -1023,6 +1027,52 @@ void TestCli::badRows_areSkippedWithAWarningOrRefused()
     const QString oneGoodPath = work.filePath(QStringLiteral("one-good.csv"));
     QVERIFY(writeFile(oneGoodPath, oneGood.join(QLatin1Char('\n')).toUtf8() + "\n"));
     VERIFY_EXIT(runCli({QStringLiteral("info"), oneGoodPath}), kExitBadInput);
+}
+
+void TestCli::gait_pairsTheFeetByNameAndReportsDoubleSupport()
+{
+    FOOTPATH_REQUIRE_DATASETS();
+    const QString left = datasetPath(QStringLiteral("xsens-mtw-ipol/1-4_lf.txt"));
+    const QString right = datasetPath(QStringLiteral("xsens-mtw-ipol/1-4_rf.txt"));
+    const Run run = runCli({QStringLiteral("gait"), right, left, QStringLiteral("--json")});  // right first
+    VERIFY_EXIT(run, 0);
+    QString error;
+    const QJsonObject root = readJsonObject(run.out.toUtf8(), &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(root.value(QStringLiteral("left")).toString(), left);
+    QCOMPARE(root.value(QStringLiteral("right")).toString(), right);
+    const QJsonObject support = root.value(QStringLiteral("double_support")).toObject();
+    const double meanPct = support.value(QStringLiteral("mean_pct")).toDouble();
+    QVERIFY2(meanPct > 15.0 && meanPct < 35.0, qPrintable(QString::number(meanPct)));
+    QVERIFY(support.value(QStringLiteral("strides")).toInt() >= 20);
+    for (const char* key : {"stride_time", "stride_length", "stance", "swing"})
+        QVERIFY2(root.value(QStringLiteral("symmetry_index_pct")).toObject().value(QLatin1String(key)).isDouble(), key);
+    // The IPOL labels travel with the files: both figures over the same strides.
+    const QJsonObject labels = root.value(QStringLiteral("against_labels")).toObject();
+    QVERIFY(labels.value(QStringLiteral("matched_strides")).toInt() >= 25);
+    QVERIFY(std::abs(labels.value(QStringLiteral("matched_detected_pct")).toDouble()
+                     - labels.value(QStringLiteral("matched_labelled_pct")).toDouble()) < 3.0);
+
+    const Run table = runCli({QStringLiteral("gait"), left, right});
+    VERIFY_EXIT(table, 0);
+    QVERIFY2(table.out.contains(QStringLiteral("double support  %1 % of the gait cycle").arg(meanPct, 0, 'f', 1)),
+             qPrintable(table.out));
+    QVERIFY(table.out.contains(QStringLiteral("symmetry index  stride time")));
+}
+
+void TestCli::gait_refusesAnythingButOneWalksTwoFeet()
+{
+    const QString walk = walkCsv_;
+    const Run one = runCli({QStringLiteral("gait"), walk});
+    VERIFY_EXIT(one, kExitBadInput);
+    QVERIFY2(one.err.contains(QStringLiteral("gait takes two files")), qPrintable(one.err));
+    const Run twoLefts = runCli({QStringLiteral("gait"), QStringLiteral("a_lf.txt"), QStringLiteral("b_lf.txt")});
+    VERIFY_EXIT(twoLefts, kExitBadInput);
+    QVERIFY2(twoLefts.err.contains(QStringLiteral("both named as the left foot")), qPrintable(twoLefts.err));
+    const Run output = runCli({QStringLiteral("gait"), QStringLiteral("a_lf.txt"), QStringLiteral("a_rf.txt"),
+                               QStringLiteral("--trajectory"), QStringLiteral("t.csv")});
+    VERIFY_EXIT(output, kExitBadInput);
+    QVERIFY2(output.err.contains(QStringLiteral("gait takes the import options")), qPrintable(output.err));
 }
 
 void TestCli::counts_printAsIntegers()

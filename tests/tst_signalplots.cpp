@@ -211,6 +211,33 @@ private slots:
         QVERIFY(!plots.isStanceShaded(times[firstStance]));
     }
 
+    void marksHeelStrikesAndToeOffsOnTheAngularRateRow()
+    {
+        const Walk walk = simulatedWalk(true, true);
+        SignalPlots plots;
+        plots.setRecording(walk.recording);
+        QVERIFY(plots.gaitEventMarks(GaitEventKind::HeelStrike)->data()->isEmpty());
+        plots.setResult(walk.result);
+        std::vector<double> strikes, offs;
+        for (const GaitEvent& event : walk.result->gaitEvents) {
+            if (event.kind == GaitEventKind::HeelStrike)
+                strikes.push_back(event.time_s);
+            else if (event.kind == GaitEventKind::ToeOff)
+                offs.push_back(event.time_s);
+        }
+        QVERIFY(strikes.size() > 5);
+        const QCPGraph* strikeMarks = plots.gaitEventMarks(GaitEventKind::HeelStrike);
+        const QCPGraph* offMarks = plots.gaitEventMarks(GaitEventKind::ToeOff);
+        QCOMPARE(std::size_t(strikeMarks->dataCount()), strikes.size());
+        QCOMPARE(std::size_t(offMarks->dataCount()), offs.size());
+        for (int i = 0; i < strikeMarks->dataCount(); ++i)
+            QCOMPARE(strikeMarks->data()->at(i)->key, strikes[std::size_t(i)]);
+        QCOMPARE(strikeMarks->valueAxis(), plots.axisRect(Row::AngularRate)->axis(QCPAxis::atLeft));
+        QVERIFY(plots.legend()->hasItemWithPlottable(strikeMarks) && plots.legend()->hasItemWithPlottable(offMarks));
+        plots.setResult(nullptr);
+        QVERIFY(strikeMarks->data()->isEmpty() && !plots.legend()->hasItemWithPlottable(strikeMarks));
+    }
+
     void drawsStanceBandsInEveryRow()
     {
         const Walk walk = simulatedWalk(true, true);

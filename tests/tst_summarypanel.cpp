@@ -1,5 +1,6 @@
 #include "SummaryPanel.h"
 #include "WarningOverlay.h"
+#include "gait/GaitEvents.h"
 #include "nav/Pipeline.h"
 #include "sim/WalkSimulator.h"
 
@@ -171,6 +172,33 @@ private slots:
         QVERIFY(figureText(panel, "pathLength").contains(QLocale().toString(walk.result->summary.pathLength_m, 'f', 2)));
     }
 
+    void theGaitFiguresAreTheResultsGaitMeans()
+    {
+        const EstimatedWalk& walk = straightWalk();
+        const GaitSummary& gait = walk.result->gait;
+        QVERIFY(gait.straightStrides > 5);
+        SummaryPanel panel;
+        panel.setResult(walk.result);
+        QVERIFY(panel.findChild<QGroupBox*>(QStringLiteral("gaitFigures"))->isVisibleTo(&panel));
+        QCOMPARE(figureText(panel, "gaitStrides"), QStringLiteral("%1 (%2 turning)").arg(gait.strides).arg(gait.turningStrides));
+        QCOMPARE(figureText(panel, "gaitStrideTime"), QLocale().toString(gait.strideTime_s, 'f', 3) + QStringLiteral(" s"));
+        QCOMPARE(figureText(panel, "gaitStanceSwing"), QLocale().toString(gait.stancePct, 'f', 1) + QStringLiteral(" % / ")
+                                                           + QLocale().toString(gait.swingPct, 'f', 1) + QStringLiteral(" %"));
+        // Both feet only when set, and not under a live session.
+        auto* bothFeet = panel.findChild<QGroupBox*>(QStringLiteral("bothFeet"));
+        QVERIFY(!bothFeet->isVisibleTo(&panel));
+        const BilateralGait both = analyseBilateralGait(*walk.result, *walk.result);  // one foot twice: symmetric
+        panel.setBothFeet(both);
+        QVERIFY(bothFeet->isVisibleTo(&panel));
+        QCOMPARE(figureText(panel, "symmetryStrideLength"), QLocale().toString(0.0, 'f', 1) + QStringLiteral(" %"));
+        panel.showLive(walk.result);
+        QVERIFY(!bothFeet->isVisibleTo(&panel));
+        panel.showRecorded();
+        QVERIFY(bothFeet->isVisibleTo(&panel));
+        panel.setBothFeet(std::nullopt);
+        QVERIFY(!bothFeet->isVisibleTo(&panel));
+    }
+
     void theTableHasOneSortableRowPerStep()
     {
         const Result& result = *straightWalk().result;
@@ -180,7 +208,21 @@ private slots:
         QVERIFY(table);
         QAbstractItemModel* model = table->model();
         QCOMPARE(static_cast<std::size_t>(model->rowCount()), result.steps.size());
-        QCOMPARE(model->columnCount(), 11);  // with Motion and Baro height (hidden without pressure)
+        // With Motion and Baro height (hidden without pressure), then the gait stride's heel strike,
+        // toe off, stance % and clearance.
+        QCOMPARE(model->columnCount(), 15);
+        QCOMPARE(model->headerData(11, Qt::Horizontal).toString(), QStringLiteral("Heel strike (s)"));
+        const std::vector<const GaitStride*> strides = gaitStridesOfSteps(result);
+        int withStride = 0;
+        for (int row = 0; row < model->rowCount(); ++row) {
+            const GaitStride* stride = strides[std::size_t(row)];
+            const double heelStrike = model->index(row, 11).data(Qt::UserRole).toDouble();
+            withStride += stride != nullptr;
+            QVERIFY(stride ? heelStrike == stride->heelStrike.time_s : std::isnan(heelStrike));
+            if (stride)
+                QCOMPARE(model->index(row, 13).data(Qt::UserRole).toDouble(), stride->stancePct);
+        }
+        QVERIFY(withStride >= model->rowCount() - 2);  // all but the first and last stance
         constexpr int strideColumn = 4;
         table->sortByColumn(strideColumn, Qt::DescendingOrder);
         for (int row = 1; row < model->rowCount(); ++row)
@@ -207,6 +249,14 @@ private slots:
         QVERIFY(strideBars && stanceBars);
         QCOMPARE(sum(*strideBars), static_cast<double>(stats.strides));
         QCOMPARE(sum(*stanceBars), static_cast<double>(stats.stancePhases));
+        // The gait tab: one point per gait stride.
+        const std::vector<GaitStride>& strides = straightWalk().result->gaitStrides;
+        QXYSeries* gaitStance = lineSeries(panel, "gaitStanceChart");
+        QXYSeries* clearance = lineSeries(panel, "clearanceChart");
+        QVERIFY(gaitStance && clearance && !strides.empty());
+        QCOMPARE(std::size_t(gaitStance->count()), strides.size());
+        QCOMPARE(gaitStance->at(0).y(), strides.front().stancePct);
+        QCOMPARE(clearance->at(clearance->count() - 1).y(), strides.back().clearance_m);
     }
 
     void histogramsUseNiceBinsAndCountEveryValue()

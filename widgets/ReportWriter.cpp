@@ -273,6 +273,58 @@ QList<QStringList> summaryRows(const GaitStatistics& g, const Summary& s)
     return rows;
 }
 
+/// The gait lab's figures of this foot (heel strike to toe off), means over the straight strides.
+QList<QStringList> gaitRows(const GaitSummary& g)
+{
+    const auto mean = [&g](double value, int decimals) {
+        return formatFigure(g.straightStrides > 0 ? value : std::nan(""), decimals);
+    };
+    QList<QStringList> rows{{tr("Figure"), tr("Value")}};
+    rows << QStringList{tr("Strides (turning)"), tr("%1 (%2)").arg(g.strides).arg(g.turningStrides)}
+         << QStringList{tr("Stride time"), tr("%1 s").arg(mean(g.strideTime_s, 3))}
+         << QStringList{tr("Stride length"), tr("%1 m").arg(mean(g.strideLength_m, 3))}
+         << QStringList{tr("Cadence"), tr("%1 steps/min").arg(mean(g.cadence_spm, 1))}
+         << QStringList{tr("Stance / swing"), tr("%1 % / %2 %").arg(mean(g.stancePct, 1), mean(g.swingPct, 1))}
+         << QStringList{tr("Foot clearance"), tr("%1 m").arg(mean(g.clearance_m, 3))};
+    return rows;
+}
+
+QList<QStringList> bothFeetRows(const BilateralGait& walk)
+{
+    const DoubleSupportSummary& ds = walk.doubleSupport;
+    const auto stance = [](const GaitSummary& g) { return formatFigure(g.straightStrides > 0 ? g.stancePct : std::nan(""), 1); };
+    QList<QStringList> rows{{tr("Figure"), tr("Value")}};
+    rows << QStringList{tr("Double support (both feet on the ground)"),
+                        tr("%1 % of the gait cycle (initial %2 %, terminal %3 %), %4 strides")
+                            .arg(formatFigure(ds.meanPct, 1), formatFigure(ds.initialPct, 1), formatFigure(ds.terminalPct, 1))
+                            .arg(ds.cycles)}
+         << QStringList{tr("Stance left / right"), tr("%1 % / %2 %").arg(stance(walk.left), stance(walk.right))}
+         << QStringList{tr("Symmetry index: stride time"), tr("%1 %").arg(formatFigure(walk.symmetry.strideTimePct, 1))}
+         << QStringList{tr("Symmetry index: stride length"), tr("%1 %").arg(formatFigure(walk.symmetry.strideLengthPct, 1))}
+         << QStringList{tr("Symmetry index: stance"), tr("%1 %").arg(formatFigure(walk.symmetry.stancePct, 1))}
+         << QStringList{tr("Symmetry index: swing"), tr("%1 %").arg(formatFigure(walk.symmetry.swingPct, 1))};
+    return rows;
+}
+
+void writeGait(PageComposer& page, const ReportContent& content)
+{
+    const Result& result = *content.result;
+    if (result.gait.strides > 0) {
+        page.heading(tr("Gait (heel strike to toe off)"));
+        page.paragraph(tr("From the gait events of %1: means over the strides that neither turn (more than 20 degrees) "
+                          "nor pause.").arg(content.bothFeet ? tr("the left foot") : tr("this foot")));
+        page.table(gaitRows(result.gait), {0.5, 0.5}, 9.0);
+    }
+    if (!content.bothFeet)
+        return;
+    page.heading(tr("Both feet"));
+    page.paragraph(tr("The left and the right foot's files on one clock (their own time stamps). Symmetry index: "
+                      "100 (left - right) / mean, 0 symmetric, positive where the left value is larger."));
+    page.table(bothFeetRows(*content.bothFeet), {0.5, 0.5}, 9.0);
+    for (const std::string& warning : content.bothFeet->warnings)
+        page.paragraph(tr("Note: %1").arg(QString::fromStdString(warning)));
+}
+
 QList<QStringList> parameterRows(const Parameters& params)
 {
     const Parameters defaults;
@@ -481,12 +533,36 @@ void drawGaitFigures(PageComposer& page, QPainter& painter, const GaitStatistics
                 });
 }
 
+/// The gait lab's stance (heel strike to toe off) and the foot clearance of every gait stride.
+void drawGaitStrideFigures(PageComposer& page, QPainter& painter, const std::vector<GaitStride>& gaitStrides)
+{
+    if (gaitStrides.empty())
+        return;
+    QVector<double> numbers, stancePct, clearance;
+    for (const GaitStride& stride : gaitStrides) {
+        numbers << double(numbers.size() + 1);
+        stancePct << stride.stancePct;
+        clearance << stride.clearance_m;
+    }
+    page.figure(tr("Figure 9. Gait stance (heel strike to toe off, left) and foot clearance (right) per stride."),
+                page.mm(50), [&](const QRectF& r) {
+                    const QRectF left(r.left(), r.top(), r.width() / 2 - page.mm(2), r.height());
+                    const QRectF right(r.center().x() + page.mm(2), r.top(), r.width() / 2 - page.mm(2), r.height());
+                    painter.save();
+                    drawBars(painter, left, numbers, stancePct, tr("stride"), tr("stance (% of the stride)"), 0.7, 380);
+                    painter.restore();
+                    drawBars(painter, right, numbers, clearance, tr("stride"), tr("clearance (m)"), 0.7, 380);
+                });
+}
+
 void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
 {
     const Result& result = *c.result;
     TrajectoryView2D view2D;
     view2D.resize(900, 640);
     view2D.setResult(c.result);
+    view2D.setPathLabel(c.pathLabel);
+    view2D.setOverlays(c.otherPaths);
     view2D.setReference(alignReferenceToEstimate(c.recording->reference.positions_m, result.position_m));
     page.figure(tr("Figure 1. The foot path seen from above (stance positions as dots; reference dashed when present)."),
                 page.mm(110), [&](const QRectF& r) { drawPlot(painter, view2D.plot(), r); });
@@ -495,6 +571,8 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
     TrajectoryView3D view3D;
     view3D.resize(900, 600);
     view3D.setResult(c.result);
+    view3D.setPathLabel(c.pathLabel);
+    view3D.setOverlays(c.otherPaths);
     view3D.setReference(alignReferenceToEstimate(c.recording->reference.positions_m, result.position_m));
     page.figure(tr("Figure 3. The path in 3D (reference dashed when present)."), page.mm(100), [&](const QRectF& r) {
         drawScaled(painter, r, 760, [&view3D](QPainter& recorder, QSize size) {
@@ -520,6 +598,7 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
     page.figure(detectorFigureCaption(c.parameters, from, to), page.mm(paper ? 170 : 110),
                 [&](const QRectF& r) { drawPlot(painter, flags.plot(), r); });
     drawGaitFigures(page, painter, computeGaitStatistics(result, c.recording.get()));
+    drawGaitStrideFigures(page, painter, result.gaitStrides);
 }
 
 }  // namespace
@@ -554,6 +633,7 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
                {0.5, 0.5}, 9.0);
     if (const QString motion = motionCountsSentence(*content.result); !motion.isEmpty())
         page.paragraph(MotionLanes::tr("Motion (barometer): %1.").arg(motion));
+    writeGait(page, content);
     writeWarnings(page, *content.result);
     writeMethodNotes(page, *content.result);
     writeComparison(page, content.comparison);

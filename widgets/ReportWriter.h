@@ -1,7 +1,9 @@
 #pragma once
 
 #include "Recording.h"
+#include "PathOverlay.h"
 #include "Result.h"
+#include "gait/BilateralGait.h"
 #include "io/Import.h"
 #include "nav/MethodSets.h"
 #include "nav/Parameters.h"
@@ -10,6 +12,8 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace footpath {
 
@@ -24,6 +28,11 @@ struct ReportContent {
     QString device;                                      ///< sensor/device when known
     /// The window's method comparison, when it has one: a "Method comparison" section.
     std::vector<ComparisonRow> comparison;
+    /// Both feet open: the result is the left foot's, otherPaths holds the right's path in its
+    /// frame (drawn in the path figures), bothFeet the double support and symmetry ("Both feet").
+    QString pathLabel;  ///< the main path's key entry; empty: "Foot path"
+    std::vector<PathOverlay> otherPaths;
+    std::optional<BilateralGait> bothFeet;
 };
 
 /// Writes the PDF report: header, summary and evaluation figures, the figures as vector graphics

@@ -180,7 +180,40 @@ void SignalPlots::createRows()
     stanceLegendEntry_->setName(tr("Stance"));
     stanceLegendEntry_->setPen(Qt::NoPen);
     stanceLegendEntry_->setBrush(kStanceBrush);
+    createGaitEventMarks();
     createWarningLane(alignedMargins);
+}
+
+void SignalPlots::createGaitEventMarks()
+{
+    // The gait lab's stance (heel strike to toe off) beside the shaded ZUPT stance (foot at rest):
+    // a mark pointing down where the foot lands, up where it leaves, on the zero line the
+    // sagittal rate crosses near both.
+    const QCPAxisRect* rate = rows_[slot(Row::AngularRate)].rect;
+    const auto marks = [&](const QString& name, QCPScatterStyle::ScatterShape shape, const QColor& colour) {
+        QCPGraph* graph = plot_->addGraph(timeAxis(rate), rate->axis(QCPAxis::atLeft));
+        graph->setName(name);
+        graph->setLineStyle(QCPGraph::lsNone);
+        graph->setScatterStyle(QCPScatterStyle(shape, colour, colour, 8));
+        graph->setSelectable(QCP::stNone);
+        return graph;
+    };
+    heelStrikes_ = marks(tr("Heel strike"), QCPScatterStyle::ssTriangleInverted, QColor(40, 40, 40));
+    toeOffs_ = marks(tr("Toe off"), QCPScatterStyle::ssTriangle, QColor(150, 40, 150));
+}
+
+void SignalPlots::plotGaitEvents()
+{
+    QVector<double> strikes, offs;
+    static const std::vector<GaitEvent> none;  // both branches lvalues: the events are not copied
+    for (const GaitEvent& event : result_ ? result_->gaitEvents : none) {
+        if (event.kind == GaitEventKind::HeelStrike)
+            strikes << event.time_s;
+        else if (event.kind == GaitEventKind::ToeOff)
+            offs << event.time_s;
+    }
+    heelStrikes_->setData(strikes, QVector<double>(strikes.size(), 0.0), true);
+    toeOffs_->setData(offs, QVector<double>(offs.size(), 0.0), true);
 }
 
 void SignalPlots::createWarningLane(QCPMarginGroup* alignedMargins)
@@ -259,6 +292,7 @@ void SignalPlots::setRecording(std::shared_ptr<const Recording> recording)
     static const Recording noRecording;  // both branches lvalues: the recording is not copied
     plotSignals(recording_ ? *recording_ : noRecording);
     plotStanceShading();
+    plotGaitEvents();
     for (std::size_t r = 0; r < kRowCount; ++r)
         rows_[r].group->setVisible(rowHasData(static_cast<Row>(r)));
     arrangeRows();
@@ -291,6 +325,7 @@ void SignalPlots::setResult(std::shared_ptr<const Result> result)
 {
     result_ = std::move(result);
     plotStanceShading();
+    plotGaitEvents();
     arrangeRows();  // the legend gains or loses its stance entry, the warning lane comes or goes
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
@@ -365,6 +400,8 @@ void SignalPlots::arrangeRows()
             if (slot(channelInfos()[c].row) == r && channelVisible_[c])
                 legendEntries.push_back(graphs_[c]);
         }
+        if (r == slot(Row::AngularRate) && !heelStrikes_->data()->isEmpty())
+            legendEntries.insert(legendEntries.end(), {heelStrikes_, toeOffs_});
         layout->addElement(shownCount++, 0, row.rect);
         bottom = row.rect;
     }
@@ -395,6 +432,10 @@ bool SignalPlots::isRowShown(Row row) const { return rows_[slot(row)].rect->layo
 QCPAxisRect* SignalPlots::axisRect(Row row) const { return rows_[slot(row)].rect; }
 QCPGraph* SignalPlots::graph(Channel channel) const { return graphs_[slot(channel)]; }
 QCPLegend* SignalPlots::legend() const { return legend_->legend(); }
+QCPGraph* SignalPlots::gaitEventMarks(GaitEventKind kind) const
+{
+    return kind == GaitEventKind::HeelStrike ? heelStrikes_ : kind == GaitEventKind::ToeOff ? toeOffs_ : nullptr;
+}
 bool SignalPlots::isStanceShaded(double time_s) const { return rows_.front().stance->contains(time_s); }
 QCPItemStraightLine* SignalPlots::cursorLine(Row row) const { return rows_[slot(row)].cursor; }
 QCPRange SignalPlots::timeRange() const { return timeRows_->range(); }

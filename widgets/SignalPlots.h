@@ -74,6 +74,9 @@ public:
     QCustomPlot* plot() const { return plot_; }
     QCPAxisRect* axisRect(Row row) const;
     QCPGraph* graph(Channel channel) const;
+    /// The result's heel strikes or toe offs, marked on the angular-rate row's zero line (for
+    /// tests); the other kinds are not drawn.
+    QCPGraph* gaitEventMarks(GaitEventKind kind) const;
     /// The legend above the rows: the shown channels (x, y, z once for all rows) and the stance.
     QCPLegend* legend() const;
     /// Whether time_s lies in a shaded stance span (the span from a stance's first sample to the
@@ -114,6 +117,8 @@ private:
     void wireInteractions();
     void plotSignals(const Recording& recording);
     void plotStanceShading();
+    void createGaitEventMarks();
+    void plotGaitEvents();
     void rescaleValueAxes();
     void arrangeRows();
     bool rowHasData(Row row) const;
@@ -125,6 +130,8 @@ private:
     std::array<QCPGraph*, kChannelCount> graphs_{};
     LegendStrip* legend_ = nullptr;  ///< one for all rows, above them
     QCPGraph* stanceLegendEntry_ = nullptr;  ///< draws nothing; gives the bands a legend entry
+    QCPGraph* heelStrikes_ = nullptr;  ///< on the angular-rate row, where the events are read
+    QCPGraph* toeOffs_ = nullptr;
     RowParts warningLane_;  ///< above the rows while the result has warnings
     WarningOverlay* warnings_ = nullptr;
     std::array<QCheckBox*, kChannelCount> channelBoxes_{};

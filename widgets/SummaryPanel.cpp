@@ -3,6 +3,7 @@
 #include "MotionLanes.h"
 #include "PlotInteraction.h"
 #include "WarningOverlay.h"
+#include "gait/GaitEvents.h"
 
 #include <QAbstractTableModel>
 #include <QApplication>
@@ -207,7 +208,7 @@ Histogram makeHistogram(const std::vector<double>& values, double minimumBinWidt
 class SummaryPanel::StepTableModel : public QAbstractTableModel {
 public:
     enum Column { Number, StanceStart, StanceEnd, StanceDuration, StrideLength, StrideDuration, X, Y, Z, Motion, BaroHeight,
-                  ColumnCount };
+                  HeelStrike, ToeOff, GaitStancePct, Clearance, ColumnCount };
     static constexpr int kSortRole = Qt::UserRole;
 
     using QAbstractTableModel::QAbstractTableModel;
@@ -219,6 +220,7 @@ public:
         stepWarnings_.clear();
         for (std::size_t step = 0; result_ && step < result_->steps.size(); ++step)
             stepWarnings_.push_back(warningsOfStep(*result_, step));
+        gaitStrides_ = result_ ? gaitStridesOfSteps(*result_) : std::vector<const GaitStride*>();
         endResetModel();
     }
 
@@ -305,6 +307,21 @@ private:
         case Z: return step.position_m.z();
         case Motion: return static_cast<int>(step.motion);
         case BaroHeight: return step.baroHeight_m;
+        default: return gaitValueAt(row, column);
+        }
+    }
+
+    /// The gait stride's figures (heel strike to toe off); NaN, shown as a dash, without a stride.
+    double gaitValueAt(int row, int column) const
+    {
+        const GaitStride* stride = gaitStrides_[static_cast<std::size_t>(row)];
+        if (!stride)
+            return std::numeric_limits<double>::quiet_NaN();
+        switch (column) {
+        case HeelStrike: return stride->heelStrike.time_s;
+        case ToeOff: return stride->toeOff.time_s;
+        case GaitStancePct: return stride->stancePct;
+        case Clearance: return stride->clearance_m;
         default: return 0.0;
         }
     }
@@ -312,7 +329,14 @@ private:
     static int decimalsOf(int column)
     {
         // Times to a millisecond (a 200 Hz sample is 5 ms), positions to a centimetre.
-        return column == Number ? 0 : (column >= X ? 2 : 3);
+        switch (column) {
+        case Number: return 0;
+        case GaitStancePct: return 1;
+        case HeelStrike:
+        case ToeOff:
+        case Clearance: return 3;
+        default: return column >= X ? 2 : 3;
+        }
     }
 
     static QString title(int column)
@@ -329,6 +353,10 @@ private:
         case Z: return SummaryPanel::tr("z (m)");
         case Motion: return MotionLanes::tr("Motion");
         case BaroHeight: return MotionLanes::tr("Baro height (m)");
+        case HeelStrike: return SummaryPanel::tr("Heel strike (s)");
+        case ToeOff: return SummaryPanel::tr("Toe off (s)");
+        case GaitStancePct: return SummaryPanel::tr("Gait stance (%)");
+        case Clearance: return SummaryPanel::tr("Clearance (m)");
         default: return {};
         }
     }
@@ -346,12 +374,17 @@ private:
         case Z: return SummaryPanel::tr("Mean position during the stance, relative to the start");
         case Motion: return MotionLanes::tr("How the foot got to this step: level, stairs or elevator (from the barometer)");
         case BaroHeight: return MotionLanes::tr("Barometric height at this stance against the first one");
+        case HeelStrike: return SummaryPanel::tr("The gait stride whose stance holds this step: when the foot landed");
+        case ToeOff: return SummaryPanel::tr("When the foot left the ground (the end of the gait lab's stance)");
+        case GaitStancePct: return SummaryPanel::tr("Heel strike to toe off, % of the stride time");
+        case Clearance: return SummaryPanel::tr("Highest point of the swing after this stance above it");
         default: return {};
         }
     }
 
     std::shared_ptr<const Result> result_;
     std::vector<std::vector<std::size_t>> stepWarnings_;  ///< per step: indices into result_->warnings
+    std::vector<const GaitStride*> gaitStrides_;  ///< per step: its gait stride or null (gaitStridesOfSteps)
 };
 
 // --- Construction -------------------------------------------------------------------------------
@@ -362,6 +395,8 @@ SummaryPanel::SummaryPanel(QWidget* parent) : QWidget(parent)
     stanceDurationChart_ = createChartView(QStringLiteral("stanceDurationChart"));
     strideLengthHistogram_ = createChartView(QStringLiteral("strideLengthHistogram"));
     stanceDurationHistogram_ = createChartView(QStringLiteral("stanceDurationHistogram"));
+    gaitStanceChart_ = createChartView(QStringLiteral("gaitStanceChart"));
+    clearanceChart_ = createChartView(QStringLiteral("clearanceChart"));
     strideLengthHistogram_->installEventFilter(this);
     stanceDurationHistogram_->installEventFilter(this);
 
@@ -370,6 +405,7 @@ SummaryPanel::SummaryPanel(QWidget* parent) : QWidget(parent)
     tabs->addTab(createTable(), tr("Steps"));
     tabs->addTab(createChartPair(strideLengthChart_, stanceDurationChart_), tr("Per step"));
     tabs->addTab(createChartPair(strideLengthHistogram_, stanceDurationHistogram_), tr("Distributions"));
+    tabs->addTab(createChartPair(gaitStanceChart_, clearanceChart_), tr("Gait"));
 
     auto* splitter = new QSplitter(Qt::Horizontal);
     splitter->addWidget(createFigures());
@@ -403,6 +439,31 @@ QWidget* SummaryPanel::createFigures()
                                                                       {"stanceRecall", tr("Stance recall")},
                                                                       {"stanceF1", tr("Stance F1")},
                                                                       {"stancePhases", tr("Stance phases")}});
+    gaitGroup_ = createFigureGroup(tr("Gait (heel strike to toe off)"),
+                                   {{"gaitStrides", tr("Strides")},
+                                    {"gaitStrideTime", tr("Stride time")},
+                                    {"gaitStrideLength", tr("Stride length")},
+                                    {"gaitCadence", tr("Cadence")},
+                                    {"gaitStanceSwing", tr("Stance / swing")},
+                                    {"gaitClearance", tr("Foot clearance")}});
+    gaitGroup_->setObjectName(QStringLiteral("gaitFigures"));
+    gaitGroup_->setToolTip(tr("From the gait events (heel strike, toe off) of this foot: means over the strides "
+                              "that neither turn nor pause"));
+    bothFeetGroup_ = createFigureGroup(tr("Both feet"), {{"doubleSupport", tr("Double support")},
+                                                         {"stanceLeftRight", tr("Stance left / right")},
+                                                         {"symmetryStrideTime", tr("Symmetry: stride time")},
+                                                         {"symmetryStrideLength", tr("Symmetry: stride length")},
+                                                         {"symmetryStance", tr("Symmetry: stance")},
+                                                         {"symmetrySwing", tr("Symmetry: swing")}});
+    bothFeetGroup_->setObjectName(QStringLiteral("bothFeet"));
+    bothFeetGroup_->setToolTip(tr("Double support: the share of the gait cycle both feet are on the ground. "
+                                  "Symmetry index: 100 (left - right) / mean, 0 symmetric, positive: the left larger."));
+    bothFeetNotes_ = new QLabel;
+    bothFeetNotes_->setObjectName(QStringLiteral("bothFeetNotes"));
+    bothFeetNotes_->setWordWrap(true);
+    bothFeetGroup_->layout()->addWidget(bothFeetNotes_);
+    bothFeetGroup_->hide();
+
     referenceNotes_ = new QLabel;
     referenceNotes_->setObjectName(QStringLiteral("referenceNotes"));
     referenceNotes_->setWordWrap(true);
@@ -423,6 +484,8 @@ QWidget* SummaryPanel::createFigures()
     layout->addWidget(createWarnings());
     layout->addWidget(createMotionAndNotes());
     layout->addWidget(walk);
+    layout->addWidget(bothFeetGroup_);
+    layout->addWidget(gaitGroup_);
     layout->addWidget(referenceGroup_);
     layout->addStretch(1);
     auto* scroll = new QScrollArea;
@@ -696,6 +759,8 @@ void SummaryPanel::refresh()
     statistics_ = result_ ? computeGaitStatistics(*result_, recording_.get()) : GaitStatistics();
     stepModel_->setResult(result_);
     showWalkFigures();
+    showGaitFigures();
+    showBothFeetFigures();
     showReferenceFigures();
     showWarnings();
     showMotionAndNotes();
@@ -800,6 +865,52 @@ void SummaryPanel::showWalkFigures()
                                     .arg(number(s.meanStrideDuration_s, 3), number(s.medianStrideDuration_s, 3)));
     setFigure("stanceDuration", tr("%1 s").arg(number(s.meanStanceDuration_s, 3)));
     setFigure("endToStart", tr("%1 m (%2 % of the path)").arg(number(s.endToStart_m, 2), number(s.endToStartPct, 2)));
+}
+
+void SummaryPanel::showGaitFigures()
+{
+    const bool shown = result_ && result_->gait.strides > 0;
+    gaitGroup_->setVisible(shown);
+    if (!shown)
+        return;
+    const GaitSummary& g = result_->gait;
+    const bool means = g.straightStrides > 0;  // else every mean is a dash, not a zero
+    const auto figure = [means](double value, int decimals) { return number(means ? value : GaitStatistics::kNone, decimals); };
+    setFigure("gaitStrides", tr("%1 (%2 turning)").arg(g.strides).arg(g.turningStrides));
+    setFigure("gaitStrideTime", tr("%1 s").arg(figure(g.strideTime_s, 3)));
+    setFigure("gaitStrideLength", tr("%1 m").arg(figure(g.strideLength_m, 3)));
+    setFigure("gaitCadence", tr("%1 steps/min").arg(figure(g.cadence_spm, 1)));
+    setFigure("gaitStanceSwing", tr("%1 % / %2 %").arg(figure(g.stancePct, 1), figure(g.swingPct, 1)));
+    setFigure("gaitClearance", tr("%1 m").arg(figure(g.clearance_m, 3)));
+}
+
+void SummaryPanel::setBothFeet(const std::optional<BilateralGait>& walk)
+{
+    bothFeet_ = walk;
+    showBothFeetFigures();
+}
+
+void SummaryPanel::showBothFeetFigures()
+{
+    const bool shown = bothFeet_.has_value() && !live_;
+    bothFeetGroup_->setVisible(shown);
+    if (!shown)
+        return;
+    const BilateralGait& walk = *bothFeet_;
+    const DoubleSupportSummary& ds = walk.doubleSupport;
+    setFigure("doubleSupport", tr("%1 % of the gait cycle (%2 strides)").arg(number(ds.meanPct, 1)).arg(ds.cycles));
+    const auto stance = [](const GaitSummary& g) { return number(g.straightStrides > 0 ? g.stancePct : GaitStatistics::kNone, 1); };
+    setFigure("stanceLeftRight", tr("%1 % / %2 %").arg(stance(walk.left), stance(walk.right)));
+    const auto index = [](double value) { return tr("%1 %").arg(number(value, 1)); };
+    setFigure("symmetryStrideTime", index(walk.symmetry.strideTimePct));
+    setFigure("symmetryStrideLength", index(walk.symmetry.strideLengthPct));
+    setFigure("symmetryStance", index(walk.symmetry.stancePct));
+    setFigure("symmetrySwing", index(walk.symmetry.swingPct));
+    QStringList notes;
+    for (const std::string& warning : walk.warnings)
+        notes.append(QString::fromStdString(warning));
+    bothFeetNotes_->setText(notes.join(QLatin1Char('\n')));
+    bothFeetNotes_->setVisible(!notes.isEmpty());
 }
 
 void SummaryPanel::showReferenceFigures()
@@ -921,10 +1032,19 @@ void SummaryPanel::showCharts()
                   makeHistogram(s.strideLengths_m, kStrideLengthBin_m));
     showHistogram(stanceDurationHistogram_, tr("Stance duration"), tr("Stance duration (s)"),
                   makeHistogram(s.stanceDurations_s, kStanceDurationBin_s));
+    std::vector<double> stancePct, clearance_m;
+    static const std::vector<GaitStride> none;  // both branches lvalues: the strides are not copied
+    for (const GaitStride& stride : result_ ? result_->gaitStrides : none) {
+        stancePct.push_back(stride.stancePct);
+        clearance_m.push_back(stride.clearance_m);
+    }
+    showPerStepChart(gaitStanceChart_, tr("Gait stance per stride (heel strike to toe off)"), tr("Stance (% of the stride)"),
+                     1, stancePct, tr("Stride"));
+    showPerStepChart(clearanceChart_, tr("Foot clearance per stride"), tr("Clearance (m)"), 1, clearance_m, tr("Stride"));
 }
 
 void SummaryPanel::showPerStepChart(QChartView* view, const QString& title, const QString& yTitle,
-                                    std::size_t firstStep, const std::vector<double>& values)
+                                    std::size_t firstStep, const std::vector<double>& values, const QString& xTitle)
 {
     QChart* chart = view->chart();
     removeSeriesAndAxes(chart);
@@ -936,7 +1056,7 @@ void SummaryPanel::showPerStepChart(QChartView* view, const QString& title, cons
     for (std::size_t i = 0; i < values.size(); ++i)
         series->append(static_cast<double>(firstStep + i), values[i]);
     chart->addSeries(series);
-    QValueAxis* x = addValueAxis(chart, Qt::AlignBottom, tr("Step"));
+    QValueAxis* x = addValueAxis(chart, Qt::AlignBottom, xTitle.isEmpty() ? tr("Step") : xTitle);
     QValueAxis* y = addValueAxis(chart, Qt::AlignLeft, yTitle);
     series->attachAxis(x);
     series->attachAxis(y);

@@ -3,6 +3,7 @@
 #include "Recording.h"
 #include "Result.h"
 #include "RunHistory.h"
+#include "gait/BilateralGait.h"
 #include "metrics/Evaluation.h"
 
 #include <QString>
@@ -110,6 +111,10 @@ public:
 
     const GaitStatistics& statistics() const { return statistics_; }
 
+    /// Double support and left/right symmetry when both feet of the walk are open (the result
+    /// shown is then the left foot's); nothing hides them.
+    void setBothFeet(const std::optional<BilateralGait>& walk);
+
     /// The key figures before and after the last parameter change (path length, end to start,
     /// ARMSE when there is a reference, steps), green where the change helped and red where it
     /// hurt; null hides them (a new recording, the first run).
@@ -141,13 +146,16 @@ private:
 
     void refresh();
     void showWalkFigures();
+    void showGaitFigures();
+    void showBothFeetFigures();
     void showReferenceFigures();
     void showWarnings();
     void showMotionAndNotes();
     void setFigure(const QString& key, const QString& text);
     void showCharts();
+    /// xTitle empty: "Step".
     void showPerStepChart(QChartView* view, const QString& title, const QString& yTitle, std::size_t firstStep,
-                          const std::vector<double>& values);
+                          const std::vector<double>& values, const QString& xTitle = QString());
     void showHistogram(QChartView* view, const QString& title, const QString& xTitle, const Histogram& histogram);
     void labelHistogramEdges(QChartView* view);
 
@@ -165,6 +173,10 @@ private:
     QLabel* changeText_ = nullptr;
     std::map<QString, FigureRow> changeFigures_;  ///< "pathLength", "endToStart", "armse2d", "steps"
     QGroupBox* referenceGroup_ = nullptr;
+    QGroupBox* gaitGroup_ = nullptr;      ///< the gait lab's stance: heel strike to toe off
+    QGroupBox* bothFeetGroup_ = nullptr;  ///< shown while both feet are open
+    QLabel* bothFeetNotes_ = nullptr;
+    std::optional<BilateralGait> bothFeet_;
     QGroupBox* warningsGroup_ = nullptr;
     QLabel* warningsTitle_ = nullptr;
     QWidget* warningList_ = nullptr;  ///< one label per warning, remade with each result
@@ -179,6 +191,8 @@ private:
     QChartView* stanceDurationChart_ = nullptr;
     QChartView* strideLengthHistogram_ = nullptr;
     QChartView* stanceDurationHistogram_ = nullptr;
+    QChartView* gaitStanceChart_ = nullptr;  ///< per gait stride: heel strike to toe off, %
+    QChartView* clearanceChart_ = nullptr;   ///< per gait stride: foot clearance
     std::map<QChartView*, Histogram> shownHistograms_;  ///< to relabel the edges on resize
 };
 

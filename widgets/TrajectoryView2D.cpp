@@ -455,6 +455,18 @@ void TrajectoryView2D::showReferenceCurve()
     wrapLegendToWidth();
 }
 
+void TrajectoryView2D::setPathLabel(const QString& label)
+{
+    path_->setName(label.isEmpty() ? tr("Foot path") : label);
+    wrapLegendToWidth();
+    plot_->replot();
+}
+
+QString TrajectoryView2D::pathLabel() const
+{
+    return path_->name();
+}
+
 void TrajectoryView2D::setOverlays(const std::vector<PathOverlay>& overlays)
 {
     if (!overlayLegend_)

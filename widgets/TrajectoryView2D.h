@@ -61,6 +61,10 @@ public:
 
     void setColouring(Colouring colouring);
     Colouring colouring() const { return colouring_; }
+    /// The main path's key entry: "Foot path", or the foot ("Left foot") when both feet are shown;
+    /// empty restores the default.
+    void setPathLabel(const QString& label);
+    QString pathLabel() const;
 
     /// Positions already in the estimate's frame (see alignReferenceToEstimate); empty hides it.
     void setReference(const std::vector<Eigen::Vector3d>& positions_m);

@@ -609,7 +609,7 @@ std::vector<std::pair<QString, TrajectoryView3D::LegendIcon>> TrajectoryView3D::
             p.drawLine(at - QPointF(12.0, 0.0), at + QPointF(12.0, 0.0));
         });
     };
-    std::vector<std::pair<QString, Icon>> entries{{tr("Foot path"), line(QPen(kPathColour, 2.0))},
+    std::vector<std::pair<QString, Icon>> entries{{pathLabel(), line(QPen(kPathColour, 2.0))},
                                                   {tr("Shadow on the floor"), line(QPen(kShadowColour, 2.0))}};
     if (showsMotionColours()) {  // the path's one colour gives way to the classes'
         entries.erase(entries.begin());
@@ -761,6 +761,12 @@ void TrajectoryView3D::drawOverlayLegend(QPainter& painter, const QRectF& target
         y += lineHeight;
     }
     painter.restore();
+}
+
+void TrajectoryView3D::setPathLabel(const QString& label)
+{
+    pathLabel_ = label;
+    update();
 }
 
 void TrajectoryView3D::setMotionColouring(bool on)

@@ -50,6 +50,10 @@ public:
     /// own; empty removes them. The camera refits to hold them all.
     void setOverlays(const std::vector<PathOverlay>& overlays);
     const std::vector<PathOverlay>& overlays() const { return overlays_; }
+    /// The main path's key entry: "Foot path", or the foot ("Left foot") when both feet are shown;
+    /// empty restores the default.
+    void setPathLabel(const QString& label);
+    QString pathLabel() const { return pathLabel_.isEmpty() ? tr("Foot path") : pathLabel_; }
     /// The path before the last parameter change, drawn faintly under the current one so the
     /// change shows; empty hides it. It does not move the camera.
     void setGhostPath(const std::vector<Eigen::Vector3d>& positions_m);
@@ -141,6 +145,7 @@ private:
     std::vector<std::size_t> drawnPathIndices_;  ///< decimated, keeping every stance change
     std::vector<std::size_t> drawnReferenceIndices_;
     std::vector<PathOverlay> overlays_;
+    QString pathLabel_;  ///< empty: "Foot path"
     std::vector<std::vector<std::size_t>> drawnOverlayIndices_;
     std::vector<Eigen::Vector3d> ghost_m_;
     std::vector<std::size_t> drawnGhostIndices_;

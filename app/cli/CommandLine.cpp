@@ -47,6 +47,8 @@ const char* const kTuneSynopsis =
                           [--params preset.json] [--set name=value ...] [--closed-loop] [--length METRES]
                           [--reference-columns x,y,z] [--json]
 )";
+const char* const kGaitSynopsis =
+    "  footpath-cli gait LEFT RIGHT [import options] [--params preset.json] [--set name=value ...] [--json]\n";
 const char* const kInfoSynopsis = "  footpath-cli info INPUT [import options] [--json]\n";
 const char* const kRecordSynopsis =
     "  footpath-cli record --port PATH [--baud N] [--rate HZ] [--duration S] --out FILE.mtb [--csv FILE.csv]\n";
@@ -128,6 +130,18 @@ workspace). --evaluations N parameter sets are tried (default 200), --jobs N run
 makes another search. Measure a preset on recordings it was not tuned on.
 )";
 
+const char* const kGaitText =
+    R"(gait takes the left and the right file of one walk (in either order: names ending in _lf/_rf,
+_left/_right or _l/_r say the foot; otherwise the first is the left) and prints each foot's gait
+parameters (heel strike to toe off), the double support (% of the gait cycle both feet are on the
+ground, over the straight strides of both feet) and the symmetry index of stride time, stride
+length, stance and swing, 100 (left - right) / mean (positive: the left larger). When both files
+carry hand-labelled gait events (the IPOL MTw JSON) it adds the labels' double support beside the
+detector's over the same strides. The two files' time stamps are taken as one clock: both sensors
+must start together (the IPOL files' PacketCounter does); files that do not pair stride for stride
+get a warning.
+)";
+
 const char* const kInfoText =
     "info prints what was read: format, samples, rate, duration, channels, units, gaps, the reference\n"
     "the file carries and the import warnings (--json: one JSON object).\n";
@@ -149,16 +163,16 @@ std::string withSuggestedSets(std::string text)
 
 const std::vector<std::string>& commandNames()
 {
-    static const std::vector<std::string> names = {"process", "eval", "compare", "tune", "info", "report", "record"};
+    static const std::vector<std::string> names = {"process", "eval", "compare", "tune", "gait", "info", "report", "record"};
     return names;
 }
 
 std::string usageText()
 {
     std::string text = std::string("Usage:\n") + kProcessSynopsis + kReportSynopsis + kEvalSynopsis + kCompareSynopsis
-                       + kTuneSynopsis + kInfoSynopsis + kRecordSynopsis
+                       + kTuneSynopsis + kGaitSynopsis + kInfoSynopsis + kRecordSynopsis
                        + "  footpath-cli COMMAND --help   the options of one command\n" + kImportOptions
-                       + kReferenceText + kRecordText + kEvalText + kCompareText + kTuneText + kWarningsText + kExitCodes;
+                       + kReferenceText + kRecordText + kEvalText + kCompareText + kTuneText + kGaitText + kWarningsText + kExitCodes;
     return withSuggestedSets(std::move(text));
 }
 
@@ -166,8 +180,8 @@ std::string commandSynopsis(const std::string& command)
 {
     const std::map<std::string, const char*> synopses = {
         {"process", kProcessSynopsis}, {"report", kReportSynopsis}, {"eval", kEvalSynopsis},
-        {"compare", kCompareSynopsis}, {"tune", kTuneSynopsis},     {"info", kInfoSynopsis},
-        {"record", kRecordSynopsis}};
+        {"compare", kCompareSynopsis}, {"tune", kTuneSynopsis},     {"gait", kGaitSynopsis},
+        {"info", kInfoSynopsis},       {"record", kRecordSynopsis}};
     const auto found = synopses.find(command);
     return found == synopses.end() ? std::string() : std::string("Usage:\n") + found->second;
 }
@@ -187,6 +201,8 @@ std::string commandUsageText(const std::string& command)
                 + kWarningsText;
     else if (command == "tune")
         text += kTuneSynopsis + std::string("\n") + kTuneText + kParameterOptions + kImportOptions + kReferenceText;
+    else if (command == "gait")
+        text += kGaitSynopsis + std::string("\n") + kGaitText + kParameterOptions + kImportOptions + kWarningsText;
     else if (command == "info")
         text += kInfoSynopsis + std::string("\n") + kInfoText + kImportOptions;
     else if (command == "record")
@@ -327,7 +343,8 @@ std::string parseArgument(const std::vector<std::string>& args, std::size_t& i, 
         return handler->second(out, args[++i]);
     } else if (arg.rfind("-", 0) == 0 && arg.size() > 1) {
         return "unknown option '" + arg + "'" + didYouMean(arg, optionNames());
-    } else if (out.input.empty() || out.command == "eval" || out.command == "compare" || out.command == "tune") {
+    } else if (out.input.empty() || out.command == "eval" || out.command == "compare" || out.command == "tune"
+               || out.command == "gait") {
         if (out.input.empty())
             out.input = arg;
         out.inputs.push_back(arg);
@@ -377,8 +394,23 @@ std::string checkTuneCombination(const CommandLine& c)
     return outputs ? "tune writes only the preset (--out)" : std::string();
 }
 
+std::string checkGaitCombination(const CommandLine& c)
+{
+    if (c.inputs.size() != 2)
+        return "gait takes two files, the left and the right foot of one walk (got "
+               + std::to_string(c.inputs.size()) + ")";
+    const bool others = !c.port.empty() || c.baud > 0.0 || c.duration_s > 0.0 || !c.outFile.empty() || !c.csvOut.empty()
+                        || !c.trajectoryOut.empty() || !c.stepsOut.empty() || !c.summaryOut.empty()
+                        || !c.summaryCsvOut.empty() || !c.parametersCsvOut.empty() || !c.pdfOut.empty()
+                        || !c.referenceColumns.empty() || c.closedLoop || c.length_m > 0.0 || c.jobs > 0
+                        || !c.methodSets.empty() || !c.criterion.empty();
+    return others ? "gait takes the import options, --params, --set and --json" : std::string();
+}
+
 std::string checkCombination(const CommandLine& c)
 {
+    if (c.command == "gait")
+        return checkGaitCombination(c);
     const bool recordOptions = !c.port.empty() || c.baud > 0.0 || c.duration_s > 0.0 || !c.outFile.empty()
                                || !c.csvOut.empty();
     if (c.command == "record")
@@ -431,7 +463,7 @@ std::string parseCommandLine(const std::vector<std::string>& args, CommandLine& 
     const std::vector<std::string>& known = commandNames();
     if (std::find(known.begin(), known.end(), out.command) == known.end())
         return "unknown command '" + out.command + "'" + didYouMean(out.command, known)
-               + " (expected process, eval, compare, tune, info, report or record)";
+               + " (expected process, eval, compare, tune, gait, info, report or record)";
     // Asking for a command's help always works, whatever else the line holds.
     if (std::any_of(args.begin() + 1, args.end(), isHelpOption)) {
         out.help = true;

@@ -7,10 +7,10 @@ namespace footpath::cli {
 
 /// What the user asked for, before any file is touched.
 struct CommandLine {
-    std::string command;  ///< "process", "eval", "compare", "tune", "info", "report", "record" or "help"
+    std::string command;  ///< "process", "eval", "compare", "tune", "gait", "info", "report", "record" or "help"
     bool help = false;    ///< COMMAND --help: print the command's usage and options
     std::string input;                ///< the first INPUT
-    std::vector<std::string> inputs;  ///< every INPUT (several only for eval, compare and tune)
+    std::vector<std::string> inputs;  ///< every INPUT (several only for eval, compare, tune and gait)
     // Parameters
     std::string paramsFile;
     std::vector<std::string> sets;  ///< "name=value"

@@ -2,6 +2,7 @@
 #include "cli/CliSupport.h"
 #include "cli/Commands.h"
 #include "cli/CompareCommand.h"
+#include "cli/GaitCommand.h"
 #include "cli/RecordCommand.h"
 #include "cli/ReportCommand.h"
 #include "cli/TuneCommand.h"
@@ -23,7 +24,7 @@ std::string shortUsage(const std::string& command)
 {
     const std::string synopsis = commandSynopsis(command);
     if (synopsis.empty())
-        return "Commands: process, eval, compare, tune, info, report, record.\n"
+        return "Commands: process, eval, compare, tune, gait, info, report, record.\n"
                "footpath-cli --help shows them all; footpath-cli COMMAND --help explains one.";
     return synopsis + "footpath-cli " + command + " --help lists its options.";
 }
@@ -51,6 +52,8 @@ int dispatch(const std::vector<std::string>& args)
         return runCompare(cmd);
     if (cmd.command == "tune")
         return runTune(cmd);
+    if (cmd.command == "gait")
+        return runGait(cmd);
     return cmd.command == "process" ? runProcess(cmd) : runEval(cmd);
 }
 

@@ -7,6 +7,7 @@
 #include "ImportDialog.h"
 #include "LivePanel.h"
 #include "LiveViews.h"
+#include "OtherFootSession.h"
 #include "ParameterPanel.h"
 #include "RecordedInputPanel.h"
 #include "RecordingLoader.h"
@@ -20,6 +21,7 @@
 #include "TuneDialog.h"
 #include "TuneFolderDialog.h"
 #include "ReportWriter.h"
+#include "io/FootPairing.h"
 #include "io/ResultWriters.h"
 
 #include <QActionGroup>
@@ -76,7 +78,8 @@ QDockWidget* dock(QMainWindow* window, const QString& title, const QString& name
 }  // namespace
 
 MainWindow::MainWindow(AppSettings& settings, QWidget* parent)
-    : QMainWindow(parent), settings_(settings), session_(new AnalysisSession(this)), loader_(new RecordingLoader(this))
+    : QMainWindow(parent), settings_(settings), session_(new AnalysisSession(this)), loader_(new RecordingLoader(this)),
+      otherFoot_(new OtherFootSession(*session_, this))
 {
     setWindowTitle(tr("Footpath"));
     setAcceptDrops(true);
@@ -86,6 +89,7 @@ MainWindow::MainWindow(AppSettings& settings, QWidget* parent)
     createComparison();
     wireSession();
     wireViews();
+    wireOtherFoot();
     status_ = new QLabel(tr("Ready"), this);
     status_->setObjectName(QStringLiteral("status"));
     // A long message is cut at the window's edge rather than widening the window; the tool tip has all.
@@ -418,6 +422,12 @@ ReportContent MainWindow::reportContent() const
     content.parameterSource = content.parameters == Parameters() ? tr("defaults") : tr("adjusted in the window");
     if (comparisonDock_ && !comparisonDock_->isHidden())
         content.comparison = comparison_->rows();
+    if (otherFoot_->isActive()) {
+        content.pathLabel = tr("Left foot");
+        content.otherPaths = otherFootOverlays();
+        content.bothFeet = otherFoot_->bothFeet();
+        content.recordingPath += QStringLiteral(" + ") + QFileInfo(otherFoot_->path()).fileName();
+    }
     return content;
 }
 
@@ -539,11 +549,38 @@ TuneFolderDialog* MainWindow::tuneOverFolder()
     return dialog;
 }
 
-void MainWindow::showComparisonOverlays(bool shown)
+void MainWindow::showComparisonOverlays(bool)
 {
-    const std::vector<PathOverlay> overlays = shown ? comparison_->overlays() : std::vector<PathOverlay>();
+    showOverlays();
+}
+
+std::vector<PathOverlay> MainWindow::otherFootOverlays() const
+{
+    if (otherFoot_->alignedPath().empty())
+        return {};
+    return {PathOverlay{tr("Right foot"), QColor(214, 96, 24), otherFoot_->alignedPath()}};
+}
+
+void MainWindow::showOverlays()
+{
+    std::vector<PathOverlay> overlays = otherFootOverlays();
+    if (comparisonDock_ && !comparisonDock_->isHidden())
+        for (PathOverlay& overlay : comparison_->overlays())
+            overlays.push_back(std::move(overlay));
     trajectory2D_->setOverlays(overlays);
     trajectory3D_->setOverlays(overlays);
+    const QString label = otherFoot_->isActive() ? tr("Left foot") : QString();
+    trajectory2D_->setPathLabel(label);
+    trajectory3D_->setPathLabel(label);
+}
+
+void MainWindow::wireOtherFoot()
+{
+    connect(otherFoot_, &OtherFootSession::changed, this, [this] {
+        showOverlays();
+        summary_->setBothFeet(otherFoot_->bothFeet());
+    });
+    connect(otherFoot_, &OtherFootSession::failed, this, [this](const QString& message) { showStatus(message, true); });
 }
 
 void MainWindow::exportCsv()
@@ -573,14 +610,58 @@ void MainWindow::exportCsv()
 
 void MainWindow::chooseRecording()
 {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open recording"), settings_.lastFolder(),
+    // Two files at once: the left and the right foot of one walk.
+    const QStringList paths = QFileDialog::getOpenFileNames(
+        this, tr("Open recording (two files: both feet)"), settings_.lastFolder(),
         tr("Recordings (*.txt *.csv *.mtb *.TXT *.CSV);;All files (*)"));
-    if (!path.isEmpty())
-        openRecording(path);
+    if (!paths.isEmpty())
+        openRecordings(paths);
+}
+
+QString MainWindow::openRecordings(const QStringList& paths)
+{
+    std::string problem;
+    std::optional<FootPair> pair;
+    if (paths.size() == 1 && QFileInfo(paths.first()).isDir()) {
+        std::vector<std::string> files;
+        for (const QFileInfo& file : QDir(paths.first()).entryInfoList(QDir::Files, QDir::Name))
+            files.push_back(file.filePath().toStdString());
+        pair = footPairInFolder(files, problem);
+    } else if (paths.size() == 1) {
+        openRecording(paths.first());
+        return {};
+    } else if (paths.size() == 2) {
+        pair = pairFeet(paths[0].toStdString(), paths[1].toStdString(), problem);
+    } else {
+        problem = tr("%1 files: open one recording, or the left and the right file of one walk").arg(paths.size()).toStdString();
+    }
+    if (!pair) {
+        const QString message = QString::fromStdString(problem);
+        showStatus(message, true);
+        return message;
+    }
+    QStringList notes;
+    for (const std::string& note : pair->notes)
+        notes << QString::fromStdString(note);
+    openFootPair(QString::fromStdString(pair->left), QString::fromStdString(pair->right), notes);
+    return {};
+}
+
+void MainWindow::openFootPair(const QString& left, const QString& right, const QStringList& notes)
+{
+    startLoading(left, ImportOptions());
+    otherFoot_->load(right, notes);
+    if (!notes.isEmpty())
+        showStatus(notes.join(QStringLiteral("; ")));
 }
 
 void MainWindow::openRecording(const QString& path, const ImportOptions& options)
+{
+    otherFoot_->clear();  // one file: one foot
+    startLoading(path, options);
+}
+
+void MainWindow::startLoading(const QString& path, const ImportOptions& options)
 {
     const QString file = fileForResource(path);
     input_->showLoading(file);
@@ -597,7 +678,9 @@ void MainWindow::onLoaded(const QString& path, const std::shared_ptr<const Impor
         input_->setRecentFiles(settings_.recentFiles());
     }
     auto recording = std::make_shared<const Recording>(result->recording);
-    setWindowTitle(tr("Footpath - %1").arg(QFileInfo(path).fileName()));
+    setWindowTitle(otherFoot_->isActive() ? tr("Footpath - %1 + %2")
+                                                .arg(QFileInfo(path).fileName(), QFileInfo(otherFoot_->path()).fileName())
+                                          : tr("Footpath - %1").arg(QFileInfo(path).fileName()));
     signalPlots_->setRecording(recording);
     flags_->setRecording(recording);
     summary_->setRecording(recording);
@@ -606,6 +689,7 @@ void MainWindow::onLoaded(const QString& path, const std::shared_ptr<const Impor
 
 void MainWindow::onLoadFailed(const QString& path, const QString& message, const ImportOptions& options)
 {
+    otherFoot_->clear();  // no left foot: the right alone is no pair
     input_->showProblem(message);
     showStatus(message, true);
     // A file that does not describe itself gets the import dialog instead of a dead end.
@@ -766,7 +850,11 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event)
 
 void MainWindow::dropEvent(QDropEvent* event)
 {
-    openRecording(event->mimeData()->urls().first().toLocalFile());
+    QStringList paths;
+    for (const QUrl& url : event->mimeData()->urls())
+        if (url.isLocalFile())
+            paths << url.toLocalFile();
+    openRecordings(paths);  // two files or a folder: both feet
     event->acceptProposedAction();
 }
 

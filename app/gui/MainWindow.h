@@ -1,11 +1,13 @@
 #pragma once
 
+#include "PathOverlay.h"
 #include "ReportWriter.h"
 #include "io/Import.h"
 
 #include <QMainWindow>
 
 #include <memory>
+#include <vector>
 
 class QAction;
 class QDockWidget;
@@ -19,6 +21,7 @@ class AnalysisSession;
 class AppSettings;
 class ComparisonPanel;
 class LivePanel;
+class OtherFootSession;
 class ParameterPanel;
 class RecordedInputPanel;
 class RecordingLoader;
@@ -44,6 +47,13 @@ public:
     /// Raises the Live input dock and connects it to `port` (a device or the emulator's link).
     void connectLive(const QString& port);
     void openRecording(const QString& path, const ImportOptions& options = {});
+    /// The left and the right foot of one walk: the left in the session, the right beside it; both
+    /// paths drawn, double support and symmetry in the summary and the report.
+    void openFootPair(const QString& left, const QString& right, const QStringList& notes = {});
+    /// What the user chose or dropped: one file opens as before; two files (or a folder holding one
+    /// left/right pair) open as both feet. Returns the problem shown in the status bar, or empty.
+    QString openRecordings(const QStringList& paths);
+    OtherFootSession* otherFoot() const { return otherFoot_; }
     AnalysisSession* session() const { return session_; }
     /// Brings a view to the front: "signals", "detector", "states", "trajectory2d" or "trajectory3d";
     /// "motion" shows the detector (with the motion lane) and colours the paths by motion class.
@@ -113,6 +123,12 @@ private:
     void addComparisonMenu(QAction* compare);
     /// The comparison's paths in the trajectory views while its panel is open, none otherwise.
     void showComparisonOverlays(bool shown);
+    /// The comparison's paths (while its panel is open) and the right foot's (while both feet are
+    /// open) in the trajectory views; the main path named after its foot when both are.
+    void showOverlays();
+    std::vector<PathOverlay> otherFootOverlays() const;
+    void startLoading(const QString& path, const ImportOptions& options);
+    void wireOtherFoot();
 
     AppSettings& settings_;
     AnalysisSession* session_;
@@ -134,6 +150,7 @@ private:
     QDockWidget* comparisonDock_ = nullptr;
     RunHistory* history_ = nullptr;
     RunHistoryPanel* historyPanel_ = nullptr;
+    OtherFootSession* otherFoot_ = nullptr;
 };
 
 }  // namespace footpath

@@ -81,7 +81,10 @@ struct GuiOptions {
         parser.setApplicationDescription(QCoreApplication::translate("main", "Foot-mounted inertial navigation"));
         parser.addHelpOption();
         parser.addVersionOption();
-        parser.addPositionalArgument("recording", QCoreApplication::translate("main", "Recording to open"));
+        parser.addPositionalArgument(
+            "recording", QCoreApplication::translate("main", "Recording to open; two files (or a folder): the left and "
+                                                             "the right foot of one walk"),
+            "[recording [recording]]");
         for (const QCommandLineOption* option : {&screenshot, &preset, &assignment, &view, &compare, &language,
                                                  &connectPort})
             parser.addOption(*option);
@@ -182,7 +185,10 @@ int main(int argc, char** argv)
         runUnattended(window);
     window.show();
     const QStringList files = parser.positionalArguments();
-    window.openRecording(files.isEmpty() ? QString::fromUtf8(kSampleWalk) : files.first());
+    if (files.isEmpty())
+        window.openRecording(QString::fromUtf8(kSampleWalk));
+    else if (const QString problem = window.openRecordings(files); !problem.isEmpty())
+        std::fprintf(stderr, "footpath: %s\n", qPrintable(problem));
     if (parser.isSet(connectPort))
         window.connectLive(parser.value(connectPort));
     if (parser.isSet(screenshot) && parser.isSet(connectPort)) {

@@ -389,4 +389,19 @@ void detectGaitEvents(const Recording& recording, Result& result)
     result.gait = summarizeGait(result.gaitStrides);
 }
 
+std::vector<const GaitStride*> gaitStridesOfSteps(const Result& result)
+{
+    std::vector<const GaitStride*> strides;
+    strides.reserve(result.steps.size());
+    std::size_t next = 0;  // steps and strides are both in time order
+    for (const Step& step : result.steps) {
+        const double middle_s = 0.5 * (step.stanceStart_s + step.stanceEnd_s);
+        while (next < result.gaitStrides.size() && result.gaitStrides[next].toeOff.time_s < middle_s)
+            ++next;
+        const bool holds = next < result.gaitStrides.size() && result.gaitStrides[next].heelStrike.time_s <= middle_s;
+        strides.push_back(holds ? &result.gaitStrides[next++] : nullptr);
+    }
+    return strides;
+}
+
 }  // namespace footpath

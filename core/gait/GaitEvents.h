@@ -33,6 +33,11 @@ namespace footpath {
 /// and toe-off errors 2-15 ms per trial (tests/tst_gaitevents.cpp).
 void detectGaitEvents(const Recording& recording, Result& result);
 
+/// For each of result.steps (ZUPT stances) the gait stride whose stance (heel strike to toe off)
+/// holds the middle of the step's stance, or nullptr; each stride goes to the first such step only.
+/// The steps CSV and the step table show the gait figures of a step through it.
+std::vector<const GaitStride*> gaitStridesOfSteps(const Result& result);
+
 /// The heading change above which a stride counts as turning (and leaves the walk's averages).
 constexpr double kTurningStrideThreshold_rad = 0.349066;  // 20 degrees
 

@@ -1,5 +1,7 @@
 #include "io/ResultWriters.h"
 
+#include "gait/GaitEvents.h"
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -87,18 +89,6 @@ void writeTrajectoryCsv(std::ostream& out, const Result& result)
 
 namespace {
 
-/// The gait stride whose stance (heel strike to toe off) holds the middle of the ZUPT stance of
-/// `step`, or nullptr; each stride goes to the first such step only. `next` walks along the strides.
-const GaitStride* strideOfStep(const Step& step, const std::vector<GaitStride>& strides, std::size_t& next)
-{
-    const double middle_s = 0.5 * (step.stanceStart_s + step.stanceEnd_s);
-    while (next < strides.size() && strides[next].toeOff.time_s < middle_s)
-        ++next;
-    if (next == strides.size() || strides[next].heelStrike.time_s > middle_s)
-        return nullptr;
-    return &strides[next++];
-}
-
 /// The gait columns of the steps CSV, empty cells where no stride matches the step.
 void putGaitCells(std::ostream& out, const GaitStride* stride)
 {
@@ -121,7 +111,7 @@ void writeStepsCsv(std::ostream& out, const Result& result)
 {
     out << "step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,motion,baro_height_m,"
            "heel_strike_s,toe_off_s,gait_stance_pct,swing_pct,clearance_m,turning\n";
-    std::size_t nextStride = 0;
+    const std::vector<const GaitStride*> gaitStrides = gaitStridesOfSteps(result);
     for (std::size_t i = 0; i < result.steps.size(); ++i) {
         const Step& step = result.steps[i];
         out << i + 1 << ',';  // numbered from 1, as the window's step table and the report number them
@@ -134,7 +124,7 @@ void writeStepsCsv(std::ostream& out, const Result& result)
         // An empty cell, not "nan", where there is no barometer: spreadsheets read it as missing.
         if (!std::isnan(step.baroHeight_m))
             putNumber(out, step.baroHeight_m);
-        putGaitCells(out, strideOfStep(step, result.gaitStrides, nextStride));
+        putGaitCells(out, gaitStrides[i]);
         out << '\n';
     }
 }

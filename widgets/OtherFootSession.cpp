@@ -1,0 +1,86 @@
+#include "OtherFootSession.h"
+
+#include "AnalysisSession.h"
+#include "PipelineRunner.h"
+#include "RecordingLoader.h"
+
+#include <QFileInfo>
+
+namespace footpath {
+
+OtherFootSession::OtherFootSession(AnalysisSession& session, QObject* parent)
+    : QObject(parent), session_(session), loader_(new RecordingLoader(this)), runner_(new PipelineRunner(this))
+{
+    connect(loader_, &RecordingLoader::loaded, this,
+            [this](const QString&, const std::shared_ptr<const ImportResult>& read) {
+                recording_ = std::make_shared<const Recording>(read->recording);
+                estimate();
+            });
+    connect(loader_, &RecordingLoader::failed, this, [this](const QString& path, const QString& message) {
+        const QString problem = tr("%1 (the right foot): %2").arg(QFileInfo(path).fileName(), message);
+        clear();
+        emit failed(problem);
+    });
+    connect(runner_, &PipelineRunner::finished, this, [this](const std::shared_ptr<const Result>& result) {
+        result_ = result;
+        combine();
+    });
+    connect(runner_, &PipelineRunner::failed, this,
+            [this](const QString& message) { emit failed(tr("The right foot's estimate failed: %1").arg(message)); });
+    connect(&session_, &AnalysisSession::parametersChanged, this, &OtherFootSession::estimate);
+    connect(&session_, &AnalysisSession::resultChanged, this, &OtherFootSession::combine);
+}
+
+OtherFootSession::~OtherFootSession() = default;
+
+void OtherFootSession::load(const QString& path, const QStringList& notes)
+{
+    clear();
+    path_ = path;
+    notes_ = notes;
+    loader_->load(path, ImportOptions());
+    emit changed();
+}
+
+void OtherFootSession::clear()
+{
+    const bool wasActive = isActive();
+    loader_->cancel();
+    runner_->cancel();
+    path_.clear();
+    notes_.clear();
+    recording_.reset();
+    result_.reset();
+    bothFeet_.reset();
+    alignedPath_.clear();
+    if (wasActive)
+        emit changed();
+}
+
+void OtherFootSession::estimate()
+{
+    if (!recording_)
+        return;
+    // The right foot's previous result stays until the new one is there (as the left's does).
+    runner_->run(recording_, session_.parameters());
+}
+
+void OtherFootSession::combine()
+{
+    const std::shared_ptr<const Result> left = session_.result();
+    if (!isActive())
+        return;
+    if (left && result_) {
+        bothFeet_ = analyseBilateralGait(*left, *result_);
+        // How the sides were decided travels with the figures (summary, report).
+        for (const QString& note : notes_)
+            bothFeet_->warnings.insert(bothFeet_->warnings.begin(), note.toStdString());
+        alignedPath_ = otherFootPathAligned(*left, *result_);
+    } else {
+        bothFeet_.reset();
+        alignedPath_.clear();
+    }
+    emit changed();
+}
+
+}  // namespace footpath
