@@ -128,11 +128,15 @@ private slots:
     void storageIsWhatTheHeaderSays()
     {
         Parameters nine;
-        const ErrorStateEkf ekf9(nine, Eigen::Matrix3d::Identity());
-        QCOMPARE(RtsSmoother(nine, ekf9).bytesPerSample(), std::size_t(62 * 8));
+        ErrorStateEkf ekf9(nine, Eigen::Matrix3d::Identity());
+        const RtsSmoother smoother9(nine, ekf9);
+        QCOMPARE(smoother9.bytesPerSample(), std::size_t(54 * 8));
+        QCOMPARE(smoother9.bytesPerUpdate(3), std::size_t(45 * 8));
         const Parameters fifteen = fifteenStates();
-        const ErrorStateEkf ekf15(fifteen, Eigen::Matrix3d::Identity());
-        QCOMPARE(RtsSmoother(fifteen, ekf15).bytesPerSample(), std::size_t(147 * 8));
+        ErrorStateEkf ekf15(fifteen, Eigen::Matrix3d::Identity());
+        const RtsSmoother smoother15(fifteen, ekf15);
+        QCOMPARE(smoother15.bytesPerSample(), std::size_t(133 * 8));
+        QCOMPARE(smoother15.bytesPerUpdate(6), std::size_t(141 * 8));
     }
 };
 
