@@ -5,6 +5,8 @@
 
 #include <Eigen/Cholesky>
 
+#include <array>
+
 namespace footpath {
 
 namespace {
@@ -12,6 +14,12 @@ namespace {
 // The paper's Q values are per step at 100 Hz; scaling the variance by dt / 10 ms keeps the noise
 // per second the same at any rate.
 constexpr double kReferenceStep_s = 0.01;
+
+/// The states of the 15-state filter, and the 9 with variance when it runs without biases.
+constexpr std::array<int, 15> kAllStates{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14};
+constexpr std::array<int, 9> kNavigationStates{ErrorStateEkf::kAtt, ErrorStateEkf::kAtt + 1, ErrorStateEkf::kAtt + 2,
+                                               ErrorStateEkf::kPos, ErrorStateEkf::kPos + 1, ErrorStateEkf::kPos + 2,
+                                               ErrorStateEkf::kVel, ErrorStateEkf::kVel + 1, ErrorStateEkf::kVel + 2};
 
 Eigen::Matrix<double, 15, 1> blockDiagonal(double att, double gyroBias, double pos, double vel, double accBias)
 {
@@ -60,11 +68,6 @@ ErrorStateEkf::ErrorStateEkf(const Parameters& params, const Eigen::Matrix3d& in
     processVariancePerStep_ = blockDiagonal(params.q_att_rad, biasGate * params.q_gyro_bias_radps, params.q_pos_m,
                                             params.q_vel_mps, biasGate * params.q_acc_bias_mps2);
     biasStates_ = biasStates;
-    activeStates_.resize(biasStates ? kStates : 9);
-    int next = 0;
-    for (int state = 0; state < kStates; ++state)
-        if (biasStates || (state < kGyroBias || (state >= kPos && state < kAccBias)))
-            activeStates_(next++) = state;
 }
 
 void ErrorStateEkf::propagate(const Eigen::Vector3d& acc_mps2, const Eigen::Vector3d& gyr_radps, double dt_s)
@@ -205,15 +208,20 @@ void ErrorStateEkf::update(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets,
     left << gain.transpose(), correction.transpose();
     right << pht.transpose(), gain.transpose();
     // The states without variance (the biases of the 9-state filter) have zero rows in both.
-    const int active = static_cast<int>(activeStates_.size());
-    for (int jj = 0; jj < active; ++jj) {
-        const int j = activeStates_(jj);
-        for (int ii = jj; ii < active; ++ii) {
-            const int i = activeStates_(ii);
-            p(i, j) -= left.col(i).dot(right.col(j));
-            p(j, i) = p(i, j);
+    const auto subtractLowerTriangle = [&](const auto& states) {
+        for (std::size_t jj = 0; jj < states.size(); ++jj) {
+            const int j = states[jj];
+            for (std::size_t ii = jj; ii < states.size(); ++ii) {
+                const int i = states[ii];
+                p(i, j) -= left.col(i).dot(right.col(j));
+                p(j, i) = p(i, j);
+            }
         }
-    }
+    };
+    if (biasStates_)
+        subtractLowerTriangle(kAllStates);
+    else
+        subtractLowerTriangle(kNavigationStates);
     if (recordUpdates_)
         recordUpdate<Rows>(blockOffsets, gain, innovation, s);
     applyCorrection(dx);

@@ -119,10 +119,9 @@ private:
     Matrix15 covariance_;
     Eigen::Matrix<double, kStates, 1> processVariancePerStep_;  ///< at the 10 ms reference step
     PropagationStep lastPropagation_;
-    bool biasStates_ = true;  ///< false: the 9-state filter, whose bias blocks stay exactly zero
-    /// The error states with variance: all 15, or the 9 without biases (whose rows of P, and so of
-    /// every gain, are zero: skipping them changes no number).
-    Eigen::Matrix<int, Eigen::Dynamic, 1, 0, kStates, 1> activeStates_;
+    /// false: the 9-state filter, whose bias rows of P, and so of every gain, stay exactly zero
+    /// (the propagation and the update skip them, which changes no number).
+    bool biasStates_ = true;
     bool recordUpdates_ = false;
     std::vector<MeasurementUpdate> updates_;  ///< reused: grows to the most updates one sample had
     std::size_t updateCount_ = 0;

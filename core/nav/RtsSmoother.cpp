@@ -29,6 +29,14 @@ struct Blocks {
     static constexpr int att = 0, gyroBias = 3, pos = biases ? 6 : 3, vel = biases ? 9 : 6, accBias = 12;
 };
 
+/// Asks for the cache lines of values (count doubles) ahead of their use.
+void prefetch(const double* values, std::size_t count)
+{
+    constexpr std::size_t kLine = 64 / sizeof(double);
+    for (std::size_t i = 0; i < count; i += kLine)
+        __builtin_prefetch(values + i);
+}
+
 constexpr int kMaxRows = MeasurementUpdate::kMaxRows;
 using RowsVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1>;
 using RowsMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxRows>;
@@ -44,12 +52,7 @@ RtsSmoother::RtsSmoother(const Parameters& params, ErrorStateEkf& ekf)
 
 void RtsSmoother::reserve(std::size_t samples, std::size_t updates)
 {
-    packedCovariance_.reserve(samples * packedSize());
-    attitude_.reserve(samples);
-    navSpecificForce_.reserve(samples);
-    dt_s_.reserve(samples);
-    if (storesPropagationAttitude_)
-        propagationAttitude_.reserve(samples);
+    records_.reserve(samples * recordStride());
     updateStart_.reserve(samples + 1);
     updateData_.reserve(updates * bytesPerUpdate(storesPropagationAttitude_ ? 6 : 3) / sizeof(double));
 }
@@ -57,18 +60,21 @@ void RtsSmoother::reserve(std::size_t samples, std::size_t updates)
 void RtsSmoother::capture(const ErrorStateEkf& ekf)
 {
     const ErrorStateEkf::Matrix15& p = ekf.covariance();
-    const std::size_t at = packedCovariance_.size();
-    packedCovariance_.resize(at + packedSize());
-    double* packed = packedCovariance_.data() + at;
+    records_.resize(records_.size() + recordStride());
+    double* out = records_.data() + samples_++ * recordStride();
     for (std::size_t j = 0; j < active_.size(); ++j)
         for (std::size_t i = 0; i <= j; ++i)
-            *packed++ = p(active_[i], active_[j]);
-    attitude_.emplace_back(ekf.state().bodyToNav);
+            *out++ = p(active_[i], active_[j]);
+    const auto store = [&out](const auto& values) {
+        for (int i = 0; i < values.size(); ++i)
+            *out++ = values(i);
+    };
+    store(Eigen::Quaterniond(ekf.state().bodyToNav).coeffs());
     const PropagationStep& step = ekf.lastPropagation();
-    navSpecificForce_.push_back(step.navSpecificForce);
-    dt_s_.push_back(step.dt_s);
+    store(step.navSpecificForce);
+    *out++ = step.dt_s;
     if (storesPropagationAttitude_)
-        propagationAttitude_.emplace_back(step.bodyToNav);
+        store(Eigen::Quaterniond(step.bodyToNav).coeffs());
     for (std::size_t u = 0; u < ekf.updateCount(); ++u)
         storeUpdate(ekf.recordedUpdate(u));
     updateStart_.push_back(updateData_.size());
@@ -131,13 +137,19 @@ std::size_t RtsSmoother::bytesPerUpdate(int rows) const
     return (2 + m + active_.size() * m + m + m * m + 1) * sizeof(double);
 }
 
+Eigen::Matrix3d RtsSmoother::attitude(std::size_t k) const
+{
+    return Eigen::Map<const Eigen::Quaterniond>(record(k) + packedSize()).toRotationMatrix();
+}
+
 PropagationStep RtsSmoother::propagationInto(std::size_t k) const
 {
+    const double* values = record(k) + packedSize() + 4;
     PropagationStep step;
-    step.navSpecificForce = navSpecificForce_[k];
-    step.dt_s = dt_s_[k];
+    step.navSpecificForce = Eigen::Map<const Eigen::Vector3d>(values);
+    step.dt_s = values[3];
     if (storesPropagationAttitude_)
-        step.bodyToNav = propagationAttitude_[k].toRotationMatrix();
+        step.bodyToNav = Eigen::Map<const Eigen::Quaterniond>(values + 4).toRotationMatrix();
     return step;
 }
 
@@ -151,7 +163,7 @@ void RtsSmoother::writeSmoothed(Result& result, std::size_t k, const Eigen::Matr
         dx(active_[static_cast<std::size_t>(i)]) = correction(i);
     // The filter's signs (ErrorStateEkf::applyCorrection): attitude, position and velocity errors
     // are estimate - truth, bias errors truth - estimate.
-    Eigen::Matrix3d bodyToNav = padeRotation(-dx.segment<3>(E::kAtt)) * attitude_[k].toRotationMatrix();
+    Eigen::Matrix3d bodyToNav = padeRotation(-dx.segment<3>(E::kAtt)) * attitude(k);
     reorthonormalize(bodyToNav);
     result.rollPitchYaw_rad[k] = rollPitchYaw(bodyToNav);
     result.position_m[k] -= dx.segment<3>(E::kPos);
@@ -168,7 +180,7 @@ void RtsSmoother::writeSmoothed(Result& result, std::size_t k, const Eigen::Matr
 
 bool RtsSmoother::smooth(Result& result, const std::function<bool(double fraction)>& keepGoing) const
 {
-    if (attitude_.empty() || result.position_m.size() != attitude_.size())
+    if (samples_ == 0 || result.position_m.size() != samples_)
         return true;
     return active_.size() == 15 ? smoothBackward<15>(result, keepGoing) : smoothBackward<9>(result, keepGoing);
 }
@@ -177,7 +189,7 @@ template <int N>
 Eigen::Matrix<double, N, N> RtsSmoother::filteredCovariance(std::size_t k) const
 {
     Eigen::Matrix<double, N, N> p;
-    const double* packed = packedCovariance_.data() + k * packedSize();
+    const double* packed = record(k);
     for (int j = 0; j < N; ++j)
         for (int i = 0; i <= j; ++i, ++packed)
             p(i, j) = p(j, i) = *packed;
@@ -270,11 +282,13 @@ bool RtsSmoother::smoothBackward(Result& result, const std::function<bool(double
 {
     using MatrixN = Eigen::Matrix<double, N, N>;
     using VectorN = Eigen::Matrix<double, N, 1>;
-    const std::size_t n = attitude_.size();
+    const std::size_t n = samples_;
     // After the last sample nothing is measured: mu and L start at zero.
     VectorN adjoint = VectorN::Zero();
     MatrixN information = MatrixN::Zero();
     for (std::size_t k = n; k-- > 0;) {
+        if (k >= 2)  // the pass walks memory backwards, which the hardware prefetcher follows poorly
+            prefetch(record(k - 2), recordStride());
         if (k + 1 < n)
             transitionBackward<N>(adjoint, information, propagationInto(k + 1));
         const MatrixN filtered = filteredCovariance<N>(k);

@@ -57,6 +57,9 @@ public:
 
 private:
     std::size_t packedSize() const { return active_.size() * (active_.size() + 1) / 2; }
+    std::size_t recordStride() const { return packedSize() + 8 + (storesPropagationAttitude_ ? 4 : 0); }
+    const double* record(std::size_t k) const { return records_.data() + k * recordStride(); }
+    Eigen::Matrix3d attitude(std::size_t k) const;
     void storeUpdate(const MeasurementUpdate& update);
     /// The backward pass on fixed-size N x N blocks of the running states (9 or 15), which Eigen
     /// unrolls and vectorises.
@@ -77,11 +80,11 @@ private:
 
     std::vector<int> active_;  ///< error-state indices the filter runs (all 15, or 9 without biases)
     bool storesPropagationAttitude_ = false;  ///< only the bias blocks of Phi need it
-    std::vector<double> packedCovariance_;
-    std::vector<Eigen::Quaterniond> attitude_;
-    std::vector<Eigen::Vector3d> navSpecificForce_;
-    std::vector<double> dt_s_;
-    std::vector<Eigen::Quaterniond> propagationAttitude_;
+    /// One record of recordStride() doubles a sample, so the backward pass reads one block per
+    /// sample: the packed covariance, the attitude (quaternion), the propagation's specific force,
+    /// step and (15 states) attitude.
+    std::vector<double> records_;
+    std::size_t samples_ = 0;
     /// Sample k's updates are updateData_[updateStart_[k], updateStart_[k + 1]), each record
     /// [rows, 1 if H selects states, H (indices or rows x N), K (N x rows), S^-1 z, S^-1, length].
     std::vector<std::size_t> updateStart_{0};
