@@ -47,14 +47,25 @@ void reserveResult(Result& result, std::size_t n)
     result.accBias_mps2.reserve(n);
 }
 
-void recordState(Result& result, double time_s, const NavState& state)
+namespace {
+
+/// The per-sample vectors but the attitude angles. The smoother's forward pass records only these:
+/// the backward pass writes every sample's attitude and standard deviations.
+void recordStateButAttitude(Result& result, double time_s, const NavState& state)
 {
     result.time_s.push_back(time_s);
     result.position_m.push_back(state.position_m);
     result.velocity_mps.push_back(state.velocity_mps);
-    result.rollPitchYaw_rad.push_back(rollPitchYaw(state.bodyToNav));
     result.gyroBias_radps.push_back(state.gyroBias_radps);
     result.accBias_mps2.push_back(state.accBias_mps2);
+}
+
+}  // namespace
+
+void recordState(Result& result, double time_s, const NavState& state)
+{
+    recordStateButAttitude(result, time_s, state);
+    result.rollPitchYaw_rad.push_back(rollPitchYaw(state.bodyToNav));
 }
 
 namespace {
@@ -70,17 +81,6 @@ SampleStanceFlags flagsAt(const StanceFlags& flags, std::size_t k)
     sample.logStatistic = flags.logStatistic[k];
     sample.logThreshold = flags.logThreshold[k];
     return sample;
-}
-
-/// The forward pass's record of a sample the smoother will rewrite: its attitude and standard
-/// deviations come from the backward pass, which writes every sample, so they are not made here.
-void recordForSmoothing(Result& result, double time_s, const NavState& state)
-{
-    result.time_s.push_back(time_s);
-    result.position_m.push_back(state.position_m);
-    result.velocity_mps.push_back(state.velocity_mps);
-    result.gyroBias_radps.push_back(state.gyroBias_radps);
-    result.accBias_mps2.push_back(state.accBias_mps2);
 }
 
 /// Runs the filter over every sample, then the smoother's backward pass when it is chosen; returns
@@ -110,7 +110,7 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
             if (k >= start)
                 advanceFilter(ekf, sources, sample, k > start ? std::optional<double>(samples[k - 1].time_s) : std::nullopt,
                               flagsAt(flags, k), k, result.methodNotes);
-            recordForSmoothing(result, sample.time_s, ekf.state());
+            recordStateButAttitude(result, sample.time_s, ekf.state());
             smoother->capture(ekf);
         } else if (k < start) {
             holdAtStart(ekf, sample.time_s, result);
