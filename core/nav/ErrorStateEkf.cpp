@@ -5,6 +5,8 @@
 
 #include <Eigen/Cholesky>
 
+#include <array>
+
 namespace footpath {
 
 namespace {
@@ -12,6 +14,12 @@ namespace {
 // The paper's Q values are per step at 100 Hz; scaling the variance by dt / 10 ms keeps the noise
 // per second the same at any rate.
 constexpr double kReferenceStep_s = 0.01;
+
+/// The states of the 15-state filter, and the 9 with variance when it runs without biases.
+constexpr std::array<int, 15> kAllStates{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14};
+constexpr std::array<int, 9> kNavigationStates{ErrorStateEkf::kAtt, ErrorStateEkf::kAtt + 1, ErrorStateEkf::kAtt + 2,
+                                               ErrorStateEkf::kPos, ErrorStateEkf::kPos + 1, ErrorStateEkf::kPos + 2,
+                                               ErrorStateEkf::kVel, ErrorStateEkf::kVel + 1, ErrorStateEkf::kVel + 2};
 
 Eigen::Matrix<double, 15, 1> blockDiagonal(double att, double gyroBias, double pos, double vel, double accBias)
 {
@@ -59,18 +67,19 @@ ErrorStateEkf::ErrorStateEkf(const Parameters& params, const Eigen::Matrix3d& in
                       .asDiagonal();
     processVariancePerStep_ = blockDiagonal(params.q_att_rad, biasGate * params.q_gyro_bias_radps, params.q_pos_m,
                                             params.q_vel_mps, biasGate * params.q_acc_bias_mps2);
+    biasStates_ = biasStates;
 }
 
 void ErrorStateEkf::propagate(const Eigen::Vector3d& acc_mps2, const Eigen::Vector3d& gyr_radps, double dt_s)
 {
-    correctionsSincePropagation_.setZero();
+    updateCount_ = 0;
     if (!(dt_s > 0.0)) {
         lastPropagation_.dt_s = 0.0;  // a repeated timestamp carries no motion
         return;
     }
     const Eigen::Vector3d navSpecificForce = strapdownStep(state_, acc_mps2, gyr_radps, dt_s, params_.gravity_mps2);
     lastPropagation_ = PropagationStep{navSpecificForce, state_.bodyToNav, dt_s};
-    propagateCovariance(covariance_, lastPropagation_, processVariance(dt_s));
+    propagateCovariance(lastPropagation_, processVariance(dt_s));
 }
 
 ErrorStateEkf::Vector15 ErrorStateEkf::processVariance(double dt_s) const
@@ -89,11 +98,43 @@ ErrorStateEkf::Matrix15 ErrorStateEkf::transitionMatrix(const Eigen::Vector3d& n
     return phi;
 }
 
-void ErrorStateEkf::propagateCovariance(Matrix15& covariance, const PropagationStep& step,
-                                        const Vector15& processVariance)
+void ErrorStateEkf::propagateCovariance(const PropagationStep& step, const Vector15& processVariance)
 {
     if (!(step.dt_s > 0.0))
         return;
+    if (biasStates_)
+        propagateAllBlocks(step);
+    else
+        propagateNavigationBlocks(step);
+    covariance_.diagonal() += processVariance;
+}
+
+void ErrorStateEkf::propagateNavigationBlocks(const PropagationStep& step)
+{
+    // Without bias states Phi = I + two blocks, (pos, vel) = dt I and (vel, att) = -dt S(a_n), and
+    // the bias rows and columns of P stay zero: 5 products of 3x3 blocks. The attitude rows of
+    // M = Phi P are those of P; P' = M Phi^T, upper triangle, then mirrored.
+    const double dt_s = step.dt_s;
+    const Eigen::Matrix3d velFromAtt = -dt_s * skew(step.navSpecificForce);
+    const Eigen::Matrix3d velFromAttT = velFromAtt.transpose();
+    Matrix15& p = covariance_;
+    const auto b = [&p](int row, int col) { return p.block<3, 3>(row, col); };
+    const Eigen::Matrix3d mPosAtt = b(kPos, kAtt) + dt_s * b(kVel, kAtt);
+    const Eigen::Matrix3d mPosPos = b(kPos, kPos) + dt_s * b(kVel, kPos);
+    const Eigen::Matrix3d mPosVel = b(kPos, kVel) + dt_s * b(kVel, kVel);
+    const Eigen::Matrix3d mVelAtt = b(kVel, kAtt) + velFromAtt * b(kAtt, kAtt);
+    const Eigen::Matrix3d mVelVel = b(kVel, kVel) + velFromAtt * b(kAtt, kVel);
+    b(kVel, kVel) = mVelVel + mVelAtt * velFromAttT;
+    b(kPos, kVel) = mPosVel + mPosAtt * velFromAttT;
+    b(kPos, kPos) = mPosPos + dt_s * mPosVel;
+    b(kAtt, kPos) = b(kAtt, kPos) + dt_s * b(kAtt, kVel);  // before (att, vel) changes
+    b(kAtt, kVel) = b(kAtt, kVel) + b(kAtt, kAtt) * velFromAttT;
+    for (const auto& [row, col] : {std::pair{kAtt, kPos}, std::pair{kAtt, kVel}, std::pair{kPos, kVel}})
+        b(col, row) = b(row, col).transpose();
+}
+
+void ErrorStateEkf::propagateAllBlocks(const PropagationStep& step)
+{
     const double dt_s = step.dt_s;
     // Phi = I + four 3x3 blocks, so Phi P Phi^T needs 20 products of 3x3 blocks instead of the
     // dense 15x15 triple product (BM_EkfPropagate against BM_DenseCovariancePropagation). Phi leaves
@@ -102,7 +143,7 @@ void ErrorStateEkf::propagateCovariance(Matrix15& covariance, const PropagationS
     // triangle is computed, and the bias blocks of P' are blocks of M.
     const Eigen::Matrix3d attFromGyroBias = dt_s * step.bodyToNav;  // also velocity from acc bias
     const Eigen::Matrix3d velFromAtt = -dt_s * skew(step.navSpecificForce);
-    Matrix15& p = covariance;
+    Matrix15& p = covariance_;
     const auto b = [&p](int row, int col) { return p.block<3, 3>(row, col); };
 
     // Rows of M = Phi P for the three states that change (stored as 9 x 15).
@@ -132,8 +173,6 @@ void ErrorStateEkf::propagateCovariance(Matrix15& covariance, const PropagationS
     for (const int row : {kAtt, kPos, kVel})
         for (const int bias : {kGyroBias, kAccBias})
             b(bias, row) = b(row, bias).transpose();
-
-    p.diagonal() += processVariance;
 }
 
 template <int Rows>
@@ -168,11 +207,63 @@ void ErrorStateEkf::update(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets,
     Eigen::Matrix<double, 2 * Rows, kStates> left, right;  // transposed: columns are contiguous
     left << gain.transpose(), correction.transpose();
     right << pht.transpose(), gain.transpose();
-    for (int j = 0; j < kStates; ++j)
-        for (int i = j; i < kStates; ++i)
-            p(i, j) -= left.col(i).dot(right.col(j));
-    p.template triangularView<Eigen::StrictlyUpper>() = p.transpose();
+    // The states without variance (the biases of the 9-state filter) have zero rows in both.
+    const auto subtractLowerTriangle = [&](const auto& states) {
+        for (std::size_t jj = 0; jj < states.size(); ++jj) {
+            const int j = states[jj];
+            for (std::size_t ii = jj; ii < states.size(); ++ii) {
+                const int i = states[ii];
+                p(i, j) -= left.col(i).dot(right.col(j));
+                p(j, i) = p(i, j);
+            }
+        }
+    };
+    if (biasStates_)
+        subtractLowerTriangle(kAllStates);
+    else
+        subtractLowerTriangle(kNavigationStates);
+    if (recordUpdates_)
+        recordUpdate<Rows>(blockOffsets, gain, innovation, s);
     applyCorrection(dx);
+}
+
+MeasurementUpdate& ErrorStateEkf::nextRecord()
+{
+    if (updateCount_ == updates_.size())
+        updates_.emplace_back();
+    return updates_[updateCount_++];
+}
+
+template <int Rows>
+void ErrorStateEkf::recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets,
+                                 const Eigen::Matrix<double, 15, Rows>& gain,
+                                 const Eigen::Matrix<double, Rows, 1>& innovation,
+                                 const Eigen::Matrix<double, Rows, Rows>& s)
+{
+    MeasurementUpdate& record = nextRecord();
+    record.selectedStates.resize(Rows);
+    for (int b = 0; b < Rows / 3; ++b)
+        for (int i = 0; i < 3; ++i)
+            record.selectedStates(3 * b + i) = blockOffsets(b) + i;
+    record.h.resize(0, kStates);
+    record.gain = gain;
+    const Eigen::LLT<Eigen::Matrix<double, Rows, Rows>> cholesky(s);
+    record.weightedInnovation = cholesky.solve(innovation);
+    record.inverseS = cholesky.solve(Eigen::Matrix<double, Rows, Rows>::Identity());
+}
+
+void ErrorStateEkf::recordUpdate(const Eigen::MatrixXd& h, const Eigen::MatrixXd& gain,
+                                 const Eigen::VectorXd& innovation, const Eigen::MatrixXd& s)
+{
+    if (h.rows() > MeasurementUpdate::kMaxRows)
+        return;  // more rows than states: no measurement of this filter has them
+    MeasurementUpdate& record = nextRecord();
+    record.selectedStates.resize(0);
+    record.h = h;
+    record.gain = gain;
+    const Eigen::LLT<Eigen::MatrixXd> cholesky(s);
+    record.weightedInnovation = cholesky.solve(innovation);
+    record.inverseS = cholesky.solve(Eigen::MatrixXd::Identity(s.rows(), s.cols()));
 }
 
 void ErrorStateEkf::updateZeroVelocity()
@@ -212,6 +303,8 @@ void ErrorStateEkf::updateRows(const Eigen::MatrixXd& h, const Eigen::VectorXd& 
     const Matrix15 iMinusKh = Matrix15::Identity() - gain * h;
     Matrix15 p = iMinusKh * covariance_ * iMinusKh.transpose() + gain * noiseVariance.asDiagonal() * gain.transpose();
     covariance_ = 0.5 * (p + p.transpose());
+    if (recordUpdates_)
+        recordUpdate(h, gain, innovation, s);
     applyCorrection(dx);
 }
 
@@ -225,7 +318,6 @@ void ErrorStateEkf::applyCorrection(const Vector15& dx)
     state_.position_m -= dx.segment<3>(kPos);
     state_.velocity_mps -= dx.segment<3>(kVel);
     state_.accBias_mps2 += dx.segment<3>(kAccBias);
-    correctionsSincePropagation_ += dx;
     // The error states return to zero implicitly: dx is recomputed from zero at every update.
 }
 

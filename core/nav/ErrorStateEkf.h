@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <Eigen/Dense>
 
+#include <vector>
+
 namespace footpath {
 
 /// Nominal navigation state carried by the strapdown mechanization.
@@ -22,6 +24,19 @@ struct PropagationStep {
     Eigen::Vector3d navSpecificForce = Eigen::Vector3d::Zero();  ///< a_n of eq. 27
     Eigen::Matrix3d bodyToNav = Eigen::Matrix3d::Identity();     ///< attitude after the strapdown step
     double dt_s = 0.0;                                           ///< 0: no propagation (repeated timestamp)
+};
+
+/// One measurement update as the filter made it, z = H dx + noise, gain K, S = H P H^T + R: what
+/// the smoother's backward pass needs to run it backwards (ErrorStateEkf::setRecordUpdates).
+/// Fixed maximum sizes, so recording one allocates nothing.
+struct MeasurementUpdate {
+    static constexpr int kMaxRows = 15;
+    /// H is the rows of the identity at these states (ZUPT, ZARU); empty: H is h.
+    Eigen::Matrix<int, Eigen::Dynamic, 1, 0, kMaxRows, 1> selectedStates;
+    Eigen::Matrix<double, Eigen::Dynamic, 15, 0, kMaxRows, 15> h;
+    Eigen::Matrix<double, 15, Eigen::Dynamic, 0, 15, kMaxRows> gain;                       ///< K
+    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1> weightedInnovation;           ///< S^-1 z
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxRows> inverseS;  ///< S^-1
 };
 
 /// Strapdown mechanization plus the 15-state error-state EKF of Guo 2015 (sections 2.2, 2.4-2.6).
@@ -65,14 +80,15 @@ public:
     const Matrix15& covariance() const { return covariance_; }
     /// The last propagation's inputs (dt 0 until the first, and after a skipped one).
     const PropagationStep& lastPropagation() const { return lastPropagation_; }
-    /// Sum of the error-state corrections applied since the last propagate() (zero when no
-    /// measurement came in): the step from the predicted to the filtered state, for the smoother.
-    const Vector15& correctionsSincePropagation() const { return correctionsSincePropagation_; }
+    /// Keep each measurement update since the last propagate() (off by default: only the smoother
+    /// needs them). At most MeasurementUpdate::kMaxRows rows an update.
+    void setRecordUpdates(bool record) { recordUpdates_ = record; }
+    /// The updates since the last propagate(), in the order they were made (none unless recorded).
+    std::size_t updateCount() const { return updateCount_; }
+    const MeasurementUpdate& recordedUpdate(std::size_t i) const { return updates_[i]; }
     /// Process noise variance added over a step of dt_s (diagonal of Q).
     Vector15 processVariance(double dt_s) const;
 
-    /// Phi P Phi^T + Q for one step with the block structure of eq. 26 (Phi = I + four 3x3 blocks).
-    static void propagateCovariance(Matrix15& covariance, const PropagationStep& step, const Vector15& processVariance);
     /// Navigation-frame specific force of the last propagation (a_n = C f, eq. 27).
     const Eigen::Vector3d& lastNavAcceleration() const { return lastPropagation_.navSpecificForce; }
 
@@ -81,9 +97,21 @@ public:
     Matrix15 transitionMatrix(const Eigen::Vector3d& navSpecificForce, double dt_s) const;
 
 private:
+    /// Phi P Phi^T + Q for one step with the block structure of eq. 26 (Phi = I + four 3x3 blocks).
+    void propagateCovariance(const PropagationStep& step, const Vector15& processVariance);
+    /// Phi P Phi^T of the 15-state filter.
+    void propagateAllBlocks(const PropagationStep& step);
+    /// Phi P Phi^T of the 9-state filter: no bias terms, the bias blocks stay zero.
+    void propagateNavigationBlocks(const PropagationStep& step);
     template <int Rows>
     void update(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, Rows, 1>& innovation,
                 const Eigen::Matrix<double, Rows, 1>& noiseVariance);
+    template <int Rows>
+    void recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, 15, Rows>& gain,
+                      const Eigen::Matrix<double, Rows, 1>& innovation, const Eigen::Matrix<double, Rows, Rows>& s);
+    void recordUpdate(const Eigen::MatrixXd& h, const Eigen::MatrixXd& gain, const Eigen::VectorXd& innovation,
+                      const Eigen::MatrixXd& s);
+    MeasurementUpdate& nextRecord();
     void applyCorrection(const Vector15& dx);
 
     Parameters params_;
@@ -91,7 +119,12 @@ private:
     Matrix15 covariance_;
     Eigen::Matrix<double, kStates, 1> processVariancePerStep_;  ///< at the 10 ms reference step
     PropagationStep lastPropagation_;
-    Vector15 correctionsSincePropagation_ = Vector15::Zero();
+    /// false: the 9-state filter, whose bias rows of P, and so of every gain, stay exactly zero
+    /// (the propagation and the update skip them, which changes no number).
+    bool biasStates_ = true;
+    bool recordUpdates_ = false;
+    std::vector<MeasurementUpdate> updates_;  ///< reused: grows to the most updates one sample had
+    std::size_t updateCount_ = 0;
 };
 
 }  // namespace footpath

@@ -47,14 +47,25 @@ void reserveResult(Result& result, std::size_t n)
     result.accBias_mps2.reserve(n);
 }
 
-void recordState(Result& result, double time_s, const NavState& state)
+namespace {
+
+/// The per-sample vectors but the attitude angles. The smoother's forward pass records only these:
+/// the backward pass writes every sample's attitude and standard deviations.
+void recordStateButAttitude(Result& result, double time_s, const NavState& state)
 {
     result.time_s.push_back(time_s);
     result.position_m.push_back(state.position_m);
     result.velocity_mps.push_back(state.velocity_mps);
-    result.rollPitchYaw_rad.push_back(rollPitchYaw(state.bodyToNav));
     result.gyroBias_radps.push_back(state.gyroBias_radps);
     result.accBias_mps2.push_back(state.accBias_mps2);
+}
+
+}  // namespace
+
+void recordState(Result& result, double time_s, const NavState& state)
+{
+    recordStateButAttitude(result, time_s, state);
+    result.rollPitchYaw_rad.push_back(rollPitchYaw(state.bodyToNav));
 }
 
 namespace {
@@ -84,22 +95,29 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
     std::optional<RtsSmoother> smoother;
     if (params.estimatorKind() == EstimatorKind::Smoother) {
         smoother.emplace(params, ekf);
-        smoother->reserve(samples.size());
+        smoother->reserve(samples.size(),
+                          static_cast<std::size_t>(std::count(flags.stance.begin(), flags.stance.end(), 1)));
     }
     // The forward pass is most of the work without the smoother, about half with it.
     const double forwardShare = smoother ? 0.5 : 1.0;
     reserveResult(result, samples.size());
-    result.errorStd.reserve(samples.size());
+    if (!smoother)
+        result.errorStd.reserve(samples.size());
     const std::size_t start = alignmentStart(flags.stance);  // after a mid-walk start, the first stance
     for (std::size_t k = 0; k < samples.size(); ++k) {
-        const std::optional<double> previousTime_s =
-            k > start ? std::optional<double>(samples[k - 1].time_s) : std::nullopt;
-        if (k < start)
-            holdAtStart(ekf, samples[k].time_s, result);
-        else
-            filterSample(ekf, sources, samples[k], previousTime_s, flagsAt(flags, k), result);
-        if (smoother)
+        const ImuSample& sample = samples[k];
+        if (smoother) {  // samples before the start: the filter stands still, as holdAtStart records
+            if (k >= start)
+                advanceFilter(ekf, sources, sample, k > start ? std::optional<double>(samples[k - 1].time_s) : std::nullopt,
+                              flagsAt(flags, k), k, result.methodNotes);
+            recordStateButAttitude(result, sample.time_s, ekf.state());
             smoother->capture(ekf);
+        } else if (k < start) {
+            holdAtStart(ekf, sample.time_s, result);
+        } else {
+            filterSample(ekf, sources, sample, k > start ? std::optional<double>(samples[k - 1].time_s) : std::nullopt,
+                         flagsAt(flags, k), result);
+        }
         if (progress && k % kProgressInterval == 0
             && !progress(forwardShare * static_cast<double>(k) / static_cast<double>(samples.size())))
             return false;
@@ -110,6 +128,8 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
     result.forwardSpeed_mps.reserve(samples.size());
     for (const Eigen::Vector3d& velocity : result.velocity_mps)
         result.forwardSpeed_mps.push_back(static_cast<float>(velocity.norm()));
+    result.rollPitchYaw_rad.resize(samples.size());
+    result.errorStd.resize(samples.size());
     return smoother->smooth(result, [&](double fraction) {
         return !progress || progress(forwardShare + (1.0 - forwardShare) * fraction);
     });
@@ -133,12 +153,19 @@ Step makeStep(const Result& result, std::size_t first, std::size_t last)
 
 }  // namespace
 
-void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSample& sample,
-                  std::optional<double> previousTime_s, const SampleStanceFlags& flags, Result& result)
+void advanceFilter(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSample& sample,
+                   std::optional<double> previousTime_s, const SampleStanceFlags& flags, std::size_t index,
+                   std::vector<MethodNote>& notes)
 {
     if (previousTime_s)
         ekf.propagate(sample.acc_mps2, sample.gyr_radps, sample.time_s - *previousTime_s);
-    sources.apply(ekf, SourceContext{sample, result.time_s.size(), flags, result.methodNotes});
+    sources.apply(ekf, SourceContext{sample, index, flags, notes});
+}
+
+void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSample& sample,
+                  std::optional<double> previousTime_s, const SampleStanceFlags& flags, Result& result)
+{
+    advanceFilter(ekf, sources, sample, previousTime_s, flags, result.time_s.size(), result.methodNotes);
     recordState(result, sample.time_s, ekf.state());
     result.errorStd.push_back(ekf.covariance().diagonal().cwiseMax(0.0).cwiseSqrt().cast<float>());
 }

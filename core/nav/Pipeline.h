@@ -43,6 +43,13 @@ void fillStepsAndSummary(Result& result);
 // The pieces below are shared with StreamingEstimator, which runs them one sample at a time and so
 // gives the same numbers as runPipeline.
 
+/// The filter's work on one sample, not recorded: propagation over the time since the previous
+/// sample (none for the first), then the measurement sources; index is the sample's number in the
+/// result, notes where the sources write.
+void advanceFilter(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSample& sample,
+                   std::optional<double> previousTime_s, const SampleStanceFlags& flags, std::size_t index,
+                   std::vector<MethodNote>& notes);
+
 /// The filter's work on one sample: propagation over the time since the previous sample (none for
 /// the first), the measurement sources (ZUPT/ZARU and the other methods as enabled), then the state
 /// appended to result (the stance flags are the caller's to append; notes go to result.methodNotes).

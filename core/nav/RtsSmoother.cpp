@@ -22,95 +22,148 @@ std::vector<int> activeStates(FilterStates states)
     return active;
 }
 
-}  // namespace
+/// Where the blocks of the running states sit: the filter's order, without the biases for 9.
+template <int N>
+struct Blocks {
+    static constexpr bool biases = N == 15;
+    static constexpr int att = 0, gyroBias = 3, pos = biases ? 6 : 3, vel = biases ? 9 : 6, accBias = 12;
+};
 
-RtsSmoother::RtsSmoother(const Parameters& params, const ErrorStateEkf& ekf)
-    : active_(activeStates(params.filterStates()))
-    , storesPropagationAttitude_(params.filterStates() == FilterStates::Fifteen)
-    , processVariancePerSecond_(ekf.processVariance(1.0))
+/// Asks for the cache lines of values (count doubles) ahead of their use.
+void prefetch(const double* values, std::size_t count)
 {
+    constexpr std::size_t kLine = 64 / sizeof(double);
+    for (std::size_t i = 0; i < count; i += kLine)
+        __builtin_prefetch(values + i);
 }
 
-void RtsSmoother::reserve(std::size_t samples)
+constexpr int kMaxRows = MeasurementUpdate::kMaxRows;
+using RowsVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1>;
+using RowsMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxRows>;
+
+}  // namespace
+
+RtsSmoother::RtsSmoother(const Parameters& params, ErrorStateEkf& ekf)
+    : active_(activeStates(params.filterStates()))
+    , storesPropagationAttitude_(params.filterStates() == FilterStates::Fifteen)
 {
-    packedCovariance_.reserve(samples * packedSize());
-    corrections_.reserve(samples * active_.size());
-    attitude_.reserve(samples);
-    navSpecificForce_.reserve(samples);
-    dt_s_.reserve(samples);
-    if (storesPropagationAttitude_)
-        propagationAttitude_.reserve(samples);
+    ekf.setRecordUpdates(true);
+}
+
+void RtsSmoother::reserve(std::size_t samples, std::size_t updates)
+{
+    records_.reserve(samples * recordStride());
+    updateStart_.reserve(samples + 1);
+    updateData_.reserve(updates * bytesPerUpdate(storesPropagationAttitude_ ? 6 : 3) / sizeof(double));
 }
 
 void RtsSmoother::capture(const ErrorStateEkf& ekf)
 {
-    const Matrix15& p = ekf.covariance();
+    const ErrorStateEkf::Matrix15& p = ekf.covariance();
+    records_.resize(records_.size() + recordStride());
+    double* out = records_.data() + samples_++ * recordStride();
     for (std::size_t j = 0; j < active_.size(); ++j)
         for (std::size_t i = 0; i <= j; ++i)
-            packedCovariance_.push_back(p(active_[i], active_[j]));
-    for (const int state : active_)
-        corrections_.push_back(ekf.correctionsSincePropagation()(state));
-    attitude_.emplace_back(ekf.state().bodyToNav);
+            *out++ = p(active_[i], active_[j]);
+    const auto store = [&out](const auto& values) {
+        for (int i = 0; i < values.size(); ++i)
+            *out++ = values(i);
+    };
+    store(Eigen::Quaterniond(ekf.state().bodyToNav).coeffs());
     const PropagationStep& step = ekf.lastPropagation();
-    navSpecificForce_.push_back(step.navSpecificForce);
-    dt_s_.push_back(step.dt_s);
+    store(step.navSpecificForce);
+    *out++ = step.dt_s;
     if (storesPropagationAttitude_)
-        propagationAttitude_.emplace_back(step.bodyToNav);
+        store(Eigen::Quaterniond(step.bodyToNav).coeffs());
+    for (std::size_t u = 0; u < ekf.updateCount(); ++u)
+        storeUpdate(ekf.recordedUpdate(u));
+    updateStart_.push_back(updateData_.size());
+}
+
+void RtsSmoother::storeUpdate(const MeasurementUpdate& update)
+{
+    // The rows of H on the running states. A row that is zero there (ZARU in the 9-state filter)
+    // is dropped: the gain's rows for the running states are zero in its column, so it changes
+    // nothing the backward pass carries.
+    const int n = static_cast<int>(active_.size());
+    const bool selects = update.selectedStates.size() > 0;
+    std::vector<int>& rows = rowsScratch_;
+    rows.clear();
+    for (int row = 0; row < update.gain.cols(); ++row) {
+        bool seen = false;
+        for (int i = 0; i < n && !seen; ++i)
+            seen = selects ? update.selectedStates(row) == active_[static_cast<std::size_t>(i)]
+                           : update.h(row, active_[static_cast<std::size_t>(i)]) != 0.0;
+        if (seen)
+            rows.push_back(row);
+    }
+    if (rows.empty())
+        return;
+    const std::size_t m = rows.size();
+    const std::size_t begin = updateData_.size();
+    const std::size_t length = bytesPerUpdate(static_cast<int>(m)) / sizeof(double) + (selects ? 0 : m * (n - 1));
+    updateData_.resize(begin + length);
+    double* out = updateData_.data() + begin;
+    *out++ = static_cast<double>(m);
+    *out++ = selects ? 1.0 : 0.0;
+    for (const int row : rows)
+        for (int i = 0; i < n; ++i) {
+            const int state = active_[static_cast<std::size_t>(i)];
+            if (!selects)
+                *out++ = update.h(row, state);
+            else if (update.selectedStates(row) == state)
+                *out++ = static_cast<double>(i);
+        }
+    for (const int row : rows)
+        for (int i = 0; i < n; ++i)
+            *out++ = update.gain(active_[static_cast<std::size_t>(i)], row);
+    for (const int row : rows)
+        *out++ = update.weightedInnovation(row);
+    for (const int col : rows)
+        for (const int row : rows)
+            *out++ = update.inverseS(row, col);
+    *out = static_cast<double>(length);
 }
 
 std::size_t RtsSmoother::bytesPerSample() const
 {
-    const std::size_t doubles = packedSize() + active_.size() + 4 + 3 + 1 + (storesPropagationAttitude_ ? 4 : 0);
-    return doubles * sizeof(double);
+    const std::size_t doubles = packedSize() + 4 + 3 + 1 + (storesPropagationAttitude_ ? 4 : 0);
+    return doubles * sizeof(double) + sizeof(std::size_t);
+}
+
+std::size_t RtsSmoother::bytesPerUpdate(int rows) const
+{
+    const std::size_t m = static_cast<std::size_t>(rows);
+    return (2 + m + active_.size() * m + m + m * m + 1) * sizeof(double);
+}
+
+Eigen::Matrix3d RtsSmoother::attitude(std::size_t k) const
+{
+    return Eigen::Map<const Eigen::Quaterniond>(record(k) + packedSize()).toRotationMatrix();
 }
 
 PropagationStep RtsSmoother::propagationInto(std::size_t k) const
 {
+    const double* values = record(k) + packedSize() + 4;
     PropagationStep step;
-    step.navSpecificForce = navSpecificForce_[k];
-    step.dt_s = dt_s_[k];
+    step.navSpecificForce = Eigen::Map<const Eigen::Vector3d>(values);
+    step.dt_s = values[3];
     if (storesPropagationAttitude_)
-        step.bodyToNav = propagationAttitude_[k].toRotationMatrix();
+        step.bodyToNav = Eigen::Map<const Eigen::Quaterniond>(values + 4).toRotationMatrix();
     return step;
 }
 
-namespace {
-
-/// X = A^-1 B for a symmetric positive semi-definite A by Cholesky and substitution over whole rows,
-/// written out because Eigen's triangular solver takes its general matrix path at these sizes
-/// (a third of the backward pass). A gets a tiny diagonal load: at the start of a recording some
-/// states have no variance yet (P0 of zero), and their rows of B are zero too, so they get zero.
-template <int N>
-Eigen::Matrix<double, N, N> solveSymmetric(Eigen::Matrix<double, N, N> a, Eigen::Matrix<double, N, N> b)
-{
-    a.diagonal().array() += 1e-18 + 1e-12 * a.diagonal().maxCoeff();
-    const Eigen::Matrix<double, N, N> l = a.llt().matrixL();
-    for (int i = 0; i < N; ++i) {  // L Y = B
-        for (int j = 0; j < i; ++j)
-            b.row(i) -= l(i, j) * b.row(j);
-        b.row(i) /= l(i, i);
-    }
-    for (int i = N - 1; i >= 0; --i) {  // L^T X = Y
-        for (int j = i + 1; j < N; ++j)
-            b.row(i) -= l(j, i) * b.row(j);
-        b.row(i) /= l(i, i);
-    }
-    return b;
-}
-
-}  // namespace
-
 template <int N>
 void RtsSmoother::writeSmoothed(Result& result, std::size_t k, const Eigen::Matrix<double, N, 1>& correction,
-                                const Eigen::Matrix<double, N, N>& covariance) const
+                                const Eigen::Matrix<double, N, 1>& variance) const
 {
     using E = ErrorStateEkf;
-    Vector15 dx = Vector15::Zero();
+    ErrorStateEkf::Vector15 dx = ErrorStateEkf::Vector15::Zero();
     for (int i = 0; i < N; ++i)
         dx(active_[static_cast<std::size_t>(i)]) = correction(i);
     // The filter's signs (ErrorStateEkf::applyCorrection): attitude, position and velocity errors
     // are estimate - truth, bias errors truth - estimate.
-    Eigen::Matrix3d bodyToNav = padeRotation(-dx.segment<3>(E::kAtt)) * attitude_[k].toRotationMatrix();
+    Eigen::Matrix3d bodyToNav = padeRotation(-dx.segment<3>(E::kAtt)) * attitude(k);
     reorthonormalize(bodyToNav);
     result.rollPitchYaw_rad[k] = rollPitchYaw(bodyToNav);
     result.position_m[k] -= dx.segment<3>(E::kPos);
@@ -121,13 +174,13 @@ void RtsSmoother::writeSmoothed(Result& result, std::size_t k, const Eigen::Matr
         Eigen::Matrix<float, 15, 1>& sigma = result.errorStd[k];
         sigma.setZero();
         for (int i = 0; i < N; ++i)
-            sigma(active_[static_cast<std::size_t>(i)]) = static_cast<float>(std::sqrt(std::max(0.0, covariance(i, i))));
+            sigma(active_[static_cast<std::size_t>(i)]) = static_cast<float>(std::sqrt(std::max(0.0, variance(i))));
     }
 }
 
 bool RtsSmoother::smooth(Result& result, const std::function<bool(double fraction)>& keepGoing) const
 {
-    if (attitude_.empty() || result.position_m.size() != attitude_.size())
+    if (samples_ == 0 || result.position_m.size() != samples_)
         return true;
     return active_.size() == 15 ? smoothBackward<15>(result, keepGoing) : smoothBackward<9>(result, keepGoing);
 }
@@ -136,7 +189,7 @@ template <int N>
 Eigen::Matrix<double, N, N> RtsSmoother::filteredCovariance(std::size_t k) const
 {
     Eigen::Matrix<double, N, N> p;
-    const double* packed = packedCovariance_.data() + k * packedSize();
+    const double* packed = record(k);
     for (int j = 0; j < N; ++j)
         for (int i = 0; i <= j; ++i, ++packed)
             p(i, j) = p(j, i) = *packed;
@@ -144,21 +197,83 @@ Eigen::Matrix<double, N, N> RtsSmoother::filteredCovariance(std::size_t k) const
 }
 
 template <int N>
-void RtsSmoother::applyTransition(Eigen::Matrix<double, N, N>& m, const PropagationStep& step) const
+void RtsSmoother::transitionBackward(Eigen::Matrix<double, N, 1>& adjoint, Eigen::Matrix<double, N, N>& information,
+                                     const PropagationStep& step) const
 {
-    // m = Phi m with Phi = I + the blocks of eq. 26, on the running states in their stored order
-    // (attitude, position, velocity for 9 states; the filter's order for 15). Position first: it
-    // takes the velocity rows before they change.
+    // mu = Phi^T mu and L = Phi^T L Phi with Phi = I + the blocks of eq. 26: (att, gyro bias) and
+    // (vel, acc bias) dt C, (pos, vel) dt I, (vel, att) -dt S(a_n). Each block reads a block the
+    // later ones change, so the order matters: biases, then attitude, then velocity.
     if (!(step.dt_s > 0.0))
         return;
-    constexpr bool biases = N == 15;
-    constexpr int att = 0, gyroBias = 3, pos = biases ? 6 : 3, vel = biases ? 9 : 6, accBias = 12;
-    m.template middleRows<3>(pos) += step.dt_s * m.template middleRows<3>(vel);
-    m.template middleRows<3>(vel) -= (step.dt_s * skew(step.navSpecificForce)).lazyProduct(m.template middleRows<3>(att));
-    if constexpr (biases) {
+    using B = Blocks<N>;
+    const Eigen::Matrix3d velFromAtt = -step.dt_s * skew(step.navSpecificForce);
+    const Eigen::Matrix3d velFromAttT = velFromAtt.transpose();
+    auto& l = information;
+    if constexpr (B::biases) {
         const Eigen::Matrix3d biasGain = step.dt_s * step.bodyToNav;
-        m.template middleRows<3>(att) += biasGain.lazyProduct(m.template middleRows<3>(gyroBias));
-        m.template middleRows<3>(vel) += biasGain.lazyProduct(m.template middleRows<3>(accBias));
+        const Eigen::Matrix3d biasGainT = biasGain.transpose();
+        adjoint.template segment<3>(B::gyroBias) += biasGainT * adjoint.template segment<3>(B::att);
+        adjoint.template segment<3>(B::accBias) += biasGainT * adjoint.template segment<3>(B::vel);
+        l.template middleCols<3>(B::gyroBias) += l.template middleCols<3>(B::att).lazyProduct(biasGain);
+        l.template middleCols<3>(B::accBias) += l.template middleCols<3>(B::vel).lazyProduct(biasGain);
+        l.template middleCols<3>(B::att) += l.template middleCols<3>(B::vel).lazyProduct(velFromAtt);
+        l.template middleCols<3>(B::vel) += step.dt_s * l.template middleCols<3>(B::pos);
+        l.template middleRows<3>(B::gyroBias) += biasGainT.lazyProduct(l.template middleRows<3>(B::att));
+        l.template middleRows<3>(B::accBias) += biasGainT.lazyProduct(l.template middleRows<3>(B::vel));
+    } else {
+        l.template middleCols<3>(B::att) += l.template middleCols<3>(B::vel).lazyProduct(velFromAtt);
+        l.template middleCols<3>(B::vel) += step.dt_s * l.template middleCols<3>(B::pos);
+    }
+    adjoint.template segment<3>(B::att) += velFromAttT * adjoint.template segment<3>(B::vel);
+    adjoint.template segment<3>(B::vel) += step.dt_s * adjoint.template segment<3>(B::pos);
+    l.template middleRows<3>(B::att) += velFromAttT.lazyProduct(l.template middleRows<3>(B::vel));
+    l.template middleRows<3>(B::vel) += step.dt_s * l.template middleRows<3>(B::pos);
+}
+
+template <int N>
+void RtsSmoother::updatesBackward(std::size_t k, Eigen::Matrix<double, N, 1>& adjoint,
+                                  Eigen::Matrix<double, N, N>& information) const
+{
+    using VectorN = Eigen::Matrix<double, N, 1>;
+    using Gain = Eigen::Matrix<double, N, Eigen::Dynamic, 0, N, kMaxRows>;
+    auto& l = information;
+    // Last update first: each record ends with its length.
+    for (std::size_t end = updateStart_[k + 1]; end > updateStart_[k];) {
+        const std::size_t begin = end - static_cast<std::size_t>(updateData_[end - 1]);
+        end = begin;
+        const double* record = updateData_.data() + begin;
+        const int m = static_cast<int>(record[0]);
+        const bool selects = record[1] != 0.0;
+        const double* h = record + 2;
+        const double* gainData = h + (selects ? m : m * N);
+        const Eigen::Map<const Eigen::Matrix<double, N, Eigen::Dynamic>> gain(gainData, N, m);
+        const Eigen::Map<const Eigen::VectorXd> weightedInnovation(gainData + N * m, m);
+        const Eigen::Map<const Eigen::MatrixXd> inverseS(gainData + N * m + m, m, m);
+
+        // B = L K and C = K^T B + S^-1, from L and mu before the update.
+        Gain b(N, m);
+        for (int j = 0; j < m; ++j)
+            b.col(j).noalias() = l.lazyProduct(Eigen::Map<const VectorN>(gainData + N * j));
+        const RowsMatrix c = gain.transpose().lazyProduct(b) + inverseS;
+        const RowsVector t = weightedInnovation - gain.transpose().lazyProduct(adjoint);
+        // mu += H^T t, L = L - B H - (B H)^T + H^T C H.
+        if (selects) {
+            for (int j = 0; j < m; ++j) {
+                const int state = static_cast<int>(h[j]);
+                adjoint(state) += t(j);
+                l.col(state) -= b.col(j);
+                l.row(state) -= b.col(j).transpose();
+            }
+            for (int j = 0; j < m; ++j)
+                for (int i = 0; i < m; ++i)
+                    l(static_cast<int>(h[i]), static_cast<int>(h[j])) += c(i, j);
+        } else {
+            const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor>> hm(h, m, N);
+            adjoint += hm.transpose().lazyProduct(t);
+            const Eigen::Matrix<double, N, N> bh = b.lazyProduct(hm);
+            l -= bh + bh.transpose();
+            l += hm.transpose().lazyProduct(c.lazyProduct(hm));
+        }
     }
 }
 
@@ -167,34 +282,23 @@ bool RtsSmoother::smoothBackward(Result& result, const std::function<bool(double
 {
     using MatrixN = Eigen::Matrix<double, N, N>;
     using VectorN = Eigen::Matrix<double, N, 1>;
-    const std::size_t n = attitude_.size();
-    VectorN processVariancePerSecond;
-    for (int i = 0; i < N; ++i)
-        processVariancePerSecond(i) = processVariancePerSecond_(active_[static_cast<std::size_t>(i)]);
-    // The last sample's smoothed estimate is its filtered one.
-    VectorN correctionNext = VectorN::Zero();
-    MatrixN smoothedCovarianceNext = filteredCovariance<N>(n - 1);
-    for (std::size_t k = n - 1; k-- > 0;) {
+    const std::size_t n = samples_;
+    // After the last sample nothing is measured: mu and L start at zero.
+    VectorN adjoint = VectorN::Zero();
+    MatrixN information = MatrixN::Zero();
+    for (std::size_t k = n; k-- > 0;) {
+        if (k >= 2)  // the pass walks memory backwards, which the hardware prefetcher follows poorly
+            prefetch(record(k - 2), recordStride());
+        if (k + 1 < n)
+            transitionBackward<N>(adjoint, information, propagationInto(k + 1));
         const MatrixN filtered = filteredCovariance<N>(k);
-        const PropagationStep step = propagationInto(k + 1);
-        // P(k+1|k) = Phi P Phi^T + Q, with Phi P kept: it is also the right-hand side of the gain.
-        MatrixN phiP = filtered;
-        applyTransition<N>(phiP, step);
-        MatrixN predicted = phiP.transpose();
-        applyTransition<N>(predicted, step);
-        predicted.diagonal() += processVariancePerSecond * step.dt_s;
-
-        // G^T = P(k+1|k)^-1 Phi P(k|k). Lazy products: fixed-size and unrolled, not Eigen's
-        // general kernel.
-        const MatrixN gainT = solveSymmetric<N>(predicted, phiP);
-        const Eigen::Map<const VectorN> ownCorrection(corrections_.data() + (k + 1) * static_cast<std::size_t>(N));
-        const VectorN correction = gainT.transpose() * (ownCorrection + correctionNext);
-        const MatrixN change = (smoothedCovarianceNext - predicted).lazyProduct(gainT);
-        const MatrixN smoothedCovariance = filtered + gainT.transpose().lazyProduct(change);
-
-        writeSmoothed<N>(result, k, correction, smoothedCovariance);
-        correctionNext = correction;
-        smoothedCovarianceNext = smoothedCovariance;
+        // diag(P L P) as the columns of P dotted with those of L P.
+        const MatrixN informationTimesFiltered = information.lazyProduct(filtered);
+        VectorN variance;
+        for (int i = 0; i < N; ++i)
+            variance(i) = filtered(i, i) - filtered.col(i).dot(informationTimesFiltered.col(i));
+        writeSmoothed<N>(result, k, filtered.lazyProduct(adjoint), variance);
+        updatesBackward<N>(k, adjoint, information);
         if (keepGoing && k % kProgressInterval == 0 && !keepGoing(static_cast<double>(n - k) / static_cast<double>(n)))
             return false;
     }

@@ -16,60 +16,80 @@ namespace footpath {
 /// the next stance's velocity error only after the fact; the smoother spreads it back over the swing).
 ///
 /// Error-state form: the forward filter resets its error state after each measurement, so the
-/// backward pass works on corrections, not states. With s(k+1) = the correction that takes the
-/// predicted state at k+1 to the smoothed one (the filter's own correction at k+1 plus the
-/// smoothed correction r(k+1) on top of the filtered state), the RTS gain G(k) gives
-///   r(k) = G(k) s(k+1),   G(k) = P(k|k) Phi(k)^T P(k+1|k)^-1,
-///   P(k|N) = P(k|k) + G(k) (P(k+1|N) - P(k+1|k)) G(k)^T,
-/// and the smoothed state is the filtered state at k with r(k) applied as the filter applies its
-/// corrections (ErrorStateEkf::applyCorrection's signs).
+/// backward pass works on corrections, not states: r(k), the correction that takes the filtered
+/// state at k to the smoothed one, applied as the filter applies its corrections
+/// (ErrorStateEkf::applyCorrection's signs).
+///
+/// The RTS equations in Bierman's modified Bryson-Frazier form, which needs no inverse of P(k+1|k):
+/// with the adjoint mu and its information matrix L, zero after the last sample,
+///   r(k) = P(k|k) mu(k),  P(k|N) = P(k|k) - P(k|k) L(k) P(k|k),
+///   mu(k) = Phi(k)^T mu~(k+1),  L(k) = Phi(k)^T L~(k+1) Phi(k),
+/// and through each update of sample k (z = H dx + noise, gain K, S = H P H^T + R), last one first,
+///   mu~ = mu + H^T (S^-1 z - K^T mu),  L~ = A^T L A + H^T S^-1 H,  A = I - K H.
+/// The same numbers as G(k) = P(k|k) Phi^T P(k+1|k)^-1 (tests/DenseReferenceFilter), but Phi is
+/// I plus a few 3x3 blocks and H selects states, so a sample costs one N x N product (the smoothed
+/// variances) and a few block products, where the gain form needs a Cholesky solve and two products.
 ///
 /// Storage per sample: the filtered covariance of the states the filter runs (upper triangle), the
-/// sample's corrections, the attitude and the propagation's specific force and step; P(k+1|k) is
-/// recomputed from P(k|k) instead of stored. 9 states: 62 doubles (496 bytes) a sample, an hour at
-/// 200 Hz 357 MB; 15 states: 147 doubles (1176 bytes), 847 MB (bytesPerSample()). Doubles, because
-/// the backward pass inverts P(k+1|k), whose condition float rounding would spoil.
+/// attitude, the propagation's specific force and step, where its updates start; per update its
+/// rows of H (state indices when they select states), K, S^-1 z and S^-1. 9 states: 54 doubles a
+/// sample plus 45 a ZUPT, about 77 (612 bytes) with stance half the time, an hour at 200 Hz 440 MB;
+/// 15 states: 133 doubles plus 141 a ZUPT+ZARU. Doubles: P(k|k) - P L P cancels most digits in the
+/// states the future observes.
 class RtsSmoother {
 public:
-    RtsSmoother(const Parameters& params, const ErrorStateEkf& ekf);
+    /// Switches the filter's update recording on: the backward pass runs its updates backwards.
+    RtsSmoother(const Parameters& params, ErrorStateEkf& ekf);
 
-    void reserve(std::size_t samples);
+    /// Room for this many samples and measurement updates (of the usual 3 or 6 rows).
+    void reserve(std::size_t samples, std::size_t updates);
     /// After the filter's work on a sample (propagation into it, then its measurements).
     void capture(const ErrorStateEkf& ekf);
     /// The backward pass over the captured samples: replaces the per-sample states and errorStd of
-    /// result (which must hold one entry per captured sample) by the smoothed ones. Returns false
-    /// if keepGoing (asked now and then) said stop; result is then partly smoothed.
+    /// result (which must hold one entry per captured sample; attitude and errorStd are written
+    /// for every sample) by the smoothed ones. Returns false if keepGoing (asked now and then) said
+    /// stop; result is then partly smoothed.
     bool smooth(Result& result, const std::function<bool(double fraction)>& keepGoing = {}) const;
 
+    /// Storage for each sample, and for each update of rows state-selecting rows on top.
     std::size_t bytesPerSample() const;
+    std::size_t bytesPerUpdate(int rows) const;
 
 private:
-    using Vector15 = ErrorStateEkf::Vector15;
-    using Matrix15 = ErrorStateEkf::Matrix15;
-
     std::size_t packedSize() const { return active_.size() * (active_.size() + 1) / 2; }
+    std::size_t recordStride() const { return packedSize() + 8 + (storesPropagationAttitude_ ? 4 : 0); }
+    const double* record(std::size_t k) const { return records_.data() + k * recordStride(); }
+    Eigen::Matrix3d attitude(std::size_t k) const;
+    void storeUpdate(const MeasurementUpdate& update);
     /// The backward pass on fixed-size N x N blocks of the running states (9 or 15), which Eigen
-    /// unrolls and vectorises: the dynamic-size version took five times as long.
+    /// unrolls and vectorises.
     template <int N>
     bool smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing) const;
     template <int N>
     Eigen::Matrix<double, N, N> filteredCovariance(std::size_t k) const;
     PropagationStep propagationInto(std::size_t k) const;
     template <int N>
-    void applyTransition(Eigen::Matrix<double, N, N>& m, const PropagationStep& step) const;
+    void transitionBackward(Eigen::Matrix<double, N, 1>& adjoint, Eigen::Matrix<double, N, N>& information,
+                            const PropagationStep& step) const;
+    template <int N>
+    void updatesBackward(std::size_t k, Eigen::Matrix<double, N, 1>& adjoint,
+                         Eigen::Matrix<double, N, N>& information) const;
     template <int N>
     void writeSmoothed(Result& result, std::size_t k, const Eigen::Matrix<double, N, 1>& correction,
-                       const Eigen::Matrix<double, N, N>& covariance) const;
+                       const Eigen::Matrix<double, N, 1>& variance) const;
 
     std::vector<int> active_;  ///< error-state indices the filter runs (all 15, or 9 without biases)
     bool storesPropagationAttitude_ = false;  ///< only the bias blocks of Phi need it
-    Vector15 processVariancePerSecond_;
-    std::vector<double> packedCovariance_;
-    std::vector<double> corrections_;
-    std::vector<Eigen::Quaterniond> attitude_;
-    std::vector<Eigen::Vector3d> navSpecificForce_;
-    std::vector<double> dt_s_;
-    std::vector<Eigen::Quaterniond> propagationAttitude_;
+    /// One record of recordStride() doubles a sample, so the backward pass reads one block per
+    /// sample: the packed covariance, the attitude (quaternion), the propagation's specific force,
+    /// step and (15 states) attitude.
+    std::vector<double> records_;
+    std::size_t samples_ = 0;
+    /// Sample k's updates are updateData_[updateStart_[k], updateStart_[k + 1]), each record
+    /// [rows, 1 if H selects states, H (indices or rows x N), K (N x rows), S^-1 z, S^-1, length].
+    std::vector<std::size_t> updateStart_{0};
+    std::vector<double> updateData_;
+    std::vector<int> rowsScratch_;  ///< storeUpdate's list of rows kept, reused
 };
 
 }  // namespace footpath
