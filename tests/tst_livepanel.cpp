@@ -422,6 +422,7 @@ void TestLivePanel::unrecordedSessionCanBeSavedAfterDisconnect()
     auto* signalTabs = new QTabWidget(&panel);
     auto* recordedView = new QWidget;
     trajectoryTabs->addTab(recordedView, QStringLiteral("Trajectory 2D"));
+    signalTabs->addTab(new QWidget, QStringLiteral("Signals"));  // in front: the live views come after
     QSignalSpy liveStatus(&panel, &LivePanel::liveStatusChanged);
     panel.moveViewsInto(trajectoryTabs, signalTabs);
     trajectoryTabs->setCurrentWidget(panel.views()->trajectory2D());

@@ -305,7 +305,7 @@ void LivePanel::moveViewsInto(QTabWidget* trajectoryTabs, QTabWidget* signalTabs
     moveTabs(views_->signalTabs(), signalTabs);
     viewArea_->hide();
     contentLayout_->addStretch(1);
-    workspaceTabs_ = {trajectoryTabs, signalTabs};
+    workspaceTabs_ = {QPointer<QTabWidget>(trajectoryTabs), QPointer<QTabWidget>(signalTabs)};
     for (QTabWidget* tabs : workspaceTabs_)
         connect(tabs, &QTabWidget::currentChanged, this, &LivePanel::showSummarySource);
 }

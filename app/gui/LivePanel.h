@@ -4,6 +4,7 @@
 #include "Result.h"
 #include "nav/Parameters.h"
 
+#include <QPointer>
 #include <QWidget>
 
 #include <array>
@@ -151,7 +152,9 @@ private:
     QVBoxLayout* contentLayout_ = nullptr;
     QSplitter* viewArea_ = nullptr;
     LiveViews* views_ = nullptr;
-    std::array<QTabWidget*, 2> workspaceTabs_{};  ///< where moveViewsInto put the views
+    /// Where moveViewsInto put the views; guarded, as the session's last state change may come
+    /// after the workspace's tab widgets are gone.
+    std::array<QPointer<QTabWidget>, 2> workspaceTabs_{};
     SummaryPanel* summary_ = nullptr;             ///< the workspace's, from linkSummary
     QTimer* viewTimer_ = nullptr;
 

@@ -103,10 +103,10 @@ MainWindow::MainWindow(AppSettings& settings, QWidget* parent)
 
 MainWindow::~MainWindow()
 {
-    // The tab widgets lose their pages as the children go: the live panel must not report a
-    // changed current tab (nor its status line) to a window half torn down.
-    for (QTabWidget* tabs : {trajectoryTabs_, signalTabs_})
-        disconnect(tabs, nullptr, live_, nullptr);
+    // The docks hide and the live panel reports as the children go: neither must reach this
+    // window's members (the tab labels, the status line) once they are torn down.
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        disconnect(dock, nullptr, this, nullptr);
     disconnect(live_, nullptr, this, nullptr);
 }
 
