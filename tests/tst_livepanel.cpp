@@ -415,6 +415,22 @@ void TestLivePanel::unrecordedSessionCanBeSavedAfterDisconnect()
     // A bad destination says so and keeps the samples.
     QVERIFY(!panel.saveSamplesTo(dir.filePath(QStringLiteral("no/such/folder/x.csv"))).isEmpty());
     QCOMPARE(panel.receivedSamples().size(), received.size());
+
+    // In the workspace, the window's status line is the session's while a live view is in front
+    // (it once kept the recorded walk's figures there), and is given back when the user leaves.
+    auto* trajectoryTabs = new QTabWidget(&panel);  // the panel's children: they outlive its session
+    auto* signalTabs = new QTabWidget(&panel);
+    auto* recordedView = new QWidget;
+    trajectoryTabs->addTab(recordedView, QStringLiteral("Trajectory 2D"));
+    signalTabs->addTab(new QWidget, QStringLiteral("Signals"));  // in front: the live views come after
+    QSignalSpy liveStatus(&panel, &LivePanel::liveStatusChanged);
+    panel.moveViewsInto(trajectoryTabs, signalTabs);
+    trajectoryTabs->setCurrentWidget(panel.views()->trajectory2D());
+    QVERIFY(!liveStatus.isEmpty());
+    QCOMPARE(liveStatus.last().at(0).toString(), panel.views()->summaryLine());
+    QCOMPARE(panel.statusLine(), panel.views()->summaryLine());
+    trajectoryTabs->setCurrentWidget(recordedView);
+    QCOMPARE(liveStatus.last().at(0).toString(), QString());
 }
 
 QTEST_MAIN(TestLivePanel)

@@ -197,10 +197,24 @@ private slots:
         QVERIFY(summary->isShowingLive());
         QCOMPARE(summary->statistics().pathLength_m, 0.0);  // nothing connected: no live figures yet
         QVERIFY(summary->findChild<QLabel*>(QStringLiteral("liveSource"))->isVisibleTo(summary));
+        // The status line too is the session's (it kept the recorded walk's figures): its state so far.
+        QCOMPARE(status->text(), QStringLiteral("Live session: %1").arg(live->statusText()));
+        QVERIFY(!live->statusText().isEmpty());
+        // The recorded walk re-estimated meanwhile (a parameter changed) does not take the line back.
+        Parameters params = window.session()->parameters();
+        params.acc_std_max_mps2 *= 0.9;
+        window.session()->setParameters(params, QStringLiteral("test"));
+        QVERIFY(shown.wait(30000));
+        QCOMPARE(status->text(), QStringLiteral("Live session: %1").arg(live->statusText()));
         trajectoryTabs->setCurrentWidget(window.findChild<TrajectoryView2D*>(QStringLiteral("trajectory2D")));
         QVERIFY(!summary->isShowingLive());
-        QCOMPARE(summary->statistics().pathLength_m, recordedPath_m);
         QVERIFY(!summary->findChild<QLabel*>(QStringLiteral("liveSource"))->isVisibleTo(summary));
+        // Back at the recorded walk: its line, of the new estimate.
+        QVERIFY2(status->text().startsWith(QStringLiteral("%1 samples, ").arg(window.session()->recording()->samples.size()))
+                     || status->text().contains(QStringLiteral("plausibility warning")),
+                 qPrintable(status->text()));
+        QVERIFY(status->text() != QStringLiteral("Live session: %1").arg(live->statusText()));
+        QCOMPARE(summary->statistics().pathLength_m, window.session()->result()->summary.pathLength_m);
     }
 
     void togglingZaruChangesTheEstimate()

@@ -237,7 +237,7 @@ private slots:
     {
         showPlots();
         std::unique_ptr<QMenu> menu(plots_->interaction()->createContextMenu(nullptr));
-        for (const char* name : {"resetView", "clearMarker", "exportPng", "exportPdf", "exportCsv"})
+        for (const char* name : {"resetView", "clearMarker", "exportPng", "exportSvg", "exportPdf", "exportCsv"})
             QVERIFY2(menu->findChild<QAction*>(QLatin1String(name)) != nullptr, name);
         QVERIFY(!menu->findChild<QAction*>(QStringLiteral("clearMarker"))->isEnabled());  // no marker yet
         QTemporaryDir dir;
@@ -245,6 +245,33 @@ private slots:
         QVERIFY(plots_->interaction()->exportPdf(dir.filePath(QStringLiteral("plot.pdf"))));
         QVERIFY(QImage(dir.filePath(QStringLiteral("plot.png"))).width() >= plots_->plot()->width());
         QVERIFY(QFileInfo(dir.filePath(QStringLiteral("plot.pdf"))).size() > 1000);
+    }
+
+    void svgExportIsAVectorDrawingOfThePlot()
+    {
+        showPlots();
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("plot.svg"));
+        QVERIFY(plots_->interaction()->exportSvg(path));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray svg = file.readAll();
+        QVERIFY2(svg.startsWith("<?xml"), svg.left(80).constData());
+        QVERIFY(svg.contains("<svg"));
+        const QString viewBox = QStringLiteral("viewBox=\"0 0 %1 %2\"").arg(plots_->plot()->width()).arg(plots_->plot()->height());
+        QVERIFY2(svg.contains(viewBox.toUtf8()), qPrintable(viewBox));
+        // A drawing, not a picture in an SVG wrapper: a curve is one line through hundreds of samples (the
+        // fixture's 1000), the axes' labels and units are text.
+        QVERIFY(!svg.contains("<image"));
+        qsizetype longestLine = 0;
+        static const QRegularExpression lines(QStringLiteral("<(?:polyline|path)[^>]*(?:points|d)=\"([^\"]*)\""));
+        for (QRegularExpressionMatchIterator it = lines.globalMatch(QString::fromUtf8(svg)); it.hasNext();)
+            longestLine = std::max(longestLine, it.next().captured(1).split(QLatin1Char(' '), Qt::SkipEmptyParts).size());
+        QVERIFY2(longestLine >= static_cast<qsizetype>(kSamples / 2), qPrintable(QString::number(longestLine)));
+        for (const char* text : {">Acceleration</text>", ">(m/s²)</text>", ">Time (s)</text>"})
+            QVERIFY2(svg.contains(text), text);
+        // A folder that does not exist: a clear failure, not a claimed success.
+        QVERIFY(!plots_->interaction()->exportSvg(dir.filePath(QStringLiteral("missing/plot.svg"))));
     }
 
     void ticksAreRoundAndNeverMinusZero()

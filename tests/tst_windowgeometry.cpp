@@ -118,21 +118,42 @@ private slots:
                     names << tabs->tabText(i);
             return names;
         };
-        for (const QTabWidget* tabs : central) {
+        // Every visible tab in full beside the corner button: the bar never needs its scroll arrows.
+        const auto verifyTabsFit = [&](const QTabWidget* tabs) {
             const QStringList shown = visibleTabs(tabs);
-            QVERIFY2(shown.filter(QStringLiteral("Live")).isEmpty(), qPrintable(shown.join(", ")));  // no session yet
             const QWidget* corner = tabs->cornerWidget(Qt::TopRightCorner);
             const int needed = tabs->tabBar()->sizeHint().width() + (corner ? corner->sizeHint().width() : 0);
             QVERIFY2(needed <= tabs->width(), qPrintable(QStringLiteral("%1: %2 px needed, %3 px there")
                                                              .arg(shown.join(", ")).arg(needed).arg(tabs->width())));
+            for (int i = 0; i < tabs->count(); ++i)
+                if (tabs->isTabVisible(i))
+                    QVERIFY2(tabs->tabBar()->tabRect(i).right() < tabs->tabBar()->width(), qPrintable(tabs->tabText(i)));
+        };
+        for (const QTabWidget* tabs : central) {
+            QVERIFY2(visibleTabs(tabs).filter(QStringLiteral("Live")).isEmpty(), qPrintable(visibleTabs(tabs).join(", ")));  // no session yet
+            verifyTabsFit(tabs);
         }
+        if (QTest::currentTestFailed())
+            return;
+        const QStringList recordedTabs = visibleTabs(central[0]) + visibleTabs(central[1]);
         auto* liveDock = window.findChild<QDockWidget*>(QStringLiteral("liveDock"));
         liveDock->raise();
         for (const QTabWidget* tabs : central)
             QTRY_VERIFY2(visibleTabs(tabs).filter(QStringLiteral("Live")).size() == 2, qPrintable(visibleTabs(tabs).join(", ")));
+        QTest::qWait(50);  // the tab bars' new layout
+        // With the live views beside the recorded walk's, both sets still fit, and each label still
+        // names its view: every tab's full name is in its tool tip.
+        for (const QTabWidget* tabs : central) {
+            verifyTabsFit(tabs);
+            for (int i = 0; i < tabs->count(); ++i)
+                QVERIFY2(!tabs->tabToolTip(i).isEmpty(), qPrintable(tabs->tabText(i)));
+        }
+        if (QTest::currentTestFailed())
+            return;
         window.findChild<QDockWidget*>(QStringLiteral("inputDock"))->raise();
         for (const QTabWidget* tabs : central)
             QTRY_VERIFY(visibleTabs(tabs).filter(QStringLiteral("Live")).isEmpty());
+        QCOMPARE(visibleTabs(central[0]) + visibleTabs(central[1]), recordedTabs);  // the full labels are back
     }
 
     void opensAtTheScreenSizeWithoutASavedGeometry()

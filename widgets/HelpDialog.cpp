@@ -78,7 +78,7 @@ void HelpDialog::fillShortcuts(const QList<QAction*>& menus)
     rows.append({tr("Wheel or drag on a value axis"), tr("Plots: zoom or pan that row's values")});
     rows.append({tr("Pointer over a plot"), tr("Plots and 2D path: read the time and the values there")});
     rows.append({tr("Shift+Click"), tr("Plots and 2D path: set a marker; the readout then gives \u0394t and \u0394y from it")});
-    rows.append({tr("Right-click"), tr("Plots: reset the view, export as PNG or PDF, or the visible data as CSV")});
+    rows.append({tr("Right-click"), tr("Plots: reset the view, export as PNG, SVG or PDF, or the visible data as CSV")});
     rows.append({tr("Double-click"), tr("Plots and paths: show everything again")});
     rows.append({tr("Up / Down"), tr("Parameter value field: one slider step")});
     rows.append({tr("Page Up / Page Down"), tr("Parameter value field: ten slider steps")});

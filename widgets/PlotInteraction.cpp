@@ -7,6 +7,7 @@
 #include <QMessageBox>
 #include <QRegularExpression>
 #include <QSaveFile>
+#include <QSvgGenerator>
 #include <QTextStream>
 
 #include <algorithm>
@@ -470,6 +471,26 @@ bool PlotInteraction::exportPdf(const QString& path) const
     return saved;
 }
 
+bool PlotInteraction::exportSvg(const QString& path) const
+{
+    const QSize size(plot_->width(), plot_->height());
+    if (size.isEmpty())
+        return false;
+    QSvgGenerator svg;
+    svg.setFileName(path);
+    svg.setSize(size);
+    svg.setViewBox(QRect(QPoint(0, 0), size));
+    svg.setTitle(plot_->window()->windowTitle());
+    QCPPainter painter;
+    if (!painter.begin(&svg))
+        return false;
+    overlay_->setVisible(false);
+    plot_->toPainter(&painter, size.width(), size.height());
+    overlay_->setVisible(true);
+    // QSvgGenerator does not report write errors; an empty or missing file is the sign of one.
+    return painter.end() && QFileInfo(path).size() > 0;
+}
+
 QString PlotInteraction::visibleDataCsv() const
 {
     if (csvWriter_)
@@ -541,6 +562,10 @@ QMenu* PlotInteraction::createContextMenu(QWidget* parent)
         chooseFileAndExport(tr("Export plot as PNG"), tr("PNG images (*.png)"), QStringLiteral("png"),
                             [this](const QString& path) { return exportPng(path); });
     })->setObjectName(QStringLiteral("exportPng"));
+    menu->addAction(tr("Export as SVG…"), this, [this] {
+        chooseFileAndExport(tr("Export plot as SVG"), tr("SVG images (*.svg)"), QStringLiteral("svg"),
+                            [this](const QString& path) { return exportSvg(path); });
+    })->setObjectName(QStringLiteral("exportSvg"));
     menu->addAction(tr("Export as PDF (vector)…"), this, [this] {
         chooseFileAndExport(tr("Export plot as PDF"), tr("PDF documents (*.pdf)"), QStringLiteral("pdf"),
                             [this](const QString& path) { return exportPdf(path); });

@@ -50,8 +50,7 @@ void useReadableTicks(QCustomPlot* plot);
 ///    menu clears it;
 ///  - Y zoom: Ctrl+wheel over a row, or the wheel over its value axis; dragging the value axis pans it;
 ///  - double-click, or "Reset view" in the context menu, calls the view's reset;
-///  - the context menu: reset view, export as PNG or PDF (Qt's SVG module is not among the
-///    packages the build installs; PDF keeps the plot as vectors just the same), and the visible
+///  - the context menu: reset view, export as PNG, SVG or PDF (both vector), and the visible
 ///    range of the curves as CSV.
 /// Rows whose value axis labels lanes (a text ticker) take no Y zoom. Time-series views keep their
 /// own time-axis navigation (LinkedTimeRows); this adds what is not about time.
@@ -90,6 +89,7 @@ public:
 
     void resetView();
     bool exportPng(const QString& path) const;
+    bool exportSvg(const QString& path) const;
     bool exportPdf(const QString& path) const;
     /// The curves of the shown rows over the visible time range, one column each, one row per
     /// time at which any of them has a sample (a step curve holds its value, a line is interpolated

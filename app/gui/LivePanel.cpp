@@ -82,14 +82,15 @@ RecordingPaths recordingPathsFor(const QString& mtbPath)
     return {mtbPath, mtb.dir().filePath(mtb.completeBaseName() + QStringLiteral(".csv"))};
 }
 
-/// Moves every tab of `from` to the end of `to`, keeping its label.
+/// Moves every tab of `from` to the end of `to`, keeping its label and tool tip.
 void moveTabs(QTabWidget* from, QTabWidget* to)
 {
     while (from->count() > 0) {
         const QString label = from->tabText(0);
+        const QString toolTip = from->tabToolTip(0);
         QWidget* page = from->widget(0);
         from->removeTab(0);
-        to->addTab(page, label);
+        to->setTabToolTip(to->addTab(page, label), toolTip);
     }
 }
 
@@ -304,7 +305,7 @@ void LivePanel::moveViewsInto(QTabWidget* trajectoryTabs, QTabWidget* signalTabs
     moveTabs(views_->signalTabs(), signalTabs);
     viewArea_->hide();
     contentLayout_->addStretch(1);
-    workspaceTabs_ = {trajectoryTabs, signalTabs};
+    workspaceTabs_ = {QPointer<QTabWidget>(trajectoryTabs), QPointer<QTabWidget>(signalTabs)};
     for (QTabWidget* tabs : workspaceTabs_)
         connect(tabs, &QTabWidget::currentChanged, this, &LivePanel::showSummarySource);
 }
@@ -331,12 +332,23 @@ bool LivePanel::liveViewShown() const
 
 void LivePanel::showSummarySource()
 {
+    publishStatusLine();
     if (summary_ == nullptr)
         return;
     if (liveViewShown())
         summary_->showLive(lastResult_);
     else
         summary_->showRecorded();
+}
+
+QString LivePanel::statusLine() const
+{
+    return summaryLine_.isEmpty() ? tr("Live session: %1").arg(statusText()) : summaryLine_;
+}
+
+void LivePanel::publishStatusLine()
+{
+    emit liveStatusChanged(liveViewShown() ? statusLine() : QString());
 }
 
 void LivePanel::wireSession()
@@ -398,6 +410,7 @@ void LivePanel::connectTo(const QString& port)
     restartEstimate();
     lastResult_.reset();
     views_->clear();
+    summaryLine_.clear();
     views_->setSummaryLine({});
     session_->start(settings);
     viewTimer_->start();
@@ -609,6 +622,7 @@ void LivePanel::onStateChanged(SessionState state)
     }
     updateNotice();
     updateButtons();
+    publishStatusLine();
 }
 
 void LivePanel::onSamplesAvailable()
@@ -684,6 +698,7 @@ void LivePanel::onEnded(SessionEnd how, const QString& message)
     showEstimateFigures();
     updateNotice();
     updateButtons();
+    publishStatusLine();
 }
 
 void LivePanel::finishRecording(const QString& mtbPath)
@@ -754,12 +769,14 @@ void LivePanel::showLiveSummary()
     for (const PlausibilityWarning& warning : warnings)
         messages << QString::fromStdString(warning.message);
     warnings_->setToolTip(messages.join(QStringLiteral("\n\n")));
-    views_->setSummaryLine(tr("Live: %1 steps, %2 m, %3 s, end to start %4 m, warnings: %5")
-                               .arg(summary.steps)
-                               .arg(summary.pathLength_m, 0, 'f', 1)
-                               .arg(received_.back().imu.time_s - received_.front().imu.time_s, 0, 'f', 0)
-                               .arg(summary.endToStart_m, 0, 'f', 1)
-                               .arg(warnings_->text()));
+    summaryLine_ = tr("Live: %1 steps, %2 m, %3 s, end to start %4 m, warnings: %5")
+                       .arg(summary.steps)
+                       .arg(summary.pathLength_m, 0, 'f', 1)
+                       .arg(received_.back().imu.time_s - received_.front().imu.time_s, 0, 'f', 0)
+                       .arg(summary.endToStart_m, 0, 'f', 1)
+                       .arg(warnings_->text());
+    views_->setSummaryLine(summaryLine_);
+    publishStatusLine();
 }
 
 void LivePanel::updateButtons()

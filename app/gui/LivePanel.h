@@ -4,6 +4,7 @@
 #include "Result.h"
 #include "nav/Parameters.h"
 
+#include <QPointer>
 #include <QWidget>
 
 #include <array>
@@ -80,6 +81,9 @@ public:
     QString errorText() const;
     /// The state line ("Not connected", "Streaming", ...).
     QString statusText() const;
+    /// The session's line for the window's status bar: its figures so far, or its state before
+    /// the first sample.
+    QString statusLine() const;
 
 signals:
     /// A recording was closed (stopped, or the session ended); `mtbPath` can be opened.
@@ -88,6 +92,9 @@ signals:
     void trajectoryUpdated();
     /// A session starts: the workspace may bring the live views to the front.
     void sessionStarted();
+    /// While a live view is the current tab of the workspace: statusLine(), again whenever it
+    /// changes; an empty line when the user goes back to the recorded walk's views.
+    void liveStatusChanged(const QString& line);
 
 private:
     void buildUi();
@@ -114,6 +121,7 @@ private:
     std::vector<PlausibilityWarning> currentWarnings() const;
     bool liveViewShown() const;
     void showSummarySource();
+    void publishStatusLine();
     void updateButtons();
 
     DeviceSession* session_;
@@ -144,7 +152,9 @@ private:
     QVBoxLayout* contentLayout_ = nullptr;
     QSplitter* viewArea_ = nullptr;
     LiveViews* views_ = nullptr;
-    std::array<QTabWidget*, 2> workspaceTabs_{};  ///< where moveViewsInto put the views
+    /// Where moveViewsInto put the views; guarded, as the session's last state change may come
+    /// after the workspace's tab widgets are gone.
+    std::array<QPointer<QTabWidget>, 2> workspaceTabs_{};
     SummaryPanel* summary_ = nullptr;             ///< the workspace's, from linkSummary
     QTimer* viewTimer_ = nullptr;
 
@@ -153,6 +163,7 @@ private:
     std::unique_ptr<StreamingEstimator> estimator_;
     bool viewsDirty_ = false;
     std::shared_ptr<const Result> lastResult_;
+    QString summaryLine_;  ///< the live figures' one line (over the live path, in the status bar)
     QString lastPort_;
     QString recordingPath_;  ///< the .mtb being recorded (or pending for the next session)
     QString lastRecordingPath_;  ///< the last one handed on, which a reconnect continues

@@ -153,10 +153,14 @@ LiveViews::LiveViews(QWidget* parent)
     trajectory3D_->setObjectName(QStringLiteral("liveTrajectory3D"));
     signals_->setObjectName(QStringLiteral("liveSignals"));
     flags_->setObjectName(QStringLiteral("liveStanceFlags"));
-    trajectoryTabs_->addTab(trajectory2D_, tr("Live 2D"));
-    trajectoryTabs_->addTab(trajectory3D_, tr("Live 3D"));
-    signalTabs_->addTab(signals_, tr("Live signals"));
-    signalTabs_->addTab(flags_, tr("Live detector"));
+    trajectoryTabs_->setTabToolTip(trajectoryTabs_->addTab(trajectory2D_, tr("Live 2D")),
+                                   tr("The live session's path seen from above, as it grows"));
+    trajectoryTabs_->setTabToolTip(trajectoryTabs_->addTab(trajectory3D_, tr("Live 3D")),
+                                   tr("The live session's path in three dimensions, as it grows"));
+    signalTabs_->setTabToolTip(signalTabs_->addTab(signals_, tr("Live IMU")),
+                               tr("Live signals: the live session's last seconds of sensor signals"));
+    signalTabs_->setTabToolTip(signalTabs_->addTab(flags_, tr("Live stance")),
+                               tr("Live stance detector: the live session's detector over its last seconds"));
     flags_->setParameters(Parameters{});
     for (QWidget* view : {static_cast<QWidget*>(trajectory2D_), static_cast<QWidget*>(trajectory3D_),
                           static_cast<QWidget*>(signals_), static_cast<QWidget*>(flags_)})

@@ -95,13 +95,24 @@ MainWindow::MainWindow(AppSettings& settings, QWidget* parent)
     // A long message is cut at the window's edge rather than widening the window; the tool tip has all.
     status_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(status_, 1);
+    workspaceStatus_ = status_->text();
+    // The status bar speaks of what is in front, as the summary does: the live session's figures
+    // while its views are shown.
+    connect(live_, &LivePanel::liveStatusChanged, this, &MainWindow::showLiveStatus);
     input_->setRecentFiles(settings_.recentFiles());
     parameters_->setParameters(session_->parameters());
     live_->setParameters(session_->parameters());
     restoreLayout();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The docks hide and the live panel reports as the children go: neither must reach this
+    // window's members (the tab labels, the status line) once they are torn down.
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        disconnect(dock, nullptr, this, nullptr);
+    disconnect(live_, nullptr, this, nullptr);
+}
 
 void MainWindow::createViews()
 {
@@ -116,13 +127,21 @@ void MainWindow::createViews()
     statePlots_->setObjectName(QStringLiteral("statePlots"));
     trajectory2D_->setObjectName(QStringLiteral("trajectory2D"));
     trajectory3D_->setObjectName(QStringLiteral("trajectory3D"));
+    // Short names while the live views' tabs are beside these (a 1280-pixel screen has no room for
+    // both sets in full); the tool tip names each view in full.
+    recordedTabLabels_ = {
+        {signalPlots_, tr("Signals"), tr("IMU"), tr("Signals: the recorded walk's sensor signals")},
+        {flags_, tr("Stance detector"), tr("Stance"), tr("Stance detector: the recorded walk's statistics, thresholds, lanes")},
+        {statePlots_, tr("States"), tr("States"), tr("States: the recorded walk's attitude, velocity, biases")},
+        {trajectory2D_, tr("Trajectory 2D"), tr("2D"), tr("Trajectory 2D: the recorded walk's path seen from above")},
+        {trajectory3D_, tr("Trajectory 3D"), tr("3D"), tr("Trajectory 3D: the recorded walk's path in three dimensions")},
+    };
     signalTabs_ = new QTabWidget(this);
-    signalTabs_->addTab(signalPlots_, tr("Signals"));
-    signalTabs_->addTab(flags_, tr("Stance detector"));
-    signalTabs_->addTab(statePlots_, tr("States"));
     trajectoryTabs_ = new QTabWidget(this);
-    trajectoryTabs_->addTab(trajectory2D_, tr("Trajectory 2D"));
-    trajectoryTabs_->addTab(trajectory3D_, tr("Trajectory 3D"));
+    for (const TabLabel& label : recordedTabLabels_) {
+        QTabWidget* tabs = label.view == trajectory2D_ || label.view == trajectory3D_ ? trajectoryTabs_ : signalTabs_;
+        tabs->setTabToolTip(tabs->addTab(label.view, label.full), label.toolTip);
+    }
     auto* splitter = new QSplitter(Qt::Horizontal, this);
     splitter->setObjectName(QStringLiteral("viewsSplitter"));
     splitter->addWidget(trajectoryTabs_);
@@ -179,6 +198,9 @@ void MainWindow::showLiveTabs(bool liveInputInFront)
                                           [page](const QWidget* view) { return page == view || page->isAncestorOf(view); });
             if (live)
                 tabs->setTabVisible(i, shown);
+            for (const TabLabel& label : recordedTabLabels_)
+                if (label.view == page)
+                    tabs->setTabText(i, shown ? label.compact : label.full);
         }
 }
 
@@ -372,7 +394,7 @@ void MainWindow::wireSession()
     connect(session_, &AnalysisSession::resultChanged, this, &MainWindow::showResult);
     connect(session_, &AnalysisSession::estimatingChanged, this, &MainWindow::showEstimating);
     connect(session_, &AnalysisSession::estimateFailed, this,
-            [this](const QString& message) { showStatus(tr("Estimate failed: %1").arg(message), true); });
+            [this](const QString& message) { showWalkStatus(tr("Estimate failed: %1").arg(message), true); });
     connect(session_, &AnalysisSession::parametersChanged, this, [this] {
         parameters_->setParameters(session_->parameters());
         flags_->setParameters(session_->parameters());
@@ -665,7 +687,7 @@ void MainWindow::startLoading(const QString& path, const ImportOptions& options)
 {
     const QString file = fileForResource(path);
     input_->showLoading(file);
-    showStatus(tr("Reading %1...").arg(QFileInfo(file).fileName()));
+    showWalkStatus(tr("Reading %1...").arg(QFileInfo(file).fileName()));
     loader_->load(file, options);
 }
 
@@ -755,22 +777,46 @@ void MainWindow::showResultStatus(const Result& result)
 {
     if (!result.warnings.empty()) {
         const auto count = static_cast<int>(result.warnings.size());
-        showStatus(tr("%n plausibility warning(s): %1", nullptr, count)
-                       .arg(QString::fromStdString(result.warnings.front().message)),
-                   true);
+        showWalkStatus(tr("%n plausibility warning(s): %1", nullptr, count)
+                           .arg(QString::fromStdString(result.warnings.front().message)),
+                       true);
         return;
     }
     const Summary& s = result.summary;
-    showStatus(tr("%1 samples, %2 steps, path %3 m, end to start %4 m (%5 %), estimated in %6 ms")
-                   .arg(s.samples)
-                   .arg(s.steps)
-                   .arg(s.pathLength_m, 0, 'f', 2)
-                   .arg(s.endToStart_m, 0, 'f', 2)
-                   .arg(s.endToStartPct, 0, 'f', 2)
-                   .arg(s.runtime_s * 1000.0, 0, 'f', 0));
+    showWalkStatus(tr("%1 samples, %2 steps, path %3 m, end to start %4 m (%5 %), estimated in %6 ms")
+                       .arg(s.samples)
+                       .arg(s.steps)
+                       .arg(s.pathLength_m, 0, 'f', 2)
+                       .arg(s.endToStart_m, 0, 'f', 2)
+                       .arg(s.endToStartPct, 0, 'f', 2)
+                       .arg(s.runtime_s * 1000.0, 0, 'f', 0));
 }
 
 void MainWindow::showStatus(const QString& text, bool warning)
+{
+    workspaceStatus_ = text;
+    workspaceStatusWarns_ = warning;
+    displayStatus(text, warning);
+}
+
+void MainWindow::showWalkStatus(const QString& text, bool warning)
+{
+    workspaceStatus_ = text;
+    workspaceStatusWarns_ = warning;
+    if (liveStatus_.isEmpty())
+        displayStatus(text, warning);
+}
+
+void MainWindow::showLiveStatus(const QString& line)
+{
+    liveStatus_ = line;
+    if (line.isEmpty())
+        displayStatus(workspaceStatus_, workspaceStatusWarns_);
+    else
+        displayStatus(line, false);
+}
+
+void MainWindow::displayStatus(const QString& text, bool warning)
 {
     status_->setText(text);
     status_->setToolTip(text);
@@ -791,7 +837,7 @@ void MainWindow::showMoment(double time_s)
 void MainWindow::showEstimating(bool running)
 {
     if (running)
-        showStatus(tr("Estimating..."));
+        showWalkStatus(tr("Estimating..."));
 }
 
 void MainWindow::placeOnScreen(const QRect& available)

@@ -113,7 +113,13 @@ private:
     void showResult();
     void showResultStatus(const Result& result);
     /// Sets the status bar text; a warning stands out in colour.
+    /// The answer to something the user did: shown at once, and kept as the workspace's line.
     void showStatus(const QString& text, bool warning = false);
+    /// The recorded walk's line: kept, and shown unless the live views are in front.
+    void showWalkStatus(const QString& text, bool warning = false);
+    /// The live session's line while its views are in front; empty gives the bar back to the walk.
+    void showLiveStatus(const QString& line);
+    void displayStatus(const QString& text, bool warning);
     /// Moves the time cursor to time_s and brings it into view in the time plots.
     void showMoment(double time_s);
     void showEstimating(bool running);
@@ -143,8 +149,19 @@ private:
     TrajectoryView3D* trajectory3D_ = nullptr;
     QTabWidget* signalTabs_ = nullptr;
     QTabWidget* trajectoryTabs_ = nullptr;
+    /// A recorded walk's view's tab: its label alone, and beside the live views' tabs.
+    struct TabLabel {
+        QWidget* view;
+        QString full;
+        QString compact;
+        QString toolTip;
+    };
+    std::vector<TabLabel> recordedTabLabels_;
     LivePanel* live_ = nullptr;
     QLabel* status_ = nullptr;
+    QString workspaceStatus_;         ///< the recorded walk's (or the last action's) line
+    bool workspaceStatusWarns_ = false;
+    QString liveStatus_;              ///< the live session's, while its views are in front
     QMenu* viewMenu_ = nullptr;
     ComparisonPanel* comparison_ = nullptr;
     QDockWidget* comparisonDock_ = nullptr;
