@@ -220,10 +220,6 @@
         <translation>图 7. 每步的支撑相时长。</translation>
     </message>
     <message>
-        <source>stance phase</source>
-        <translation>支撑相</translation>
-    </message>
-    <message>
         <source>stance duration (s)</source>
         <translation>支撑相时长 (s)</translation>
     </message>
@@ -246,10 +242,6 @@
     <message>
         <source>Figure 2. Height of the foot over time.</source>
         <translation>图 2. 足部高度随时间的变化。</translation>
-    </message>
-    <message>
-        <source>Figure 3. The path in 3D.</source>
-        <translation>图 3. 3D 轨迹。</translation>
     </message>
     <message>
         <source>Figure 4. Signals, stance shaded.</source>
@@ -282,10 +274,6 @@
     <message>
         <source>Figures</source>
         <translation>图表</translation>
-    </message>
-    <message>
-        <source>Parameters (* differs from the default)</source>
-        <translation>参数（* 表示与默认值不同）</translation>
     </message>
     <message>
         <source>Steps</source>
@@ -335,12 +323,374 @@
         <source>Every method set run on this recording with the same detector and noise parameters; the best value of a column is in bold and marked %1.</source>
         <translation>每个方法组合都以相同的检测器和噪声参数在此记录上运行；每列的最佳值以粗体显示并标记 %1。</translation>
     </message>
+    <message>
+        <source>failed: %1</source>
+        <translation type="unfinished">失败：%1</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation type="unfinished">已取消</translation>
+    </message>
+    <message>
+        <source>no estimate</source>
+        <translation type="unfinished">无估计结果</translation>
+    </message>
+    <message>
+        <source>End to start
+(m)</source>
+        <translation type="unfinished">终点到起点
+(m)</translation>
+    </message>
+    <message>
+        <source>End to start
+(%)</source>
+        <translation type="unfinished">终点到起点
+(%)</translation>
+    </message>
+    <message>
+        <source>Path length
+(m)</source>
+        <translation type="unfinished">路径长度
+(m)</translation>
+    </message>
+    <message>
+        <source>Height change
+(m)</source>
+        <translation type="unfinished">高度变化
+(m)</translation>
+    </message>
+    <message>
+        <source>ARMSE 2D
+(m)</source>
+        <translation type="unfinished">ARMSE 2D
+(m)</translation>
+    </message>
+    <message>
+        <source>Stance F1</source>
+        <translation type="unfinished">支撑相 F1</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation type="unfinished">警告</translation>
+    </message>
+    <message>
+        <source>Strides (turning)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stride time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stride length</source>
+        <translation type="unfinished">步幅</translation>
+    </message>
+    <message>
+        <source>Cadence</source>
+        <translation type="unfinished">步频</translation>
+    </message>
+    <message>
+        <source>Stance / swing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 % / %2 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Foot clearance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Double support (both feet on the ground)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 % of the gait cycle (initial %2 %, terminal %3 %), %4 strides</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stance left / right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symmetry index: stride time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symmetry index: stride length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symmetry index: stance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symmetry index: swing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gait (heel strike to toe off)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From the gait events of %1: means over the strides that neither turn (more than 20 degrees) nor pause.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the left foot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this foot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Both feet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The left and the right foot&apos;s files on one clock (their own time stamps). Symmetry index: 100 (left - right) / mean, 0 symmetric, positive where the left value is larger.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Note: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Figure 9. Gait stance (heel strike to toe off, left) and foot clearance (right) per stride.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stride</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stance (% of the stride)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>clearance (m)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Figure 3. The path in 3D (reference dashed when present).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameters (* and bold: differs from the default)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::AnalysisSession</name>
     <message>
         <source>Change %1</source>
         <translation>更改 %1</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::ComparisonPanel</name>
+    <message>
+        <source>Method sets to compare; tick the ones to run</source>
+        <translation>要比较的方法组合；勾选要运行的组合</translation>
+    </message>
+    <message>
+        <source>Add a set, e.g. zupt,hdr,mag</source>
+        <translation>添加组合，例如 zupt,hdr,mag</translation>
+    </message>
+    <message>
+        <source>Methods separated by commas: zupt, zaru, hdr, iper, zuna, baro, mag, feliz, 9state, 15state. Enter adds the set.</source>
+        <translation>用逗号分隔的方法：zupt、zaru、hdr、iper、zuna、baro、mag、feliz、9state、15state。按回车添加。</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Run every ticked set on the current recording</source>
+        <translation>在当前记录上运行所有勾选的组合</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Click a row to make its methods the workspace&apos;s parameters (Edit &gt; Undo goes back)</source>
+        <translation>单击某行，将其方法设为工作区参数（编辑 &gt; 撤销可恢复）</translation>
+    </message>
+    <message>
+        <source>Use as main result</source>
+        <translation>用作主结果</translation>
+    </message>
+    <message>
+        <source>Make the selected set&apos;s methods the workspace&apos;s parameters</source>
+        <translation>将所选组合的方法设为工作区参数</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>时间 (s)</translation>
+    </message>
+    <message>
+        <source>height z (m)</source>
+        <translation>高度 z (m)</translation>
+    </message>
+    <message>
+        <source>Tick at least one method set.</source>
+        <translation>请至少勾选一个方法组合。</translation>
+    </message>
+    <message>
+        <source>best</source>
+        <translation>最佳</translation>
+    </message>
+    <message>
+        <source>Stale: the parameters changed since this comparison. Run again to update it.</source>
+        <translation>已过时：自此次比较后参数已更改。请重新运行以更新。</translation>
+    </message>
+    <message>
+        <source>Open a recording to compare methods on it.</source>
+        <translation>打开一个记录以在其上比较方法。</translation>
+    </message>
+    <message>
+        <source>Tick the sets and press Run.</source>
+        <translation>勾选组合并点击运行。</translation>
+    </message>
+    <message>
+        <source>Click a row to use its methods.</source>
+        <translation>单击某行以使用其方法。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Running %n set(s)...</source>
+        <translation>
+            <numerusform>正在运行 %n 个组合...</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>footpath::HelpDialog</name>
+    <message>
+        <source>Footpath help</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>User guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots and 2D path: move the time cursor there</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wheel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots: zoom the time axis; 3D: zoom about the pointer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots and 2D path: pan; 3D: orbit (right or middle button: pan)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ctrl+Wheel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots: zoom the value axis of the row under the pointer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wheel or drag on a value axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots: zoom or pan that row&apos;s values</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pointer over a plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots and 2D path: read the time and the values there</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shift+Click</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots and 2D path: set a marker; the readout then gives Δt and Δy from it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right-click</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots: reset the view, export as PNG, SVG or PDF, or the visible data as CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Double-click</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots and paths: show everything again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Up / Down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter value field: one slider step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Page Up / Page Down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter value field: ten slider steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step table: the next step, with the time cursor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keys or mouse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Does</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Footpath in five minutes&lt;/h2&gt;&lt;p&gt;Footpath turns the recording of an inertial sensor on a shoe into the path walked: it finds the moments the foot rests on the ground (stance), integrates the motion in between, and corrects the drift with zero-velocity updates in a Kalman filter.&lt;/p&gt;&lt;h3&gt;Opening a recording&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;File &amp;gt; Open recording&lt;/b&gt;, the Recorded input panel, or drag a file onto the window. Xsens text exports, MT binary logs (.mtb), PyShoe CSV files and plain CSV/text with one sample per row are read.&lt;/li&gt;&lt;li&gt;A file that does not name its columns opens the import dialog: say which column holds what and in which unit; the dialog shows the first rows as they will be read.&lt;/li&gt;&lt;li&gt;The recording should start with about a second of standing still: the sensor&apos;s attitude is found from it.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;What the views show&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Trajectory 2D / 3D&lt;/b&gt;: the path from above and in space. Orange dots are the stances, the green square is the start and the red cross the end, the yellow dot the time cursor; a dashed line is the reference when the file has one. After a parameter change the path before it stays as a faint grey ghost until the next change.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Signals&lt;/b&gt;: accelerometer, gyroscope and the other channels over time. The coloured lanes under them mark the stance phases (the foot at rest), plausibility warnings (red spans: a stride too long, a stance missed) and, with a barometer, the motion class of each step (level, stairs, elevator).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Stance detector&lt;/b&gt;: the statistic the detector thresholds and the threshold itself; where the curve is below the threshold the foot is taken to be at rest. A &lt;i&gt;Reference stance&lt;/i&gt; lane shows the stances the file&apos;s own labels give (gait events, motion capture), to compare with.&lt;/li&gt;&lt;li&gt;&lt;b&gt;States&lt;/b&gt;: the filter&apos;s attitude, velocity, height and sensor biases over time, with a band of one standard deviation where the filter estimates it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Summary&lt;/b&gt;: the walk&apos;s figures (path length, strides, cadence, end-to-start distance), the figures against the reference when there is one, and a table of the steps. Selecting a step moves the time cursor to it in every view.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;One time cursor links every view: click a plot or the path and all views show that moment. Hold the pointer over a plot to read the values; Shift+click sets a marker to measure time and value differences from; right-click a plot to export it. &lt;b&gt;Help &amp;gt; Keyboard shortcuts&lt;/b&gt; lists every key.&lt;/p&gt;&lt;h3&gt;Tuning&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;The &lt;b&gt;Parameters&lt;/b&gt; panel lists every setting with its unit; the tool tip names the identifier used in presets and on the command line. A setting that has no effect with the others is greyed out, and its tool tip says why.&lt;/li&gt;&lt;li&gt;Every change re-estimates at once. The summary then shows the key figures before and after the change, green where the change helped and red where it hurt, and the &lt;b&gt;History&lt;/b&gt; lists the last runs: double-click one to go back to it. Undo (Ctrl+Z) goes back one change.&lt;/li&gt;&lt;li&gt;Presets save and load the whole set; &lt;b&gt;Analysis &amp;gt; Compare methods&lt;/b&gt; runs several method sets on the same recording side by side.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;Live input&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;In the &lt;b&gt;Live input&lt;/b&gt; panel choose the sensor&apos;s serial port (or the emulator) and connect: the live path and signals appear in their own tabs while you walk.&lt;/li&gt;&lt;li&gt;Record writes the samples to a file (the name offered is the device&apos;s and the time&apos;s, in the folder of the last recording); when recording stops, the file opens for the full analysis. A session you did not record can still be saved after Disconnect.&lt;/li&gt;&lt;li&gt;A recording that starts while walking is still read: the path then starts at the first stance, and a warning says so.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;Exporting&lt;/h3&gt;&lt;p&gt;&lt;b&gt;File &amp;gt; Export report&lt;/b&gt; writes a PDF with the figures, plots and parameters; &lt;b&gt;Export CSV&lt;/b&gt; writes the trajectory, steps, summary and parameters as CSV files.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -372,10 +722,6 @@
     <message>
         <source>rad/s</source>
         <translation>rad/s</translation>
-    </message>
-    <message>
-        <source>deg/s</source>
-        <translation>deg/s</translation>
     </message>
     <message>
         <source>s</source>
@@ -433,16 +779,20 @@
         <source>role</source>
         <translation>用途</translation>
     </message>
+    <message>
+        <source>°/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 needs import settings and no one is there to give them: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::LivePanel</name>
     <message>
         <source>A serial port, or type a path such as the emulator&apos;s pseudo-terminal</source>
         <translation>串口，或输入路径，例如模拟器的伪终端</translation>
-    </message>
-    <message>
-        <source>Refresh</source>
-        <translation>刷新</translation>
     </message>
     <message>
         <source>Auto (probe)</source>
@@ -557,10 +907,6 @@
         <translation>已断开连接</translation>
     </message>
     <message>
-        <source>Session ended: %1</source>
-        <translation>会话已结束：%1</translation>
-    </message>
-    <message>
         <source>Disconnect</source>
         <translation>断开连接</translation>
     </message>
@@ -601,14 +947,6 @@
         <translation>等待采样</translation>
     </message>
     <message>
-        <source>Aligning: keep the foot still for the first %1 s</source>
-        <translation>对准中：前 %1 秒请保持脚静止</translation>
-    </message>
-    <message>
-        <source>Estimating, %1 s behind the sensor</source>
-        <translation>估计中，落后传感器 %1 秒</translation>
-    </message>
-    <message>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -624,6 +962,102 @@
         <source>The stance detector looks this far ahead (its windows are centred on each sample, and a stance is confirmed once it has lasted the minimum duration), so the estimate trails the sensor by up to this delay.</source>
         <translation>支撑相检测器需要向前看这么长的时间（其窗口以每个采样点为中心，且支撑相持续到最短时长后才被确认），因此估计结果最多以这一延迟滞后于传感器。</translation>
     </message>
+    <message>
+        <source>Refresh the list of ports</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the samples received in the last session (kept in memory) as a CSV file and open it as a recorded walk: for a session that was not recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Horizontal distance from the start to where the foot is now</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Duration:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End to start:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warnings:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live session: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Samples saved to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unsaved samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The last session&apos;s %1 samples were not recorded. Save them before connecting again?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not connected: choose a port and Connect (Live input panel)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not connected: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connecting to %1...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connected: waiting for samples...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disconnected: the session failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The connection failed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Aligning: keep the foot still for %1 s (a walk already under way is aligned at its first stance)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Estimating (%1 s behind)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished">无</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live: %1 steps, %2 m, %3 s, end to start %4 m, warnings: %5</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::LiveViews</name>
@@ -636,171 +1070,32 @@
         <translation>实时 3D</translation>
     </message>
     <message>
-        <source>Live signals</source>
-        <translation>实时信号</translation>
-    </message>
-    <message>
-        <source>Live detector</source>
-        <translation>实时检测器</translation>
-    </message>
-    <message>
         <source>live</source>
         <translation>实时</translation>
     </message>
-</context>
-<context>
-    <name>footpath::MotionLanes</name>
     <message>
-        <source>&lt;b&gt;%1&lt;/b&gt;: steps %2–%3 (%4–%5 s)</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;：第 %2–%3 步（%4–%5 s）</translation>
+        <source>The live session&apos;s path seen from above, as it grows</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&lt;br&gt;barometric height %1 → %2 m</source>
-        <translation>&lt;br&gt;气压高度 %1 → %2 m</translation>
+        <source>The live session&apos;s path in three dimensions, as it grows</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Level</source>
-        <translation>平地</translation>
+        <source>Live IMU</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Stairs up</source>
-        <translation>上楼梯</translation>
+        <source>Live signals: the live session&apos;s last seconds of sensor signals</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Stairs down</source>
-        <translation>下楼梯</translation>
+        <source>Live stance</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Elevator up</source>
-        <translation>电梯上行</translation>
-    </message>
-    <message>
-        <source>Elevator down</source>
-        <translation>电梯下行</translation>
-    </message>
-    <message>
-        <source>Unclassified</source>
-        <translation>未分类</translation>
-    </message>
-    <message>
-        <source>1 floor up by stairs (%1 m)</source>
-        <translation>经楼梯上行 1 层（%1 m）</translation>
-    </message>
-    <message>
-        <source>1 floor down by stairs (%1 m)</source>
-        <translation>经楼梯下行 1 层（%1 m）</translation>
-    </message>
-    <message>
-        <source>%1 floors up by stairs (%2 m)</source>
-        <translation>经楼梯上行 %1 层（%2 m）</translation>
-    </message>
-    <message>
-        <source>%1 floors down by stairs (%2 m)</source>
-        <translation>经楼梯下行 %1 层（%2 m）</translation>
-    </message>
-    <message>
-        <source>%1 m up by stairs</source>
-        <translation>经楼梯上行 %1 m</translation>
-    </message>
-    <message>
-        <source>%1 m down by stairs</source>
-        <translation>经楼梯下行 %1 m</translation>
-    </message>
-    <message>
-        <source>1 elevator ride</source>
-        <translation>乘电梯 1 次</translation>
-    </message>
-    <message>
-        <source>%1 elevator rides</source>
-        <translation>乘电梯 %1 次</translation>
-    </message>
-    <message>
-        <source>Level walking only: no stairs or elevator</source>
-        <translation>仅平地行走：无楼梯或电梯</translation>
-    </message>
-    <message>
-        <source>Magnetometer</source>
-        <translation>磁力计</translation>
-    </message>
-    <message>
-        <source>Barometer</source>
-        <translation>气压计</translation>
-    </message>
-    <message>
-        <source>Heading drift reduction (HDR)</source>
-        <translation>航向漂移抑制（HDR）</translation>
-    </message>
-    <message>
-        <source>Position error reduction (IPER)</source>
-        <translation>位置误差抑制（IPER）</translation>
-    </message>
-    <message>
-        <source>Zero navigation acceleration (ZUNA)</source>
-        <translation>零导航加速度（ZUNA）</translation>
-    </message>
-    <message>
-        <source>Feliz integrator</source>
-        <translation>Feliz 积分器</translation>
-    </message>
-    <message>
-        <source>%1–%2 s</source>
-        <translation>%1–%2 s</translation>
-    </message>
-    <message>
-        <source>%1, %2: %3</source>
-        <translation>%1，%2：%3</translation>
-    </message>
-    <message>
-        <source>Motion</source>
-        <translation>运动</translation>
-    </message>
-    <message>
-        <source>Method notes</source>
-        <translation>方法说明</translation>
-    </message>
-    <message>
-        <source>barometer present, steps not classified (use_baro off?)</source>
-        <translation>有气压计，但步态未分类（use_baro 未开启？）</translation>
-    </message>
-    <message>
-        <source>Colour by motion</source>
-        <translation>按运动着色</translation>
-    </message>
-    <message>
-        <source>Colour each stride by its step's motion class (stairs, elevator); needs a barometer</source>
-        <translation>按每步的运动类别（楼梯、电梯）为步幅着色；需要气压计</translation>
-    </message>
-    <message>
-        <source>Baro height (m)</source>
-        <translation>气压高度 (m)</translation>
-    </message>
-    <message>
-        <source>How the foot got to this step: level, stairs or elevator (from the barometer)</source>
-        <translation>脚如何到达这一步：平地、楼梯或电梯（由气压计判断）</translation>
-    </message>
-    <message>
-        <source>Barometric height at this stance against the first one</source>
-        <translation>此支撑相相对于第一个支撑相的气压高度</translation>
-    </message>
-    <message>
-        <source>Counted from the barometer's height between steps (seed 004); a floor is 3 m</source>
-        <translation>由步间气压高度统计（seed 004）；一层按 3 m 计</translation>
-    </message>
-    <message>
-        <source>Where a measurement method skipped itself or did not apply, and why</source>
-        <translation>测量方法跳过或不适用的时段及原因</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Motion&lt;/b&gt; (barometer): %1</source>
-        <translation>&lt;b&gt;运动&lt;/b&gt;（气压计）：%1</translation>
-    </message>
-    <message>
-        <source>Spans where a measurement method skipped itself or did not apply, and why; the other methods ran on.</source>
-        <translation>测量方法跳过或不适用的时段及原因；其他方法照常运行。</translation>
-    </message>
-    <message>
-        <source>Motion (barometer): %1.</source>
-        <translation>运动（气压计）：%1。</translation>
+        <source>Live stance detector: the live session&apos;s detector over its last seconds</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1079,6 +1374,284 @@
         <source>&amp;Analysis</source>
         <translation>分析(&amp;A)</translation>
     </message>
+    <message>
+        <source>IMU</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signals: the recorded walk&apos;s sensor signals</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stance</source>
+        <translation type="unfinished">支撑相</translation>
+    </message>
+    <message>
+        <source>Stance detector: the recorded walk&apos;s statistics, thresholds, lanes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>States: the recorded walk&apos;s attitude, velocity, biases</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>2D</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trajectory 2D: the recorded walk&apos;s path seen from above</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3D</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trajectory 3D: the recorded walk&apos;s path in three dimensions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undo the last change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation type="unfinished">重做</translation>
+    </message>
+    <message>
+        <source>S&amp;tates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back to run %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left foot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Tune for this recording...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Search the detector settings and the filter noise that fit this recording best</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tune over a &amp;folder...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One parameter set for many recordings of a sensor and a way of walking</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tune for this recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a recording first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right foot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open recording (two files: both feet)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 files: open one recording, or the left and the right file of one walk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Footpath - %1 + %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>footpath::MotionLanes</name>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: steps %2–%3 (%4–%5 s)</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;：第 %2–%3 步（%4–%5 s）</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;barometric height %1 → %2 m</source>
+        <translation>&lt;br&gt;气压高度 %1 → %2 m</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>平地</translation>
+    </message>
+    <message>
+        <source>Stairs up</source>
+        <translation>上楼梯</translation>
+    </message>
+    <message>
+        <source>Stairs down</source>
+        <translation>下楼梯</translation>
+    </message>
+    <message>
+        <source>Elevator up</source>
+        <translation>电梯上行</translation>
+    </message>
+    <message>
+        <source>Elevator down</source>
+        <translation>电梯下行</translation>
+    </message>
+    <message>
+        <source>Unclassified</source>
+        <translation>未分类</translation>
+    </message>
+    <message>
+        <source>1 floor up by stairs (%1 m)</source>
+        <translation>经楼梯上行 1 层（%1 m）</translation>
+    </message>
+    <message>
+        <source>1 floor down by stairs (%1 m)</source>
+        <translation>经楼梯下行 1 层（%1 m）</translation>
+    </message>
+    <message>
+        <source>%1 floors up by stairs (%2 m)</source>
+        <translation>经楼梯上行 %1 层（%2 m）</translation>
+    </message>
+    <message>
+        <source>%1 floors down by stairs (%2 m)</source>
+        <translation>经楼梯下行 %1 层（%2 m）</translation>
+    </message>
+    <message>
+        <source>%1 m up by stairs</source>
+        <translation>经楼梯上行 %1 m</translation>
+    </message>
+    <message>
+        <source>%1 m down by stairs</source>
+        <translation>经楼梯下行 %1 m</translation>
+    </message>
+    <message>
+        <source>1 elevator ride</source>
+        <translation>乘电梯 1 次</translation>
+    </message>
+    <message>
+        <source>%1 elevator rides</source>
+        <translation>乘电梯 %1 次</translation>
+    </message>
+    <message>
+        <source>Level walking only: no stairs or elevator</source>
+        <translation>仅平地行走：无楼梯或电梯</translation>
+    </message>
+    <message>
+        <source>Magnetometer</source>
+        <translation>磁力计</translation>
+    </message>
+    <message>
+        <source>Barometer</source>
+        <translation>气压计</translation>
+    </message>
+    <message>
+        <source>Heading drift reduction (HDR)</source>
+        <translation>航向漂移抑制（HDR）</translation>
+    </message>
+    <message>
+        <source>Position error reduction (IPER)</source>
+        <translation>位置误差抑制（IPER）</translation>
+    </message>
+    <message>
+        <source>Zero navigation acceleration (ZUNA)</source>
+        <translation>零导航加速度（ZUNA）</translation>
+    </message>
+    <message>
+        <source>Feliz integrator</source>
+        <translation>Feliz 积分器</translation>
+    </message>
+    <message>
+        <source>%1–%2 s</source>
+        <translation>%1–%2 s</translation>
+    </message>
+    <message>
+        <source>%1, %2: %3</source>
+        <translation>%1，%2：%3</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>运动</translation>
+    </message>
+    <message>
+        <source>Method notes</source>
+        <translation>方法说明</translation>
+    </message>
+    <message>
+        <source>barometer present, steps not classified (use_baro off?)</source>
+        <translation>有气压计，但步态未分类（use_baro 未开启？）</translation>
+    </message>
+    <message>
+        <source>Colour by motion</source>
+        <translation>按运动着色</translation>
+    </message>
+    <message>
+        <source>Colour each stride by its step&apos;s motion class (stairs, elevator); needs a barometer</source>
+        <translation>按每步的运动类别（楼梯、电梯）为步幅着色；需要气压计</translation>
+    </message>
+    <message>
+        <source>Baro height (m)</source>
+        <translation>气压高度 (m)</translation>
+    </message>
+    <message>
+        <source>How the foot got to this step: level, stairs or elevator (from the barometer)</source>
+        <translation>脚如何到达这一步：平地、楼梯或电梯（由气压计判断）</translation>
+    </message>
+    <message>
+        <source>Barometric height at this stance against the first one</source>
+        <translation>此支撑相相对于第一个支撑相的气压高度</translation>
+    </message>
+    <message>
+        <source>Counted from the barometer&apos;s height between steps (seed 004); a floor is 3 m</source>
+        <translation>由步间气压高度统计（seed 004）；一层按 3 m 计</translation>
+    </message>
+    <message>
+        <source>Where a measurement method skipped itself or did not apply, and why</source>
+        <translation>测量方法跳过或不适用的时段及原因</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Motion&lt;/b&gt; (barometer): %1</source>
+        <translation>&lt;b&gt;运动&lt;/b&gt;（气压计）：%1</translation>
+    </message>
+    <message>
+        <source>Spans where a measurement method skipped itself or did not apply, and why; the other methods ran on.</source>
+        <translation>测量方法跳过或不适用的时段及原因；其他方法照常运行。</translation>
+    </message>
+    <message>
+        <source>Motion (barometer): %1.</source>
+        <translation>运动（气压计）：%1。</translation>
+    </message>
+</context>
+<context>
+    <name>footpath::OtherFootSession</name>
+    <message>
+        <source>%1 (the right foot): %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The right foot&apos;s estimate failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::ParameterPanel</name>
@@ -1097,10 +1670,6 @@
     <message>
         <source>Save preset...</source>
         <translation>保存预设...</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;Range: %3 to %4 %5&lt;br&gt;Default: %6 %5</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;范围：%3 至 %4 %5&lt;br&gt;默认值：%6 %5</translation>
     </message>
     <message>
         <source>Back to the default (%1)</source>
@@ -1167,10 +1736,6 @@
         <translation>重做</translation>
     </message>
     <message>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;In presets and --set: %3&lt;br&gt;Default: %4</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;预设和 --set 中的取值：%3&lt;br&gt;默认值：%4</translation>
-    </message>
-    <message>
         <source>Not used: only the C1/C2/C3 detector uses it, and %1 is chosen.</source>
         <translation>未使用：仅 C1/C2/C3 检测器使用此参数，当前选择的是 %1。</translation>
     </message>
@@ -1201,6 +1766,125 @@
     <message>
         <source>Not used: ZARU corrects the gyro bias, which the 9-state filter does not estimate.</source>
         <translation>未使用：ZARU 修正陀螺仪零偏，而 9 状态滤波器不估计零偏。</translation>
+    </message>
+    <message>
+        <source>%1&lt;br&gt;Choices in presets: %2&lt;br&gt;Default: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1&lt;br&gt;Range: %2 to %3 %4&lt;br&gt;Default: %5 %4&lt;br&gt;Up/Down in the value field: one slider step; Page Up/Down: ten</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: HDR is off (use_hdr).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: IPER is off (use_iper).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: the axis is estimated from the walk (iper_axis_auto is on).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: ZUNA is off (use_zuna).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: the barometer is off (use_baro).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: the barometric formula is chosen, not the linear constant.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used: the magnetometer heading update is off (use_mag_heading).</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>footpath::PlotInteraction</name>
+    <message>
+        <source>t = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>   Δt = %1 s from the marker</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (Δ %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation type="unfinished">时间 (s)</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset view</source>
+        <translation type="unfinished">重置视图</translation>
+    </message>
+    <message>
+        <source>Clear measurement marker</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shift+click sets the marker; the readout then shows the differences to it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export as PNG…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export plot as PNG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export as SVG…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export plot as SVG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export as PDF (vector)…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export plot as PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export visible data as CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export visible data as CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1306,6 +1990,66 @@
     </message>
 </context>
 <context>
+    <name>footpath::RunHistory</name>
+    <message>
+        <source>First run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation type="unfinished">开</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation type="unfinished">关</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1; %2 and %n more</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished">运行</translation>
+    </message>
+    <message>
+        <source>Change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Path (m)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End to start (m)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ARMSE 2D (m)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>footpath::RunHistoryPanel</name>
+    <message>
+        <source>Go back to this run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The last %1 estimates of this recording (bold: the one shown). Double-click one to go back to its parameters; Undo goes back too.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>footpath::SignalPlots</name>
     <message>
         <source>x</source>
@@ -1388,6 +2132,14 @@
     <message>
         <source>Time (s)</source>
         <translation>时间 (s)</translation>
+    </message>
+    <message>
+        <source>Heel strike</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toe off</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1519,6 +2271,115 @@ statistic</source>
     <message>
         <source>threshold = 10^%1</source>
         <translation>阈值 = 10^%1</translation>
+    </message>
+    <message>
+        <source>stance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>swing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>1 (set)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference
+stance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference stance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>from the recording&apos;s reference stance column (zero velocity by motion capture)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>between the hand-labelled gait events (toe-off, heel-strike)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>footpath::StatePlots</name>
+    <message>
+        <source>Attitude
+(°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>roll</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pitch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yaw</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity
+(m/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation type="unfinished">x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation type="unfinished">y</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation type="unfinished">z</translation>
+    </message>
+    <message>
+        <source>Height
+(m)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gyro bias
+(rad/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acc. bias
+(m/s²)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation type="unfinished">时间 (s)</translation>
+    </message>
+    <message>
+        <source>±1σ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>σ %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not estimated (constant)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No ±1σ band: this estimator keeps no covariance</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1745,6 +2606,154 @@ statistic</source>
         <source>Click the time span to move the time cursor there</source>
         <translation>点击时间段可将时间光标移至该处</translation>
     </message>
+    <message>
+        <source>Heel strike (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toe off (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gait stance (%)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clearance (m)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gait stride whose stance holds this step: when the foot landed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>When the foot left the ground (the end of the gait lab&apos;s stance)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heel strike to toe off, % of the stride time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Highest point of the swing after this stance above it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gait</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gait (heel strike to toe off)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Strides</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stride time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stance / swing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Foot clearance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From the gait events (heel strike, toe off) of this foot: means over the strides that neither turn nor pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Both feet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Double support</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stance left / right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symmetry: stride time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symmetry: stride length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symmetry: stance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symmetry: swing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Double support: the share of the gait cycle both feet are on the ground. Symmetry index: 100 (left - right) / mean, 0 symmetric, positive: the left larger.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Live session&lt;/b&gt;: the figures of the estimate so far. The recorded walk&apos;s return when its views are shown again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The figures before and after the last parameter change (the grey ghost path). Green: better, red: worse. The History lists every run.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 → %2 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2 turning)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 steps/min</source>
+        <translation type="unfinished">%1 步/分钟</translation>
+    </message>
+    <message>
+        <source>%1 % / %2 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 % of the gait cycle (%2 strides)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gait stance per stride (heel strike to toe off)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stance (% of the stride)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stride</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Foot clearance per stride</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::TrajectoryView2D</name>
@@ -1787,6 +2796,19 @@ statistic</source>
     <message>
         <source>foot speed (m/s)</source>
         <translation>足部速度 (m/s)</translation>
+    </message>
+    <message>
+        <source>x = %1 m   y = %2 m   t = %3 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Before the last change</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1863,6 +2885,453 @@ statistic</source>
         <source>Heights drawn × %1</source>
         <translation>高度放大 × %1</translation>
     </message>
+    <message>
+        <source>Before the last change</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>footpath::TuneCriterionChoice</name>
+    <message>
+        <source>Minimise</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>footpath::TuneDialog</name>
+    <message>
+        <source>on</source>
+        <translation type="unfinished">开</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation type="unfinished">关</translation>
+    </message>
+    <message>
+        <source>End-to-start distance of a closed walk (%)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error of the path length (%)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position error against the reference (ARMSE, m)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation type="unfinished">%1 m</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The criterion the search minimised</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tune for %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What is known about the walk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The walk ends where it started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Then the distance from its end to its start is the error to minimise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The length of the walked path, if measured; then the error of the estimated length is the error to minimise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Path length:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter sets to try, the current one included; more finds better settings but takes longer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>on %n core(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Evaluations:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%v of %m evaluations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished">起点</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop searching and keep the best parameters found so far</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use the tuned parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make them the workspace&apos;s parameters (Edit &gt; Undo brings the current ones back)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no recording is open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>needs a walk that ends where it started: tick it if yours does</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>needs the path length: enter it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>needs reference positions: this recording has none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trying the current parameters, then a spread over the whole range...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopping; the best parameters so far are kept...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Best so far: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Searching around the best parameters found so far...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Best: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Stopped after %n evaluation(s).</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Done: %n evaluation(s).</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No better parameters were found; the current ones stay.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The path with the tuned parameters, over the current one (orange). Use them, or keep the current ones.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation type="unfinished">路径长度</translation>
+    </message>
+    <message>
+        <source>The estimated path&apos;s length, for comparison</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End to start</source>
+        <translation type="unfinished">终点至起点</translation>
+    </message>
+    <message>
+        <source>The distance from the path&apos;s end to its start, for comparison</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Beware: the tuned path is %1 % shorter than the current one; a smaller error may come from a path that shrank rather than from a better one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Beware: the tuned path is %1 % longer than the current one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep the current ones</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tuned parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>footpath::TuneFolderDialog</name>
+    <message>
+        <source>%1: no samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tune over a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a folder of recordings of one sensor and one way of walking.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detect (headerless files: the usual columns)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How to read files that do not describe themselves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every walk ends where it started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Score every recording by its end-to-start distance, also those not marked closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Folder:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read with:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter sets to try, each on every recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Evaluations:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>on %n core(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%v of %m evaluations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation type="unfinished">记录</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished">起点</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop searching and keep the best parameters found so far</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save preset...</source>
+        <translation type="unfinished">保存预设...</translation>
+    </message>
+    <message>
+        <source>Apply to the workspace</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make them the workspace&apos;s parameters (Edit &gt; Undo brings the current ones back)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Folder of recordings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the recordings in %1...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No recording could be read in this folder.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n recording(s) read. Choose what to minimise and start.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Not read (%n file(s)):</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no recordings read yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no walk is marked closed: tick it if they all end where they started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no recording has a known length (e.g. walk_72m.txt, or a sidecar)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no recording has reference positions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None of the recordings has what this criterion needs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Tuning on %n recording(s): the current parameters, then a spread over the whole range...</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stopping; the best parameters so far are kept...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Best mean so far: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Searching around the best parameters found so far...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Best mean: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Stopped after %n evaluation(s).</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Done: %n evaluation(s).</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No better parameters were found; the current ones stay.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save them as a preset, or apply them to the workspace.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not scored: the recording lacks what the criterion needs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save preset</source>
+        <translation type="unfinished">保存预设</translation>
+    </message>
+    <message>
+        <source>Presets (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Preset written to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameters tuned over %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::WarningOverlay</name>
@@ -1910,10 +3379,6 @@ statistic</source>
         <translation>足部安装式惯性导航</translation>
     </message>
     <message>
-        <source>Recording to open</source>
-        <translation>要打开的记录</translation>
-    </message>
-    <message>
         <source>Save a PNG of the window once estimated, then quit</source>
         <translation>估计完成后保存窗口的 PNG 截图，然后退出</translation>
     </message>
@@ -1938,10 +3403,6 @@ statistic</source>
         <translation>设置一个参数，用法同 footpath-cli（可重复）</translation>
     </message>
     <message>
-        <source>Show this view: signals, detector, trajectory2d or trajectory3d</source>
-        <translation>显示此视图：signals、detector、trajectory2d 或 trajectory3d</translation>
-    </message>
-    <message>
         <source>Parameters from the command line</source>
         <translation>来自命令行的参数</translation>
     </message>
@@ -1949,143 +3410,13 @@ statistic</source>
         <source>Open the method comparison and run these sets, e.g. &quot;zupt;zupt,zaru;feliz&quot;</source>
         <translation>打开方法比较并运行这些组合，例如 &quot;zupt;zupt,zaru;feliz&quot;</translation>
     </message>
-</context>
-<context>
-    <name>footpath::ComparisonPanel</name>
     <message>
-        <source>Method sets to compare; tick the ones to run</source>
-        <translation>要比较的方法组合；勾选要运行的组合</translation>
+        <source>Show this view: signals, detector, states, trajectory2d or trajectory3d</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Add a set, e.g. zupt,hdr,mag</source>
-        <translation>添加组合，例如 zupt,hdr,mag</translation>
-    </message>
-    <message>
-        <source>Methods separated by commas: zupt, zaru, hdr, iper, zuna, baro, mag, feliz, 9state, 15state. Enter adds the set.</source>
-        <translation>用逗号分隔的方法：zupt、zaru、hdr、iper、zuna、baro、mag、feliz、9state、15state。按回车添加。</translation>
-    </message>
-    <message>
-        <source>Run</source>
-        <translation>运行</translation>
-    </message>
-    <message>
-        <source>Run every ticked set on the current recording</source>
-        <translation>在当前记录上运行所有勾选的组合</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>取消</translation>
-    </message>
-    <message>
-        <source>Click a row to make its methods the workspace&apos;s parameters (Edit &gt; Undo goes back)</source>
-        <translation>单击某行，将其方法设为工作区参数（编辑 &gt; 撤销可恢复）</translation>
-    </message>
-    <message>
-        <source>Use as main result</source>
-        <translation>用作主结果</translation>
-    </message>
-    <message>
-        <source>Make the selected set&apos;s methods the workspace&apos;s parameters</source>
-        <translation>将所选组合的方法设为工作区参数</translation>
-    </message>
-    <message>
-        <source>time (s)</source>
-        <translation>时间 (s)</translation>
-    </message>
-    <message>
-        <source>height z (m)</source>
-        <translation>高度 z (m)</translation>
-    </message>
-    <message>
-        <source>Tick at least one method set.</source>
-        <translation>请至少勾选一个方法组合。</translation>
-    </message>
-    <message>
-        <source>best</source>
-        <translation>最佳</translation>
-    </message>
-    <message>
-        <source>Stale: the parameters changed since this comparison. Run again to update it.</source>
-        <translation>已过时：自此次比较后参数已更改。请重新运行以更新。</translation>
-    </message>
-    <message>
-        <source>Open a recording to compare methods on it.</source>
-        <translation>打开一个记录以在其上比较方法。</translation>
-    </message>
-    <message>
-        <source>Tick the sets and press Run.</source>
-        <translation>勾选组合并点击运行。</translation>
-    </message>
-    <message>
-        <source>Click a row to use its methods.</source>
-        <translation>单击某行以使用其方法。</translation>
-    </message>
-    <message numerus="yes">
-        <source>Running %n set(s)...</source>
-        <translation>
-            <numerusform>正在运行 %n 个组合...</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>footpath::ComparisonTable</name>
-    <message>
-        <source>failed: %1</source>
-        <translation>失败：%1</translation>
-    </message>
-    <message>
-        <source>cancelled</source>
-        <translation>已取消</translation>
-    </message>
-    <message>
-        <source>no estimate</source>
-        <translation>无估计结果</translation>
-    </message>
-    <message>
-        <source>Method set</source>
-        <translation>方法组合</translation>
-    </message>
-    <message>
-        <source>End to start
-(m)</source>
-        <translation>终点到起点
-(m)</translation>
-    </message>
-    <message>
-        <source>End to start
-(%)</source>
-        <translation>终点到起点
-(%)</translation>
-    </message>
-    <message>
-        <source>Path length
-(m)</source>
-        <translation>路径长度
-(m)</translation>
-    </message>
-    <message>
-        <source>Height change
-(m)</source>
-        <translation>高度变化
-(m)</translation>
-    </message>
-    <message>
-        <source>ARMSE 2D
-(m)</source>
-        <translation>ARMSE 2D
-(m)</translation>
-    </message>
-    <message>
-        <source>Stance F1</source>
-        <translation>支撑相 F1</translation>
-    </message>
-    <message>
-        <source>Steps</source>
-        <translation>步数</translation>
-    </message>
-    <message>
-        <source>Warnings</source>
-        <translation>警告</translation>
+        <source>Recording to open; two files (or a folder): the left and the right foot of one walk</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>
