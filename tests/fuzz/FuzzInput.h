@@ -1,0 +1,46 @@
+#pragma once
+
+// Small helpers shared by the libFuzzer targets: the fuzzer's bytes as text or a stream, and a
+// scratch directory for readers that take a path (sidecars next to a recording).
+
+#include <QDir>
+#include <QFile>
+#include <QString>
+#include <QCoreApplication>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+namespace footpath::fuzz {
+
+inline std::string asText(const std::uint8_t* data, std::size_t size)
+{
+    return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+/// A directory of this process's own under $TMPDIR, made once; fuzzers run single-threaded.
+inline const QString& scratchDirectory()
+{
+    static const QString directory = [] {
+        const QString path = QDir::temp().filePath(QStringLiteral("footpath-fuzz-%1").arg(QCoreApplication::applicationPid()));
+        QDir().mkpath(path);
+        return path;
+    }();
+    return directory;
+}
+
+/// Overwrites `fileName` in the scratch directory with the bytes; returns its path.
+inline QString writeScratchFile(const QString& fileName, const std::uint8_t* data, std::size_t size)
+{
+    const QString path = QDir(scratchDirectory()).filePath(fileName);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        std::abort();  // the harness itself is broken, not the reader under test
+    file.write(reinterpret_cast<const char*>(data), static_cast<qint64>(size));
+    return path;
+}
+
+}  // namespace footpath::fuzz
