@@ -3,6 +3,9 @@
 // Small helpers shared by the libFuzzer targets: the fuzzer's bytes as text or a stream, and a
 // scratch directory for readers that take a path (sidecars next to a recording).
 
+#include "io/Import.h"
+#include "nav/InputCheck.h"
+
 #include <QDir>
 #include <QFile>
 #include <QString>
@@ -41,6 +44,14 @@ inline QString writeScratchFile(const QString& fileName, const std::uint8_t* dat
         std::abort();  // the harness itself is broken, not the reader under test
     file.write(reinterpret_cast<const char*>(data), static_cast<qint64>(size));
     return path;
+}
+
+/// A reader's promise: what it returns as read can be estimated (finite values, time never going
+/// back), so the pipeline never meets a NaN it did not cause. A broken promise is a finding.
+inline void checkImported(const ImportResult& result)
+{
+    if (result.ok() && !describeUnusableSamples(result.recording.samples).empty())
+        std::abort();
 }
 
 }  // namespace footpath::fuzz

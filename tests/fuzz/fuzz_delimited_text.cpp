@@ -46,7 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     const ImportOptions options = optionsFor(data[0]);
     std::istringstream in(footpath::fuzz::asText(data + 1, size - 1));
-    (void)footpath::importStream(in, size - 1, "fuzz.csv", options);
+    footpath::fuzz::checkImported(footpath::importStream(in, size - 1, "fuzz.csv", options));
     (void)footpath::startsWithHeaderRow(footpath::fuzz::asText(data + 1, size - 1));
     return 0;
 }

@@ -1,5 +1,6 @@
 // libFuzzer target: the Xsens .mtb reader, through the import entry point with the format forced
-// (as `--format xsens-mtb` does), so the unit and gap handling after the read runs too.
+// (as `--format xsens-mtb` does), so the unit and gap handling after the read runs too; what it
+// reads must be estimable (finite, in time order).
 
 #include "io/Import.h"
 
@@ -12,6 +13,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::istringstream in(footpath::fuzz::asText(data, size));
     footpath::ImportOptions options;
     options.format = "xsens-mtb";
-    (void)footpath::importStream(in, size, "fuzz.mtb", options);
+    footpath::fuzz::checkImported(footpath::importStream(in, size, "fuzz.mtb", options));
     return 0;
 }

@@ -12,6 +12,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::istringstream in(footpath::fuzz::asText(data, size));
     footpath::ImportOptions options;
     options.format = "xsens-text";
-    (void)footpath::importStream(in, size, "fuzz.txt", options);
+    footpath::fuzz::checkImported(footpath::importStream(in, size, "fuzz.txt", options));
     return 0;
 }
