@@ -135,7 +135,7 @@ void TestRobustness::saturatedSensor_importWarnsPerAxisAndResultIsFinite()
     const Recording walk = clipped(simulatedWalk(), 16.0, 3.2);
     const std::vector<std::string> warnings = describeSaturation(walk.samples);
     QVERIFY(!warnings.empty());
-    QVERIFY2(QString::fromStdString(warnings.front()).contains("gyroscope's y axis reads exactly 3.2 rad/s"),
+    QVERIFY2(QString::fromStdString(warnings.front()).contains("gyroscope's y axis reads exactly -3.2 rad/s"),
              warnings.front().c_str());
 
     std::istringstream csv(asCsv(walk));
