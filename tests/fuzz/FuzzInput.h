@@ -54,4 +54,13 @@ inline void checkImported(const ImportResult& result)
         std::abort();
 }
 
+/// Reads the bytes as a file of the given format (as `--format` forces it) and checks the result.
+inline void importAs(const std::uint8_t* data, std::size_t size, const char* format, const char* name)
+{
+    std::istringstream in(asText(data, size));
+    ImportOptions options;
+    options.format = format;
+    checkImported(importStream(in, size, name, options));
+}
+
 }  // namespace footpath::fuzz
