@@ -24,15 +24,18 @@ inline std::string asText(const std::uint8_t* data, std::size_t size)
     return std::string(reinterpret_cast<const char*>(data), size);
 }
 
-/// A directory of this process's own under $TMPDIR, made once; fuzzers run single-threaded.
+/// A directory of this process's own under $TMPDIR, made once (fuzzers run single-threaded) and
+/// removed when the fuzzer exits normally; after a crash it stays, with the input beside it.
 inline const QString& scratchDirectory()
 {
-    static const QString directory = [] {
-        const QString path = QDir::temp().filePath(QStringLiteral("footpath-fuzz-%1").arg(QCoreApplication::applicationPid()));
-        QDir().mkpath(path);
-        return path;
-    }();
-    return directory;
+    struct Scratch {
+        QString path = QDir::temp().filePath(
+            QStringLiteral("footpath-fuzz-%1").arg(QCoreApplication::applicationPid()));
+        Scratch() { QDir().mkpath(path); }
+        ~Scratch() { QDir(path).removeRecursively(); }
+    };
+    static const Scratch scratch;
+    return scratch.path;
 }
 
 /// Overwrites `fileName` in the scratch directory with the bytes; returns its path.
