@@ -46,7 +46,8 @@ QString firstDifference(const Parameters& a, const Parameters& b)
         QVERIFY2(difference_.isEmpty(), qPrintable(difference_)); \
     } while (false)
 
-/// A set where every field differs from its default: awkward in-range reals, flags flipped.
+/// A set where every field differs from its default: awkward in-range reals, flags flipped, the
+/// next choice.
 Parameters modifiedParameters()
 {
     Parameters params;
@@ -55,6 +56,12 @@ Parameters modifiedParameters()
         ++index;
         if (field.kind == ParameterField::Kind::Flag) {
             params.*field.flag = !(params.*field.flag);
+            continue;
+        }
+        // A choice has no real member: writing through field.real wrote one byte before params
+        // (the sanitizer build caught it). The next choice differs from the default as well.
+        if (field.kind == ParameterField::Kind::Choice) {
+            params.*field.choice = (params.*field.choice + 1) % static_cast<int>(field.choiceNames.size());
             continue;
         }
         const double fraction = 0.1 + 0.8 * std::fmod(0.618033988749895 * index, 1.0);

@@ -29,7 +29,7 @@ using namespace footpath;
 
 namespace {
 
-constexpr int kTimeout_ms = 120000;
+constexpr int kTimeout_ms = 120000 * FOOTPATH_TIMEOUT_SCALE;
 
 /// The brief's walk: an 8 x 5 m rectangle from an MTi-class sensor, marked closed, with nothing
 /// else known (no reference positions, no length), so only the closed-loop criterion applies.

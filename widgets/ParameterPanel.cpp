@@ -223,7 +223,14 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent)
     setParameters(defaults_);
 }
 
-ParameterPanel::~ParameterPanel() = default;
+ParameterPanel::~ParameterPanel()
+{
+    // ~QWidget closes a top-level panel, which takes the focus from a value field; its
+    // editingFinished would then call into this half-destroyed panel (rows_ already gone; the
+    // sanitizer build caught it). Stop listening to the children first.
+    for (QObject* child : findChildren<QObject*>())
+        child->disconnect(this);
+}
 
 QWidget* ParameterPanel::createButtonBar()
 {

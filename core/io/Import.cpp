@@ -4,6 +4,7 @@
 #include "io/MtbReader.h"
 #include "io/ReferenceSidecar.h"
 #include "io/XsensTextReader.h"
+#include "nav/InputCheck.h"
 
 #include <algorithm>
 #include <cmath>
@@ -265,6 +266,8 @@ void finishImport(ImportResult& r, const std::string& path, const ImportOptions&
     if (options.rate_hz > 0.0)
         r.info.rate_hz = options.rate_hz;
     reportGaps(r);
+    for (std::string& warning : describeSaturation(r.recording.samples))
+        r.recording.warnings.push_back(std::move(warning));
     if (r.info.format == "pyshoe-vicon") {
         r.recording.reference.closedLoop = true;
         r.recording.reference.notes.push_back("closed loop: every pyshoe-vicon trial ends where it started");

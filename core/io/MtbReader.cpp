@@ -123,6 +123,7 @@ private:
     bool sawPressure_ = false;
 
     Tally withoutImu_;
+    Tally nonFinite_;
     Tally malformed_;
     Tally legacyUndecodable_;
     Tally missingStamp_;
@@ -253,6 +254,11 @@ void MtbParser::addSample(const MtData2Sample& data)
         withoutImu_.add(offset);
         return;
     }
+    // A valid checksum does not make a float finite; one NaN would turn every later state NaN.
+    if (!data.acceleration->allFinite() || !data.rateOfTurn->allFinite()) {
+        nonFinite_.add(offset);
+        return;
+    }
     if (timeBase_ == TimeBase::Undecided) {
         chooseTimeBase(data);
         reserveSamples(offset);
@@ -270,9 +276,9 @@ void MtbParser::addSample(const MtData2Sample& data)
     if (!ticks_.empty() && halfRange_ > 0 && ticks - ticks_.back() >= halfRange_)
         jumpsBack_.add(offset);
     // Magnetometer and barometer often run slower than the IMU: hold their last value.
-    if (data.magneticField)
+    if (data.magneticField && data.magneticField->allFinite())
         lastMag_ = *data.magneticField;
-    if (data.pressure_pa)
+    if (data.pressure_pa && std::isfinite(*data.pressure_pa))
         lastPressure_pa_ = *data.pressure_pa;
     sawMag_ = sawMag_ || data.magneticField.has_value();
     sawPressure_ = sawPressure_ || data.pressure_pa.has_value();
@@ -375,6 +381,9 @@ std::string MtbParser::missingDataMessage() const
         reasons.push_back("none of the " + std::to_string(withoutImu_.count)
                           + " data message(s) carries both acceleration and rate of turn (" + withoutImu_.where()
                           + "): the device must output Acceleration (0x4020) and RateOfTurn (0x8020)");
+    if (nonFinite_.count > 0)
+        reasons.push_back(std::to_string(nonFinite_.count) + " data message(s) hold an acceleration or rate of turn "
+                          "that is not a finite number (" + nonFinite_.where() + ")");
     if (malformed_.count > 0)
         reasons.push_back(std::to_string(malformed_.count) + " malformed data message(s), " + malformed_.where() + ": "
                           + malformed_.firstDetail);
@@ -454,6 +463,9 @@ void MtbParser::warnAboutSkippedMessages()
     if (withoutImu_.count > 0)
         warn("skipped " + std::to_string(withoutImu_.count)
              + " data message(s) without both acceleration and rate of turn (" + withoutImu_.where() + ")");
+    if (nonFinite_.count > 0)
+        warn("skipped " + std::to_string(nonFinite_.count)
+             + " data message(s) whose acceleration or rate of turn is not a finite number (" + nonFinite_.where() + ")");
     if (malformed_.count > 0)
         warn("skipped " + std::to_string(malformed_.count) + " malformed data message(s) (" + malformed_.where()
              + ": " + malformed_.firstDetail + ")");

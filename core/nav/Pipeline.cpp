@@ -7,6 +7,7 @@
 #include "nav/Attitude.h"
 #include "nav/ErrorStateEkf.h"
 #include "nav/FelizIntegrator.h"
+#include "nav/InputCheck.h"
 #include "nav/MeasurementSources.h"
 #include "nav/MotionClasses.h"
 #include "nav/Plausibility.h"
@@ -29,6 +30,8 @@ std::string checkInput(const Recording& recording, const Parameters& params)
         out << problem << "\n";
     if (recording.samples.size() < 2)
         out << "the recording has " << recording.samples.size() << " samples; at least 2 are needed\n";
+    if (const std::string damage = describeUnusableSamples(recording.samples); !damage.empty())
+        out << damage << "\n";
     std::string text = out.str();
     if (!text.empty())
         text.pop_back();

@@ -216,11 +216,25 @@ void checkStanceShare(const Result& result, const PlausibilityLimits& limits, st
                               100.0 * share, share < limits.minStanceShare ? "being missed" : "found where the foot moves")});
 }
 
+constexpr double kNeverMovedRestShare = 0.95;
+
 void checkStanceCount(const Result& result, std::vector<PlausibilityWarning>& out)
 {
     const double duration = result.summary.duration_s;
     if (duration < 10.0 || result.steps.size() >= 3)
         return;
+    const std::vector<std::uint8_t>& stance = result.flags.stance;
+    const double restShare = static_cast<double>(std::count(stance.begin(), stance.end(), 1))
+                             / static_cast<double>(stance.size());
+    // Few stances because the foot never left the ground is a different problem from a detector
+    // that misses them: say which one it is.
+    if (restShare > kNeverMovedRestShare) {
+        out.push_back({Kind::FewStances, result.time_s.front(), result.time_s.back(),
+                       format("The foot is at rest for %.0f %% of the %.0f s: the sensor hardly moved, so there is "
+                              "no walk to estimate.",
+                              100.0 * restShare, duration)});
+        return;
+    }
     out.push_back({Kind::FewStances, result.time_s.front(), result.time_s.back(),
                    format("Only %zu stance phases in %.0f s: the detector does not find the foot at rest, so the "
                           "path is integrated without corrections.",

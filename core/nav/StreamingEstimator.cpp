@@ -4,6 +4,7 @@
 #include "metrics/Evaluation.h"
 #include "nav/Alignment.h"
 #include "nav/ErrorStateEkf.h"
+#include "nav/InputCheck.h"
 #include "nav/MeasurementSources.h"
 #include "nav/Pipeline.h"
 #include "nav/Plausibility.h"
@@ -78,7 +79,7 @@ struct StreamingEstimator::Impl {
 
 bool StreamingEstimator::Impl::accepts(const ImuSample& sample) const
 {
-    if (finished || !std::isfinite(sample.time_s))
+    if (finished || !hasFiniteInertialValues(sample))
         return false;
     return !newestTime_s || sample.time_s > *newestTime_s;
 }

@@ -36,8 +36,9 @@ public:
     /// finish() when fewer than 2 samples arrived (runPipeline refuses those too).
     const std::string& error() const;
 
-    /// Appends one sample. A sample not later than the previous one (or without a finite time) is
-    /// rejected and counted (rejectedSamples()); it would break the time windows. Estimates every
+    /// Appends one sample. A sample not later than the previous one, or without a finite time,
+    /// accelerometer or gyroscope value, is rejected and counted (rejectedSamples()): it would break
+    /// the time windows or make every later state NaN. Estimates every
     /// sample whose stance decision became final. Does nothing while error() is set.
     void push(const ImuSample& sample);
     /// End of data: the remaining samples are decided with the windows truncated at the end, as

@@ -409,8 +409,9 @@ XbusConfiguration mtData2Configuration(std::uint64_t deviceId, std::uint16_t rat
     constexpr std::uint32_t kLegacyClock_hz = 115200;  // the period counts ticks of this clock (§6.4)
     XbusConfiguration configuration;
     configuration.masterDeviceId = static_cast<std::uint32_t>(deviceId);
-    configuration.samplingPeriod =
-        rate_hz > 0 && kLegacyClock_hz % rate_hz == 0 ? static_cast<std::uint16_t>(kLegacyClock_hz / rate_hz) : 0;
+    // 0 when the rate is no whole divisor of the clock or its period does not fit 16 bits (below 2 Hz).
+    const bool periodFits = rate_hz > 0 && kLegacyClock_hz % rate_hz == 0 && kLegacyClock_hz / rate_hz <= UINT16_MAX;
+    configuration.samplingPeriod = periodFits ? static_cast<std::uint16_t>(kLegacyClock_hz / rate_hz) : std::uint16_t{0};
     XbusConfiguration::Device device;
     device.deviceId = static_cast<std::uint32_t>(deviceId);
     device.layout.outputMode = 0;  // MTData2 devices leave the legacy layout empty
