@@ -325,169 +325,169 @@
     </message>
     <message>
         <source>failed: %1</source>
-        <translation type="unfinished">fehlgeschlagen: %1</translation>
+        <translation>fehlgeschlagen: %1</translation>
     </message>
     <message>
         <source>cancelled</source>
-        <translation type="unfinished">abgebrochen</translation>
+        <translation>abgebrochen</translation>
     </message>
     <message>
         <source>no estimate</source>
-        <translation type="unfinished">keine Schätzung</translation>
+        <translation>keine Schätzung</translation>
     </message>
     <message>
         <source>End to start
 (m)</source>
-        <translation type="unfinished">Ende bis Start
+        <translation>Ende bis Start
 (m)</translation>
     </message>
     <message>
         <source>End to start
 (%)</source>
-        <translation type="unfinished">Ende bis Start
+        <translation>Ende bis Start
 (%)</translation>
     </message>
     <message>
         <source>Path length
 (m)</source>
-        <translation type="unfinished">Weglänge
+        <translation>Weglänge
 (m)</translation>
     </message>
     <message>
         <source>Height change
 (m)</source>
-        <translation type="unfinished">Höhenänderung
+        <translation>Höhenänderung
 (m)</translation>
     </message>
     <message>
         <source>ARMSE 2D
 (m)</source>
-        <translation type="unfinished">ARMSE 2D
+        <translation>ARMSE 2D
 (m)</translation>
     </message>
     <message>
         <source>Stance F1</source>
-        <translation type="unfinished">Standphasen-F1</translation>
+        <translation>Standphasen-F1</translation>
     </message>
     <message>
         <source>Warnings</source>
-        <translation type="unfinished">Warnungen</translation>
+        <translation>Warnungen</translation>
     </message>
     <message>
         <source>Strides (turning)</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschritte (Wenden)</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>Stride time</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschrittdauer</translation>
     </message>
     <message>
         <source>Stride length</source>
-        <translation type="unfinished">Doppelschrittlänge</translation>
+        <translation>Doppelschrittlänge</translation>
     </message>
     <message>
         <source>Cadence</source>
-        <translation type="unfinished">Schrittfrequenz</translation>
+        <translation>Schrittfrequenz</translation>
     </message>
     <message>
         <source>Stance / swing</source>
-        <translation type="unfinished"></translation>
+        <translation>Standphase / Schwungphase</translation>
     </message>
     <message>
         <source>%1 % / %2 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 % / %2 %</translation>
     </message>
     <message>
         <source>Foot clearance</source>
-        <translation type="unfinished"></translation>
+        <translation>Fußfreiheit</translation>
     </message>
     <message>
         <source>Double support (both feet on the ground)</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelstandphase (beide Füße am Boden)</translation>
     </message>
     <message>
         <source>%1 % of the gait cycle (initial %2 %, terminal %3 %), %4 strides</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 % des Gangzyklus (initial %2 %, terminal %3 %), %4 Doppelschritte</translation>
     </message>
     <message>
         <source>Stance left / right</source>
-        <translation type="unfinished"></translation>
+        <translation>Standphase links / rechts</translation>
     </message>
     <message>
         <source>Symmetry index: stride time</source>
-        <translation type="unfinished"></translation>
+        <translation>Symmetrieindex: Doppelschrittdauer</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %</translation>
     </message>
     <message>
         <source>Symmetry index: stride length</source>
-        <translation type="unfinished"></translation>
+        <translation>Symmetrieindex: Doppelschrittlänge</translation>
     </message>
     <message>
         <source>Symmetry index: stance</source>
-        <translation type="unfinished"></translation>
+        <translation>Symmetrieindex: Standphase</translation>
     </message>
     <message>
         <source>Symmetry index: swing</source>
-        <translation type="unfinished"></translation>
+        <translation>Symmetrieindex: Schwungphase</translation>
     </message>
     <message>
         <source>Gait (heel strike to toe off)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gang (Fersenaufsatz bis Zehenablösung)</translation>
     </message>
     <message>
         <source>From the gait events of %1: means over the strides that neither turn (more than 20 degrees) nor pause.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus den Gangereignissen von %1: Mittelwerte über die Doppelschritte, die weder wenden (mehr als 20 Grad) noch pausieren.</translation>
     </message>
     <message>
         <source>the left foot</source>
-        <translation type="unfinished"></translation>
+        <translation>dem linken Fuß</translation>
     </message>
     <message>
         <source>this foot</source>
-        <translation type="unfinished"></translation>
+        <translation>diesem Fuß</translation>
     </message>
     <message>
         <source>Both feet</source>
-        <translation type="unfinished"></translation>
+        <translation>Beide Füße</translation>
     </message>
     <message>
         <source>The left and the right foot&apos;s files on one clock (their own time stamps). Symmetry index: 100 (left - right) / mean, 0 symmetric, positive where the left value is larger.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Dateien des linken und des rechten Fußes auf einer Uhr (ihre eigenen Zeitstempel). Symmetrieindex: 100 (links - rechts) / Mittelwert, 0 symmetrisch, positiv, wo der linke Wert größer ist.</translation>
     </message>
     <message>
         <source>Note: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Hinweis: %1</translation>
     </message>
     <message>
         <source>Figure 9. Gait stance (heel strike to toe off, left) and foot clearance (right) per stride.</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbildung 9. Gang-Standphase (Fersenaufsatz bis Zehenablösung, links) und Fußfreiheit (rechts) je Doppelschritt.</translation>
     </message>
     <message>
         <source>stride</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschritt</translation>
     </message>
     <message>
         <source>stance (% of the stride)</source>
-        <translation type="unfinished"></translation>
+        <translation>Standphase (% des Doppelschritts)</translation>
     </message>
     <message>
         <source>clearance (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fußfreiheit (m)</translation>
     </message>
     <message>
         <source>Figure 3. The path in 3D (reference dashed when present).</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbildung 3. Der Weg in 3D (Referenz gestrichelt, falls vorhanden).</translation>
     </message>
     <message>
         <source>Parameters (* and bold: differs from the default)</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter (* und fett: weicht vom Standardwert ab)</translation>
     </message>
 </context>
 <context>
@@ -579,119 +579,119 @@
     <name>footpath::HelpDialog</name>
     <message>
         <source>Footpath help</source>
-        <translation type="unfinished"></translation>
+        <translation>Footpath-Hilfe</translation>
     </message>
     <message>
         <source>User guide</source>
-        <translation type="unfinished"></translation>
+        <translation>Benutzerhandbuch</translation>
     </message>
     <message>
         <source>Keyboard shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>Tastenkürzel</translation>
     </message>
     <message>
         <source>Click</source>
-        <translation type="unfinished"></translation>
+        <translation>Klick</translation>
     </message>
     <message>
         <source>Plots and 2D path: move the time cursor there</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme und 2D-Weg: die Zeitmarke dorthin setzen</translation>
     </message>
     <message>
         <source>Wheel</source>
-        <translation type="unfinished"></translation>
+        <translation>Mausrad</translation>
     </message>
     <message>
         <source>Plots: zoom the time axis; 3D: zoom about the pointer</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme: Zeitachse zoomen; 3D: um den Mauszeiger zoomen</translation>
     </message>
     <message>
         <source>Drag</source>
-        <translation type="unfinished"></translation>
+        <translation>Ziehen</translation>
     </message>
     <message>
         <source>Plots and 2D path: pan; 3D: orbit (right or middle button: pan)</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme und 2D-Weg: verschieben; 3D: drehen (rechte oder mittlere Taste: verschieben)</translation>
     </message>
     <message>
         <source>Ctrl+Wheel</source>
-        <translation type="unfinished"></translation>
+        <translation>Strg+Mausrad</translation>
     </message>
     <message>
         <source>Plots: zoom the value axis of the row under the pointer</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme: die Werteachse der Zeile unter dem Mauszeiger zoomen</translation>
     </message>
     <message>
         <source>Wheel or drag on a value axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Mausrad oder Ziehen auf einer Werteachse</translation>
     </message>
     <message>
         <source>Plots: zoom or pan that row&apos;s values</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme: die Werte dieser Zeile zoomen oder verschieben</translation>
     </message>
     <message>
         <source>Pointer over a plot</source>
-        <translation type="unfinished"></translation>
+        <translation>Mauszeiger über einem Diagramm</translation>
     </message>
     <message>
         <source>Plots and 2D path: read the time and the values there</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme und 2D-Weg: dort Zeit und Werte ablesen</translation>
     </message>
     <message>
         <source>Shift+Click</source>
-        <translation type="unfinished"></translation>
+        <translation>Umschalt+Klick</translation>
     </message>
     <message>
         <source>Plots and 2D path: set a marker; the readout then gives Δt and Δy from it</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme und 2D-Weg: eine Markierung setzen; die Anzeige gibt dann Δt und Δy zu ihr an</translation>
     </message>
     <message>
         <source>Right-click</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechtsklick</translation>
     </message>
     <message>
         <source>Plots: reset the view, export as PNG, SVG or PDF, or the visible data as CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme: Ansicht zurücksetzen, als PNG, SVG oder PDF exportieren, oder die sichtbaren Daten als CSV</translation>
     </message>
     <message>
         <source>Double-click</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelklick</translation>
     </message>
     <message>
         <source>Plots and paths: show everything again</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramme und Wege: wieder alles zeigen</translation>
     </message>
     <message>
         <source>Up / Down</source>
-        <translation type="unfinished"></translation>
+        <translation>Auf / Ab</translation>
     </message>
     <message>
         <source>Parameter value field: one slider step</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter-Wertefeld: ein Schieberegler-Schritt</translation>
     </message>
     <message>
         <source>Page Up / Page Down</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild auf / Bild ab</translation>
     </message>
     <message>
         <source>Parameter value field: ten slider steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter-Wertefeld: zehn Schieberegler-Schritte</translation>
     </message>
     <message>
         <source>Step table: the next step, with the time cursor</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritttabelle: der nächste Schritt, mit der Zeitmarke</translation>
     </message>
     <message>
         <source>Keys or mouse</source>
-        <translation type="unfinished"></translation>
+        <translation>Tasten oder Maus</translation>
     </message>
     <message>
         <source>Does</source>
-        <translation type="unfinished"></translation>
+        <translation>Bewirkt</translation>
     </message>
     <message>
         <source>&lt;h2&gt;Footpath in five minutes&lt;/h2&gt;&lt;p&gt;Footpath turns the recording of an inertial sensor on a shoe into the path walked: it finds the moments the foot rests on the ground (stance), integrates the motion in between, and corrects the drift with zero-velocity updates in a Kalman filter.&lt;/p&gt;&lt;h3&gt;Opening a recording&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;File &amp;gt; Open recording&lt;/b&gt;, the Recorded input panel, or drag a file onto the window. Xsens text exports, MT binary logs (.mtb), PyShoe CSV files and plain CSV/text with one sample per row are read.&lt;/li&gt;&lt;li&gt;A file that does not name its columns opens the import dialog: say which column holds what and in which unit; the dialog shows the first rows as they will be read.&lt;/li&gt;&lt;li&gt;The recording should start with about a second of standing still: the sensor&apos;s attitude is found from it.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;What the views show&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Trajectory 2D / 3D&lt;/b&gt;: the path from above and in space. Orange dots are the stances, the green square is the start and the red cross the end, the yellow dot the time cursor; a dashed line is the reference when the file has one. After a parameter change the path before it stays as a faint grey ghost until the next change.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Signals&lt;/b&gt;: accelerometer, gyroscope and the other channels over time. The coloured lanes under them mark the stance phases (the foot at rest), plausibility warnings (red spans: a stride too long, a stance missed) and, with a barometer, the motion class of each step (level, stairs, elevator).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Stance detector&lt;/b&gt;: the statistic the detector thresholds and the threshold itself; where the curve is below the threshold the foot is taken to be at rest. A &lt;i&gt;Reference stance&lt;/i&gt; lane shows the stances the file&apos;s own labels give (gait events, motion capture), to compare with.&lt;/li&gt;&lt;li&gt;&lt;b&gt;States&lt;/b&gt;: the filter&apos;s attitude, velocity, height and sensor biases over time, with a band of one standard deviation where the filter estimates it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Summary&lt;/b&gt;: the walk&apos;s figures (path length, strides, cadence, end-to-start distance), the figures against the reference when there is one, and a table of the steps. Selecting a step moves the time cursor to it in every view.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;One time cursor links every view: click a plot or the path and all views show that moment. Hold the pointer over a plot to read the values; Shift+click sets a marker to measure time and value differences from; right-click a plot to export it. &lt;b&gt;Help &amp;gt; Keyboard shortcuts&lt;/b&gt; lists every key.&lt;/p&gt;&lt;h3&gt;Tuning&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;The &lt;b&gt;Parameters&lt;/b&gt; panel lists every setting with its unit; the tool tip names the identifier used in presets and on the command line. A setting that has no effect with the others is greyed out, and its tool tip says why.&lt;/li&gt;&lt;li&gt;Every change re-estimates at once. The summary then shows the key figures before and after the change, green where the change helped and red where it hurt, and the &lt;b&gt;History&lt;/b&gt; lists the last runs: double-click one to go back to it. Undo (Ctrl+Z) goes back one change.&lt;/li&gt;&lt;li&gt;Presets save and load the whole set; &lt;b&gt;Analysis &amp;gt; Compare methods&lt;/b&gt; runs several method sets on the same recording side by side.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;Live input&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;In the &lt;b&gt;Live input&lt;/b&gt; panel choose the sensor&apos;s serial port (or the emulator) and connect: the live path and signals appear in their own tabs while you walk.&lt;/li&gt;&lt;li&gt;Record writes the samples to a file (the name offered is the device&apos;s and the time&apos;s, in the folder of the last recording); when recording stops, the file opens for the full analysis. A session you did not record can still be saved after Disconnect.&lt;/li&gt;&lt;li&gt;A recording that starts while walking is still read: the path then starts at the first stance, and a warning says so.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;Exporting&lt;/h3&gt;&lt;p&gt;&lt;b&gt;File &amp;gt; Export report&lt;/b&gt; writes a PDF with the figures, plots and parameters; &lt;b&gt;Export CSV&lt;/b&gt; writes the trajectory, steps, summary and parameters as CSV files.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h2&gt;Footpath in fünf Minuten&lt;/h2&gt;&lt;p&gt;Footpath macht aus der Aufzeichnung eines Inertialsensors an einem Schuh den gegangenen Weg: es findet die Momente, in denen der Fuß auf dem Boden ruht (Standphase), integriert die Bewegung dazwischen und korrigiert die Drift mit Nullgeschwindigkeits-Updates in einem Kalman-Filter.&lt;/p&gt;&lt;h3&gt;Eine Aufzeichnung öffnen&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Datei &amp;gt; Aufzeichnung öffnen&lt;/b&gt;, das Feld Aufzeichnung, oder eine Datei auf das Fenster ziehen. Gelesen werden Xsens-Textexporte, MT-Binärlogs (.mtb), PyShoe-CSV-Dateien und einfache CSV-/Textdateien mit einem Abtastwert je Zeile.&lt;/li&gt;&lt;li&gt;Eine Datei, die ihre Spalten nicht benennt, öffnet den Importdialog: geben Sie an, welche Spalte was in welcher Einheit enthält; der Dialog zeigt die ersten Zeilen so, wie sie gelesen werden.&lt;/li&gt;&lt;li&gt;Die Aufzeichnung sollte mit etwa einer Sekunde Stillstehen beginnen: daraus wird die Lage des Sensors bestimmt.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;Was die Ansichten zeigen&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Trajektorie 2D / 3D&lt;/b&gt;: der Weg von oben und im Raum. Orange Punkte sind die Standphasen, das grüne Quadrat ist der Start und das rote Kreuz das Ende, der gelbe Punkt die Zeitmarke; eine gestrichelte Linie ist die Referenz, wenn die Datei eine hat. Nach einer Parameteränderung bleibt der vorherige Weg bis zur nächsten Änderung als blasser grauer Geist stehen.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Signale&lt;/b&gt;: Beschleunigungsmesser, Gyroskop und die übrigen Kanäle über der Zeit. Die farbigen Bahnen darunter markieren die Standphasen (der Fuß in Ruhe), Plausibilitätswarnungen (rote Zeitspannen: ein zu langer Doppelschritt, eine verpasste Standphase) und, mit Barometer, die Bewegungsart jedes Schritts (eben, Treppe, Aufzug).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Standphasendetektor&lt;/b&gt;: die Statistik, die der Detektor mit dem Schwellwert vergleicht, und der Schwellwert selbst; wo die Kurve unter dem Schwellwert liegt, gilt der Fuß als in Ruhe. Eine Bahn &lt;i&gt;Referenz-Standphase&lt;/i&gt; zeigt zum Vergleich die Standphasen, die die eigenen Markierungen der Datei angeben (Gangereignisse, Motion Capture).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Zustände&lt;/b&gt;: Lage, Geschwindigkeit, Höhe und Sensor-Biases des Filters über der Zeit, mit einem Band von einer Standardabweichung, wo das Filter sie schätzt.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Zusammenfassung&lt;/b&gt;: die Kennzahlen des Gangs (Weglänge, Doppelschritte, Schrittfrequenz, Abstand Ende–Start), die Kennzahlen gegenüber der Referenz, falls es eine gibt, und eine Tabelle der Schritte. Die Auswahl eines Schritts setzt die Zeitmarke in jeder Ansicht auf ihn.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;Eine Zeitmarke verbindet alle Ansichten: ein Klick in ein Diagramm oder den Weg, und alle Ansichten zeigen diesen Moment. Halten Sie den Mauszeiger über ein Diagramm, um die Werte abzulesen; Umschalt+Klick setzt eine Markierung, von der aus Zeit- und Wertdifferenzen gemessen werden; ein Rechtsklick auf ein Diagramm exportiert es. &lt;b&gt;Hilfe &amp;gt; Tastenkürzel&lt;/b&gt; listet jede Taste auf.&lt;/p&gt;&lt;h3&gt;Abstimmen&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;Das Feld &lt;b&gt;Parameter&lt;/b&gt; listet jede Einstellung mit ihrer Einheit; der Tooltip nennt den Bezeichner, der in Voreinstellungen und auf der Kommandozeile verwendet wird. Eine Einstellung, die zusammen mit den anderen keine Wirkung hat, ist ausgegraut, und ihr Tooltip sagt warum.&lt;/li&gt;&lt;li&gt;Jede Änderung schätzt sofort neu. Die Zusammenfassung zeigt dann die wichtigsten Kennzahlen vor und nach der Änderung, grün, wo die Änderung geholfen hat, und rot, wo sie geschadet hat, und der &lt;b&gt;Verlauf&lt;/b&gt; listet die letzten Läufe: ein Doppelklick auf einen kehrt zu ihm zurück. Rückgängig (Strg+Z) geht eine Änderung zurück.&lt;/li&gt;&lt;li&gt;Voreinstellungen speichern und laden den ganzen Satz; &lt;b&gt;Analyse &amp;gt; Methoden vergleichen&lt;/b&gt; rechnet mehrere Methodenkombinationen nebeneinander auf derselben Aufzeichnung.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;Live-Eingabe&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;Wählen Sie im Feld &lt;b&gt;Live-Eingabe&lt;/b&gt; die serielle Schnittstelle des Sensors (oder den Emulator) und verbinden Sie: Live-Weg und Live-Signale erscheinen in eigenen Reitern, während Sie gehen.&lt;/li&gt;&lt;li&gt;Aufzeichnen schreibt die Abtastwerte in eine Datei (der vorgeschlagene Name setzt sich aus Gerät und Uhrzeit zusammen, im Ordner der letzten Aufzeichnung); wenn die Aufzeichnung endet, öffnet sich die Datei zur vollständigen Analyse. Eine nicht aufgezeichnete Sitzung kann nach dem Trennen noch gespeichert werden.&lt;/li&gt;&lt;li&gt;Eine Aufzeichnung, die während des Gehens beginnt, wird trotzdem gelesen: der Weg beginnt dann bei der ersten Standphase, und eine Warnung weist darauf hin.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;Exportieren&lt;/h3&gt;&lt;p&gt;&lt;b&gt;Datei &amp;gt; Bericht exportieren&lt;/b&gt; schreibt ein PDF mit den Kennzahlen, Diagrammen und Parametern; &lt;b&gt;CSV exportieren&lt;/b&gt; schreibt Trajektorie, Schritte, Zusammenfassung und Parameter als CSV-Dateien.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -782,11 +782,11 @@
     </message>
     <message>
         <source>°/s</source>
-        <translation type="unfinished"></translation>
+        <translation>°/s</translation>
     </message>
     <message>
         <source>%1 needs import settings and no one is there to give them: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 benötigt Importeinstellungen, und niemand ist da, um sie anzugeben: %2</translation>
     </message>
 </context>
 <context>
@@ -965,99 +965,99 @@
     </message>
     <message>
         <source>Refresh the list of ports</source>
-        <translation type="unfinished"></translation>
+        <translation>Liste der Schnittstellen aktualisieren</translation>
     </message>
     <message>
         <source>Save...</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern...</translation>
     </message>
     <message>
         <source>Save the samples received in the last session (kept in memory) as a CSV file and open it as a recorded walk: for a session that was not recorded</source>
-        <translation type="unfinished"></translation>
+        <translation>Die in der letzten Sitzung empfangenen Abtastwerte (im Speicher gehalten) als CSV-Datei speichern und als aufgezeichneten Gang öffnen: für eine Sitzung, die nicht aufgezeichnet wurde</translation>
     </message>
     <message>
         <source>Horizontal distance from the start to where the foot is now</source>
-        <translation type="unfinished"></translation>
+        <translation>Horizontaler Abstand vom Start bis dorthin, wo der Fuß jetzt ist</translation>
     </message>
     <message>
         <source>Duration:</source>
-        <translation type="unfinished"></translation>
+        <translation>Dauer:</translation>
     </message>
     <message>
         <source>End to start:</source>
-        <translation type="unfinished"></translation>
+        <translation>Ende bis Start:</translation>
     </message>
     <message>
         <source>Warnings:</source>
-        <translation type="unfinished"></translation>
+        <translation>Warnungen:</translation>
     </message>
     <message>
         <source>Live session: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Live-Sitzung: %1</translation>
     </message>
     <message>
         <source>Samples saved to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Abtastwerte gespeichert unter %1</translation>
     </message>
     <message>
         <source>Save samples</source>
-        <translation type="unfinished"></translation>
+        <translation>Abtastwerte speichern</translation>
     </message>
     <message>
         <source>CSV (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV (*.csv)</translation>
     </message>
     <message>
         <source>Unsaved samples</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht gespeicherte Abtastwerte</translation>
     </message>
     <message>
         <source>The last session&apos;s %1 samples were not recorded. Save them before connecting again?</source>
-        <translation type="unfinished"></translation>
+        <translation>Die %1 Abtastwerte der letzten Sitzung wurden nicht aufgezeichnet. Vor dem erneuten Verbinden speichern?</translation>
     </message>
     <message>
         <source>Not connected: choose a port and Connect (Live input panel)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verbunden: eine Schnittstelle wählen und Verbinden (Feld Live-Eingabe)</translation>
     </message>
     <message>
         <source>Not connected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verbunden: %1</translation>
     </message>
     <message>
         <source>Connecting to %1...</source>
-        <translation type="unfinished"></translation>
+        <translation>Verbinde mit %1...</translation>
     </message>
     <message>
         <source>Connected: waiting for samples...</source>
-        <translation type="unfinished"></translation>
+        <translation>Verbunden: warte auf Abtastwerte...</translation>
     </message>
     <message>
         <source>Disconnected: the session failed</source>
-        <translation type="unfinished"></translation>
+        <translation>Getrennt: die Sitzung ist fehlgeschlagen</translation>
     </message>
     <message>
         <source>The connection failed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Verbindung ist fehlgeschlagen.</translation>
     </message>
     <message>
         <source>Aligning: keep the foot still for %1 s (a walk already under way is aligned at its first stance)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausrichten: den Fuß %1 s still halten (ein bereits laufender Gang wird bei seiner ersten Standphase ausgerichtet)</translation>
     </message>
     <message>
         <source>Estimating (%1 s behind)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schätzung läuft (%1 s zurück)</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished">keine</translation>
+        <translation>keine</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>Live: %1 steps, %2 m, %3 s, end to start %4 m, warnings: %5</source>
-        <translation type="unfinished"></translation>
+        <translation>Live: %1 Schritte, %2 m, %3 s, Ende bis Start %4 m, Warnungen: %5</translation>
     </message>
 </context>
 <context>
@@ -1076,27 +1076,27 @@
     </message>
     <message>
         <source>The live session&apos;s path seen from above, as it grows</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Weg der Live-Sitzung von oben gesehen, während er wächst</translation>
     </message>
     <message>
         <source>The live session&apos;s path in three dimensions, as it grows</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Weg der Live-Sitzung in drei Dimensionen, während er wächst</translation>
     </message>
     <message>
         <source>Live IMU</source>
-        <translation type="unfinished"></translation>
+        <translation>Live-IMU</translation>
     </message>
     <message>
         <source>Live signals: the live session&apos;s last seconds of sensor signals</source>
-        <translation type="unfinished"></translation>
+        <translation>Live-Signale: die letzten Sekunden der Sensorsignale der Live-Sitzung</translation>
     </message>
     <message>
         <source>Live stance</source>
-        <translation type="unfinished"></translation>
+        <translation>Live-Standphase</translation>
     </message>
     <message>
         <source>Live stance detector: the live session&apos;s detector over its last seconds</source>
-        <translation type="unfinished"></translation>
+        <translation>Live-Standphasendetektor: der Detektor der Live-Sitzung über ihre letzten Sekunden</translation>
     </message>
 </context>
 <context>
@@ -1378,115 +1378,115 @@
     </message>
     <message>
         <source>IMU</source>
-        <translation type="unfinished"></translation>
+        <translation>IMU</translation>
     </message>
     <message>
         <source>Signals: the recorded walk&apos;s sensor signals</source>
-        <translation type="unfinished"></translation>
+        <translation>Signale: die Sensorsignale des aufgezeichneten Gangs</translation>
     </message>
     <message>
         <source>Stance</source>
-        <translation type="unfinished">Standphase</translation>
+        <translation>Standphase</translation>
     </message>
     <message>
         <source>Stance detector: the recorded walk&apos;s statistics, thresholds, lanes</source>
-        <translation type="unfinished"></translation>
+        <translation>Standphasendetektor: Statistiken, Schwellwerte und Bahnen des aufgezeichneten Gangs</translation>
     </message>
     <message>
         <source>States</source>
-        <translation type="unfinished"></translation>
+        <translation>Zustände</translation>
     </message>
     <message>
         <source>States: the recorded walk&apos;s attitude, velocity, biases</source>
-        <translation type="unfinished"></translation>
+        <translation>Zustände: Lage, Geschwindigkeit und Biases des aufgezeichneten Gangs</translation>
     </message>
     <message>
         <source>2D</source>
-        <translation type="unfinished"></translation>
+        <translation>2D</translation>
     </message>
     <message>
         <source>Trajectory 2D: the recorded walk&apos;s path seen from above</source>
-        <translation type="unfinished"></translation>
+        <translation>Trajektorie 2D: der Weg des aufgezeichneten Gangs von oben gesehen</translation>
     </message>
     <message>
         <source>3D</source>
-        <translation type="unfinished"></translation>
+        <translation>3D</translation>
     </message>
     <message>
         <source>Trajectory 3D: the recorded walk&apos;s path in three dimensions</source>
-        <translation type="unfinished"></translation>
+        <translation>Trajektorie 3D: der Weg des aufgezeichneten Gangs in drei Dimensionen</translation>
     </message>
     <message>
         <source>History</source>
-        <translation type="unfinished"></translation>
+        <translation>Verlauf</translation>
     </message>
     <message>
         <source>&amp;User guide</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
         <source>&amp;Keyboard shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
         <source>Undo the last change</source>
-        <translation type="unfinished"></translation>
+        <translation>Die letzte Änderung rückgängig machen</translation>
     </message>
     <message>
         <source>Redo</source>
-        <translation type="unfinished">Wiederherstellen:</translation>
+        <translation>Wiederherstellen</translation>
     </message>
     <message>
         <source>S&amp;tates</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zustände</translation>
     </message>
     <message>
         <source>Back to run %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zurück zu Lauf %1</translation>
     </message>
     <message>
         <source>Left foot</source>
-        <translation type="unfinished"></translation>
+        <translation>Linker Fuß</translation>
     </message>
     <message>
         <source>&amp;Tune for this recording...</source>
-        <translation type="unfinished"></translation>
+        <translation>Für diese Aufzeichnung &amp;optimieren...</translation>
     </message>
     <message>
         <source>Search the detector settings and the filter noise that fit this recording best</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Detektoreinstellungen und das Filterrauschen suchen, die am besten zu dieser Aufzeichnung passen</translation>
     </message>
     <message>
         <source>Tune over a &amp;folder...</source>
-        <translation type="unfinished"></translation>
+        <translation>Über einen &amp;Ordner optimieren...</translation>
     </message>
     <message>
         <source>One parameter set for many recordings of a sensor and a way of walking</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Parametersatz für viele Aufzeichnungen eines Sensors und einer Gangart</translation>
     </message>
     <message>
         <source>Tune for this recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Für diese Aufzeichnung optimieren</translation>
     </message>
     <message>
         <source>Open a recording first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffnen Sie zuerst eine Aufzeichnung.</translation>
     </message>
     <message>
         <source>Right foot</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechter Fuß</translation>
     </message>
     <message>
         <source>Open recording (two files: both feet)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufzeichnung öffnen (zwei Dateien: beide Füße)</translation>
     </message>
     <message>
         <source>%1 files: open one recording, or the left and the right file of one walk</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Dateien: eine Aufzeichnung öffnen, oder die linke und die rechte Datei eines Gangs</translation>
     </message>
     <message>
         <source>Footpath - %1 + %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Footpath - %1 + %2</translation>
     </message>
 </context>
 <context>
@@ -1648,11 +1648,11 @@
     <name>footpath::OtherFootSession</name>
     <message>
         <source>%1 (the right foot): %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (der rechte Fuß): %2</translation>
     </message>
     <message>
         <source>The right foot&apos;s estimate failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Schätzung des rechten Fußes ist fehlgeschlagen: %1</translation>
     </message>
 </context>
 <context>
@@ -1771,122 +1771,122 @@
     </message>
     <message>
         <source>%1&lt;br&gt;Choices in presets: %2&lt;br&gt;Default: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&lt;br&gt;Auswahl in Voreinstellungen: %2&lt;br&gt;Standardwert: %3</translation>
     </message>
     <message>
         <source>%1&lt;br&gt;Range: %2 to %3 %4&lt;br&gt;Default: %5 %4&lt;br&gt;Up/Down in the value field: one slider step; Page Up/Down: ten</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&lt;br&gt;Bereich: %2 bis %3 %4&lt;br&gt;Standardwert: %5 %4&lt;br&gt;Auf/Ab im Wertefeld: ein Schieberegler-Schritt; Bild auf/ab: zehn</translation>
     </message>
     <message>
         <source>Not used: HDR is off (use_hdr).</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: HDR ist aus (use_hdr).</translation>
     </message>
     <message>
         <source>Not used: IPER is off (use_iper).</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: IPER ist aus (use_iper).</translation>
     </message>
     <message>
         <source>Not used: the axis is estimated from the walk (iper_axis_auto is on).</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: die Achse wird aus dem Gang geschätzt (iper_axis_auto ist ein).</translation>
     </message>
     <message>
         <source>Not used: ZUNA is off (use_zuna).</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: ZUNA ist aus (use_zuna).</translation>
     </message>
     <message>
         <source>Not used: the barometer is off (use_baro).</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: das Barometer ist aus (use_baro).</translation>
     </message>
     <message>
         <source>Not used: the barometric formula is chosen, not the linear constant.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: gewählt ist die barometrische Höhenformel, nicht die lineare Konstante.</translation>
     </message>
     <message>
         <source>Not used: the magnetometer heading update is off (use_mag_heading).</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht verwendet: das Magnetometer-Kursupdate ist aus (use_mag_heading).</translation>
     </message>
 </context>
 <context>
     <name>footpath::PlotInteraction</name>
     <message>
         <source>t = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s</translation>
     </message>
     <message>
         <source>   Δt = %1 s from the marker</source>
-        <translation type="unfinished"></translation>
+        <translation>   Δt = %1 s von der Markierung</translation>
     </message>
     <message>
         <source> (Δ %1)</source>
-        <translation type="unfinished"></translation>
+        <translation> (Δ %1)</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished">Zeit (s)</translation>
+        <translation>Zeit (s)</translation>
     </message>
     <message>
         <source>Could not write %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konnte nicht geschrieben werden.</translation>
     </message>
     <message>
         <source>Reset view</source>
-        <translation type="unfinished">Ansicht zurücksetzen</translation>
+        <translation>Ansicht zurücksetzen</translation>
     </message>
     <message>
         <source>Clear measurement marker</source>
-        <translation type="unfinished"></translation>
+        <translation>Messmarkierung entfernen</translation>
     </message>
     <message>
         <source>Shift+click sets the marker; the readout then shows the differences to it</source>
-        <translation type="unfinished"></translation>
+        <translation>Umschalt+Klick setzt die Markierung; die Anzeige zeigt dann die Differenzen zu ihr</translation>
     </message>
     <message>
         <source>Export as PNG…</source>
-        <translation type="unfinished"></translation>
+        <translation>Als PNG exportieren…</translation>
     </message>
     <message>
         <source>Export plot as PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramm als PNG exportieren</translation>
     </message>
     <message>
         <source>PNG images (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
         <source>Export as SVG…</source>
-        <translation type="unfinished"></translation>
+        <translation>Als SVG exportieren…</translation>
     </message>
     <message>
         <source>Export plot as SVG</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramm als SVG exportieren</translation>
     </message>
     <message>
         <source>SVG images (*.svg)</source>
-        <translation type="unfinished"></translation>
+        <translation>SVG-Bilder (*.svg)</translation>
     </message>
     <message>
         <source>Export as PDF (vector)…</source>
-        <translation type="unfinished"></translation>
+        <translation>Als PDF exportieren (Vektor)…</translation>
     </message>
     <message>
         <source>Export plot as PDF</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagramm als PDF exportieren</translation>
     </message>
     <message>
         <source>PDF documents (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>PDF-Dokumente (*.pdf)</translation>
     </message>
     <message>
         <source>Export visible data as CSV…</source>
-        <translation type="unfinished"></translation>
+        <translation>Sichtbare Daten als CSV exportieren…</translation>
     </message>
     <message>
         <source>Export visible data as CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Sichtbare Daten als CSV exportieren</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV-Dateien (*.csv)</translation>
     </message>
 </context>
 <context>
@@ -1995,61 +1995,61 @@
     <name>footpath::RunHistory</name>
     <message>
         <source>First run</source>
-        <translation type="unfinished"></translation>
+        <translation>Erster Lauf</translation>
     </message>
     <message>
         <source>on</source>
-        <translation type="unfinished">ein</translation>
+        <translation>ein</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished">aus</translation>
+        <translation>aus</translation>
     </message>
     <message numerus="yes">
         <source>%1; %2 and %n more</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1; %2 und %n weiterer</numerusform>
+            <numerusform>%1; %2 und %n weitere</numerusform>
         </translation>
     </message>
     <message>
         <source>No change</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Änderung</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished">Rechnen</translation>
+        <translation>Lauf</translation>
     </message>
     <message>
         <source>Change</source>
-        <translation type="unfinished"></translation>
+        <translation>Änderung</translation>
     </message>
     <message>
         <source>Path (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>Weg (m)</translation>
     </message>
     <message>
         <source>End to start (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ende bis Start (m)</translation>
     </message>
     <message>
         <source>ARMSE 2D (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>ARMSE 2D (m)</translation>
     </message>
     <message>
         <source>Steps</source>
-        <translation type="unfinished">Schritte</translation>
+        <translation>Schritte</translation>
     </message>
 </context>
 <context>
     <name>footpath::RunHistoryPanel</name>
     <message>
         <source>Go back to this run</source>
-        <translation type="unfinished"></translation>
+        <translation>Zu diesem Lauf zurückkehren</translation>
     </message>
     <message>
         <source>The last %1 estimates of this recording (bold: the one shown). Double-click one to go back to its parameters; Undo goes back too.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die letzten %1 Schätzungen dieser Aufzeichnung (fett: die angezeigte). Doppelklick auf eine kehrt zu ihren Parametern zurück; Rückgängig geht ebenfalls zurück.</translation>
     </message>
 </context>
 <context>
@@ -2138,11 +2138,11 @@
     </message>
     <message>
         <source>Heel strike</source>
-        <translation type="unfinished"></translation>
+        <translation>Fersenaufsatz</translation>
     </message>
     <message>
         <source>Toe off</source>
-        <translation type="unfinished"></translation>
+        <translation>Zehenablösung</translation>
     </message>
 </context>
 <context>
@@ -2277,36 +2277,37 @@ Statistik</translation>
     </message>
     <message>
         <source>stance</source>
-        <translation type="unfinished"></translation>
+        <translation>Standphase</translation>
     </message>
     <message>
         <source>swing</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwungphase</translation>
     </message>
     <message>
         <source>1 (set)</source>
-        <translation type="unfinished"></translation>
+        <translation>1 (gesetzt)</translation>
     </message>
     <message>
         <source>0</source>
-        <translation type="unfinished"></translation>
+        <translation>0</translation>
     </message>
     <message>
         <source>Reference
 stance</source>
-        <translation type="unfinished"></translation>
+        <translation>Referenz-
+Standphase</translation>
     </message>
     <message>
         <source>Reference stance</source>
-        <translation type="unfinished"></translation>
+        <translation>Referenz-Standphase</translation>
     </message>
     <message>
         <source>from the recording&apos;s reference stance column (zero velocity by motion capture)</source>
-        <translation type="unfinished"></translation>
+        <translation>aus der Referenz-Standphasenspalte der Aufzeichnung (Nullgeschwindigkeit per Motion Capture)</translation>
     </message>
     <message>
         <source>between the hand-labelled gait events (toe-off, heel-strike)</source>
-        <translation type="unfinished"></translation>
+        <translation>zwischen den von Hand markierten Gangereignissen (Zehenablösung, Fersenaufsatz)</translation>
     </message>
 </context>
 <context>
@@ -2314,75 +2315,80 @@ stance</source>
     <message>
         <source>Attitude
 (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lage
+(°)</translation>
     </message>
     <message>
         <source>roll</source>
-        <translation type="unfinished"></translation>
+        <translation>Rollen</translation>
     </message>
     <message>
         <source>pitch</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicken</translation>
     </message>
     <message>
         <source>yaw</source>
-        <translation type="unfinished"></translation>
+        <translation>Gieren</translation>
     </message>
     <message>
         <source>Velocity
 (m/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit
+(m/s)</translation>
     </message>
     <message>
         <source>x</source>
-        <translation type="unfinished">x</translation>
+        <translation>x</translation>
     </message>
     <message>
         <source>y</source>
-        <translation type="unfinished">y</translation>
+        <translation>y</translation>
     </message>
     <message>
         <source>z</source>
-        <translation type="unfinished">z</translation>
+        <translation>z</translation>
     </message>
     <message>
         <source>Height
 (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe
+(m)</translation>
     </message>
     <message>
         <source>height</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe</translation>
     </message>
     <message>
         <source>Gyro bias
 (rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gyro-Bias
+(rad/s)</translation>
     </message>
     <message>
         <source>Acc. bias
 (m/s²)</source>
-        <translation type="unfinished"></translation>
+        <translation>Beschl.-Bias
+(m/s²)</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished">Zeit (s)</translation>
+        <translation>Zeit (s)</translation>
     </message>
     <message>
         <source>±1σ</source>
-        <translation type="unfinished"></translation>
+        <translation>±1σ</translation>
     </message>
     <message>
         <source>σ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>σ %1</translation>
     </message>
     <message>
         <source>Not estimated (constant)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht geschätzt (konstant)</translation>
     </message>
     <message>
         <source>No ±1σ band: this estimator keeps no covariance</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein ±1σ-Band: dieser Schätzer führt keine Kovarianz</translation>
     </message>
 </context>
 <context>
@@ -2612,151 +2618,151 @@ stance</source>
     </message>
     <message>
         <source>Heel strike (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fersenaufsatz (s)</translation>
     </message>
     <message>
         <source>Toe off (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zehenablösung (s)</translation>
     </message>
     <message>
         <source>Gait stance (%)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gang-Standphase (%)</translation>
     </message>
     <message>
         <source>Clearance (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fußfreiheit (m)</translation>
     </message>
     <message>
         <source>The gait stride whose stance holds this step: when the foot landed</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Gang-Doppelschritt, dessen Standphase diesen Schritt enthält: wann der Fuß aufsetzte</translation>
     </message>
     <message>
         <source>When the foot left the ground (the end of the gait lab&apos;s stance)</source>
-        <translation type="unfinished"></translation>
+        <translation>Wann der Fuß den Boden verließ (das Ende der Standphase im Ganglabor-Sinn)</translation>
     </message>
     <message>
         <source>Heel strike to toe off, % of the stride time</source>
-        <translation type="unfinished"></translation>
+        <translation>Fersenaufsatz bis Zehenablösung, % der Doppelschrittdauer</translation>
     </message>
     <message>
         <source>Highest point of the swing after this stance above it</source>
-        <translation type="unfinished"></translation>
+        <translation>Höchster Punkt der Schwungphase nach dieser Standphase, über ihr</translation>
     </message>
     <message>
         <source>Gait</source>
-        <translation type="unfinished"></translation>
+        <translation>Gang</translation>
     </message>
     <message>
         <source>Gait (heel strike to toe off)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gang (Fersenaufsatz bis Zehenablösung)</translation>
     </message>
     <message>
         <source>Strides</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschritte</translation>
     </message>
     <message>
         <source>Stride time</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschrittdauer</translation>
     </message>
     <message>
         <source>Stance / swing</source>
-        <translation type="unfinished"></translation>
+        <translation>Standphase / Schwungphase</translation>
     </message>
     <message>
         <source>Foot clearance</source>
-        <translation type="unfinished"></translation>
+        <translation>Fußfreiheit</translation>
     </message>
     <message>
         <source>From the gait events (heel strike, toe off) of this foot: means over the strides that neither turn nor pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus den Gangereignissen (Fersenaufsatz, Zehenablösung) dieses Fußes: Mittelwerte über die Doppelschritte, die weder wenden noch pausieren</translation>
     </message>
     <message>
         <source>Both feet</source>
-        <translation type="unfinished"></translation>
+        <translation>Beide Füße</translation>
     </message>
     <message>
         <source>Double support</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelstandphase</translation>
     </message>
     <message>
         <source>Stance left / right</source>
-        <translation type="unfinished"></translation>
+        <translation>Standphase links / rechts</translation>
     </message>
     <message>
         <source>Symmetry: stride time</source>
-        <translation type="unfinished"></translation>
+        <translation>Symmetrie: Doppelschrittdauer</translation>
     </message>
     <message>
         <source>Symmetry: stride length</source>
-        <translation type="unfinished"></translation>
+        <translation>Symmetrie: Doppelschrittlänge</translation>
     </message>
     <message>
         <source>Symmetry: stance</source>
-        <translation type="unfinished"></translation>
+        <translation>Symmetrie: Standphase</translation>
     </message>
     <message>
         <source>Symmetry: swing</source>
-        <translation type="unfinished"></translation>
+        <translation>Symmetrie: Schwungphase</translation>
     </message>
     <message>
         <source>Double support: the share of the gait cycle both feet are on the ground. Symmetry index: 100 (left - right) / mean, 0 symmetric, positive: the left larger.</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelstandphase: der Anteil des Gangzyklus, in dem beide Füße am Boden sind. Symmetrieindex: 100 (links - rechts) / Mittelwert, 0 symmetrisch, positiv: links größer.</translation>
     </message>
     <message>
         <source>&lt;b&gt;Live session&lt;/b&gt;: the figures of the estimate so far. The recorded walk&apos;s return when its views are shown again.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;Live-Sitzung&lt;/b&gt;: die Kennzahlen der bisherigen Schätzung. Die des aufgezeichneten Gangs kehren zurück, wenn seine Ansichten wieder gezeigt werden.</translation>
     </message>
     <message>
         <source>Last change</source>
-        <translation type="unfinished"></translation>
+        <translation>Letzte Änderung</translation>
     </message>
     <message>
         <source>The figures before and after the last parameter change (the grey ghost path). Green: better, red: worse. The History lists every run.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kennzahlen vor und nach der letzten Parameteränderung (der graue Geisterweg). Grün: besser, rot: schlechter. Der Verlauf listet jeden Lauf.</translation>
     </message>
     <message>
         <source>%1 → %2 m</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 → %2 m</translation>
     </message>
     <message>
         <source>%1 → %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 → %2</translation>
     </message>
     <message>
         <source>%1 (%2 turning)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2 wendend)</translation>
     </message>
     <message>
         <source>%1 steps/min</source>
-        <translation type="unfinished">%1 Schritte/min</translation>
+        <translation>%1 Schritte/min</translation>
     </message>
     <message>
         <source>%1 % / %2 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 % / %2 %</translation>
     </message>
     <message>
         <source>%1 % of the gait cycle (%2 strides)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 % des Gangzyklus (%2 Doppelschritte)</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %</translation>
     </message>
     <message>
         <source>Gait stance per stride (heel strike to toe off)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gang-Standphase je Doppelschritt (Fersenaufsatz bis Zehenablösung)</translation>
     </message>
     <message>
         <source>Stance (% of the stride)</source>
-        <translation type="unfinished"></translation>
+        <translation>Standphase (% des Doppelschritts)</translation>
     </message>
     <message>
         <source>Stride</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschritt</translation>
     </message>
     <message>
         <source>Foot clearance per stride</source>
-        <translation type="unfinished"></translation>
+        <translation>Fußfreiheit je Doppelschritt</translation>
     </message>
 </context>
 <context>
@@ -2803,16 +2809,17 @@ stance</source>
     </message>
     <message>
         <source>x = %1 m   y = %2 m   t = %3 s</source>
-        <translation type="unfinished"></translation>
+        <translation>x = %1 m   y = %2 m   t = %3 s</translation>
     </message>
     <message>
         <source>
 from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
-        <translation type="unfinished"></translation>
+        <translation>
+von der Markierung: Δt = %1 s   Δx = %2 m   Δy = %3 m   Abstand %4 m</translation>
     </message>
     <message>
         <source>Before the last change</source>
-        <translation type="unfinished"></translation>
+        <translation>Vor der letzten Änderung</translation>
     </message>
 </context>
 <context>
@@ -2891,459 +2898,459 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
     </message>
     <message>
         <source>Before the last change</source>
-        <translation type="unfinished"></translation>
+        <translation>Vor der letzten Änderung</translation>
     </message>
 </context>
 <context>
     <name>footpath::TuneCriterionChoice</name>
     <message>
         <source>Minimise</source>
-        <translation type="unfinished"></translation>
+        <translation>Minimieren</translation>
     </message>
 </context>
 <context>
     <name>footpath::TuneDialog</name>
     <message>
         <source>on</source>
-        <translation type="unfinished">ein</translation>
+        <translation>ein</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished">aus</translation>
+        <translation>aus</translation>
     </message>
     <message>
         <source>End-to-start distance of a closed walk (%)</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand Ende–Start eines geschlossenen Gangs (%)</translation>
     </message>
     <message>
         <source>Error of the path length (%)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fehler der Weglänge (%)</translation>
     </message>
     <message>
         <source>Position error against the reference (ARMSE, m)</source>
-        <translation type="unfinished"></translation>
+        <translation>Positionsfehler gegenüber der Referenz (ARMSE, m)</translation>
     </message>
     <message>
         <source>%1 m</source>
-        <translation type="unfinished">%1 m</translation>
+        <translation>%1 m</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %</translation>
     </message>
     <message>
         <source>The criterion the search minimised</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Kriterium, das die Suche minimiert hat</translation>
     </message>
     <message>
         <source>Tune for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Optimieren für %1</translation>
     </message>
     <message>
         <source>What is known about the walk</source>
-        <translation type="unfinished"></translation>
+        <translation>Was über den Gang bekannt ist</translation>
     </message>
     <message>
         <source>The walk ends where it started</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Gang endet, wo er begann</translation>
     </message>
     <message>
         <source>Then the distance from its end to its start is the error to minimise</source>
-        <translation type="unfinished"></translation>
+        <translation>Dann ist der Abstand von seinem Ende zu seinem Start der zu minimierende Fehler</translation>
     </message>
     <message>
         <source> m</source>
-        <translation type="unfinished"></translation>
+        <translation> m</translation>
     </message>
     <message>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannt</translation>
     </message>
     <message>
         <source>The length of the walked path, if measured; then the error of the estimated length is the error to minimise</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Länge des gegangenen Wegs, falls gemessen; dann ist der Fehler der geschätzten Länge der zu minimierende Fehler</translation>
     </message>
     <message>
         <source>Path length:</source>
-        <translation type="unfinished"></translation>
+        <translation>Weglänge:</translation>
     </message>
     <message>
         <source>Parameter sets to try, the current one included; more finds better settings but takes longer</source>
-        <translation type="unfinished"></translation>
+        <translation>Zu probierende Parametersätze, einschließlich des aktuellen; mehr findet bessere Einstellungen, dauert aber länger</translation>
     </message>
     <message numerus="yes">
         <source>on %n core(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>auf %n Kern</numerusform>
+            <numerusform>auf %n Kernen</numerusform>
         </translation>
     </message>
     <message>
         <source>Evaluations:</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswertungen:</translation>
     </message>
     <message>
         <source>%v of %m evaluations</source>
-        <translation type="unfinished"></translation>
+        <translation>%v von %m Auswertungen</translation>
     </message>
     <message>
         <source>What changed</source>
-        <translation type="unfinished"></translation>
+        <translation>Was sich geändert hat</translation>
     </message>
     <message>
         <source>Before</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorher</translation>
     </message>
     <message>
         <source>After</source>
-        <translation type="unfinished"></translation>
+        <translation>Nachher</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished">Start</translation>
+        <translation>Start</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopp</translation>
     </message>
     <message>
         <source>Stop searching and keep the best parameters found so far</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Suche beenden und die bisher besten Parameter behalten</translation>
     </message>
     <message>
         <source>Use the tuned parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Die optimierten Parameter verwenden</translation>
     </message>
     <message>
         <source>Make them the workspace&apos;s parameters (Edit &gt; Undo brings the current ones back)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sie zu den Parametern des Arbeitsbereichs machen (Bearbeiten &gt; Rückgängig holt die aktuellen zurück)</translation>
     </message>
     <message>
         <source>Close</source>
-        <translation type="unfinished"></translation>
+        <translation>Schließen</translation>
     </message>
     <message>
         <source>no recording is open</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Aufzeichnung ist geöffnet</translation>
     </message>
     <message>
         <source>needs a walk that ends where it started: tick it if yours does</source>
-        <translation type="unfinished"></translation>
+        <translation>benötigt einen Gang, der endet, wo er begann: ankreuzen, wenn Ihrer das tut</translation>
     </message>
     <message>
         <source>needs the path length: enter it</source>
-        <translation type="unfinished"></translation>
+        <translation>benötigt die Weglänge: geben Sie sie ein</translation>
     </message>
     <message>
         <source>needs reference positions: this recording has none</source>
-        <translation type="unfinished"></translation>
+        <translation>benötigt Referenzpositionen: diese Aufzeichnung hat keine</translation>
     </message>
     <message>
         <source>Trying the current parameters, then a spread over the whole range...</source>
-        <translation type="unfinished"></translation>
+        <translation>Probiere die aktuellen Parameter, dann eine Streuung über den ganzen Bereich...</translation>
     </message>
     <message>
         <source>Stopping; the best parameters so far are kept...</source>
-        <translation type="unfinished"></translation>
+        <translation>Wird beendet; die bisher besten Parameter werden behalten...</translation>
     </message>
     <message>
         <source>Best so far: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bisher am besten: %1</translation>
     </message>
     <message>
         <source>Searching around the best parameters found so far...</source>
-        <translation type="unfinished"></translation>
+        <translation>Suche um die bisher besten Parameter...</translation>
     </message>
     <message>
         <source>Best: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Am besten: %1</translation>
     </message>
     <message numerus="yes">
         <source>Stopped after %n evaluation(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Angehalten nach %n Auswertung.</numerusform>
+            <numerusform>Angehalten nach %n Auswertungen.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>Done: %n evaluation(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Fertig: %n Auswertung.</numerusform>
+            <numerusform>Fertig: %n Auswertungen.</numerusform>
         </translation>
     </message>
     <message>
         <source>No better parameters were found; the current ones stay.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es wurden keine besseren Parameter gefunden; die aktuellen bleiben.</translation>
     </message>
     <message>
         <source>The path with the tuned parameters, over the current one (orange). Use them, or keep the current ones.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Weg mit den optimierten Parametern, über dem aktuellen (orange). Verwenden Sie sie oder behalten Sie die aktuellen.</translation>
     </message>
     <message>
         <source>Path length</source>
-        <translation type="unfinished">Weglänge</translation>
+        <translation>Weglänge</translation>
     </message>
     <message>
         <source>The estimated path&apos;s length, for comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Länge des geschätzten Wegs, zum Vergleich</translation>
     </message>
     <message>
         <source>End to start</source>
-        <translation type="unfinished">Ende–Start</translation>
+        <translation>Ende bis Start</translation>
     </message>
     <message>
         <source>The distance from the path&apos;s end to its start, for comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Abstand vom Ende des Wegs zu seinem Start, zum Vergleich</translation>
     </message>
     <message>
         <source>Beware: the tuned path is %1 % shorter than the current one; a smaller error may come from a path that shrank rather than from a better one.</source>
-        <translation type="unfinished"></translation>
+        <translation>Achtung: der optimierte Weg ist %1 % kürzer als der aktuelle; ein kleinerer Fehler kann von einem geschrumpften statt von einem besseren Weg kommen.</translation>
     </message>
     <message>
         <source>Beware: the tuned path is %1 % longer than the current one.</source>
-        <translation type="unfinished"></translation>
+        <translation>Achtung: der optimierte Weg ist %1 % länger als der aktuelle.</translation>
     </message>
     <message>
         <source>Current parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Aktuelle Parameter</translation>
     </message>
     <message>
         <source>Start again</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu beginnen</translation>
     </message>
     <message>
         <source>Keep the current ones</source>
-        <translation type="unfinished"></translation>
+        <translation>Die aktuellen behalten</translation>
     </message>
     <message>
         <source>Tuned parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Optimierte Parameter</translation>
     </message>
 </context>
 <context>
     <name>footpath::TuneFolderDialog</name>
     <message>
         <source>%1: no samples</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: keine Abtastwerte</translation>
     </message>
     <message>
         <source>Tune over a folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Über einen Ordner optimieren</translation>
     </message>
     <message>
         <source>Choose a folder of recordings of one sensor and one way of walking.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wählen Sie einen Ordner mit Aufzeichnungen eines Sensors und einer Gangart.</translation>
     </message>
     <message>
         <source>Choose...</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswählen...</translation>
     </message>
     <message>
         <source>Detect (headerless files: the usual columns)</source>
-        <translation type="unfinished"></translation>
+        <translation>Erkennen (Dateien ohne Kopfzeile: die üblichen Spalten)</translation>
     </message>
     <message>
         <source>How to read files that do not describe themselves</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie Dateien gelesen werden, die sich nicht selbst beschreiben</translation>
     </message>
     <message>
         <source>Every walk ends where it started</source>
-        <translation type="unfinished"></translation>
+        <translation>Jeder Gang endet, wo er begann</translation>
     </message>
     <message>
         <source>Score every recording by its end-to-start distance, also those not marked closed</source>
-        <translation type="unfinished"></translation>
+        <translation>Jede Aufzeichnung nach ihrem Abstand Ende–Start bewerten, auch die nicht als geschlossen markierten</translation>
     </message>
     <message>
         <source>Folder:</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordner:</translation>
     </message>
     <message>
         <source>Read with:</source>
-        <translation type="unfinished"></translation>
+        <translation>Lesen mit:</translation>
     </message>
     <message>
         <source>Parameter sets to try, each on every recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Zu probierende Parametersätze, jeder auf jeder Aufzeichnung</translation>
     </message>
     <message>
         <source>Evaluations:</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswertungen:</translation>
     </message>
     <message numerus="yes">
         <source>on %n core(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>auf %n Kern</numerusform>
+            <numerusform>auf %n Kernen</numerusform>
         </translation>
     </message>
     <message>
         <source>%v of %m evaluations</source>
-        <translation type="unfinished"></translation>
+        <translation>%v von %m Auswertungen</translation>
     </message>
     <message>
         <source>Recording</source>
-        <translation type="unfinished">Aufzeichnung</translation>
+        <translation>Aufzeichnung</translation>
     </message>
     <message>
         <source>Before</source>
-        <translation type="unfinished"></translation>
+        <translation>Vorher</translation>
     </message>
     <message>
         <source>After</source>
-        <translation type="unfinished"></translation>
+        <translation>Nachher</translation>
     </message>
     <message>
         <source>What changed</source>
-        <translation type="unfinished"></translation>
+        <translation>Was sich geändert hat</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished">Start</translation>
+        <translation>Start</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopp</translation>
     </message>
     <message>
         <source>Stop searching and keep the best parameters found so far</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Suche beenden und die bisher besten Parameter behalten</translation>
     </message>
     <message>
         <source>Save preset...</source>
-        <translation type="unfinished">Voreinstellung speichern...</translation>
+        <translation>Voreinstellung speichern...</translation>
     </message>
     <message>
         <source>Apply to the workspace</source>
-        <translation type="unfinished"></translation>
+        <translation>Auf den Arbeitsbereich anwenden</translation>
     </message>
     <message>
         <source>Make them the workspace&apos;s parameters (Edit &gt; Undo brings the current ones back)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sie zu den Parametern des Arbeitsbereichs machen (Bearbeiten &gt; Rückgängig holt die aktuellen zurück)</translation>
     </message>
     <message>
         <source>Close</source>
-        <translation type="unfinished"></translation>
+        <translation>Schließen</translation>
     </message>
     <message>
         <source>Folder of recordings</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordner mit Aufzeichnungen</translation>
     </message>
     <message>
         <source>Reading the recordings in %1...</source>
-        <translation type="unfinished"></translation>
+        <translation>Lese die Aufzeichnungen in %1...</translation>
     </message>
     <message>
         <source>No recording could be read in this folder.</source>
-        <translation type="unfinished"></translation>
+        <translation>In diesem Ordner konnte keine Aufzeichnung gelesen werden.</translation>
     </message>
     <message numerus="yes">
         <source>%n recording(s) read. Choose what to minimise and start.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Aufzeichnung gelesen. Wählen Sie, was minimiert werden soll, und starten Sie.</numerusform>
+            <numerusform>%n Aufzeichnungen gelesen. Wählen Sie, was minimiert werden soll, und starten Sie.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>Not read (%n file(s)):</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Nicht gelesen (%n Datei):</numerusform>
+            <numerusform>Nicht gelesen (%n Dateien):</numerusform>
         </translation>
     </message>
     <message>
         <source>no recordings read yet</source>
-        <translation type="unfinished"></translation>
+        <translation>noch keine Aufzeichnungen gelesen</translation>
     </message>
     <message>
         <source>no walk is marked closed: tick it if they all end where they started</source>
-        <translation type="unfinished"></translation>
+        <translation>kein Gang ist als geschlossen markiert: ankreuzen, wenn alle enden, wo sie begannen</translation>
     </message>
     <message>
         <source>no recording has a known length (e.g. walk_72m.txt, or a sidecar)</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Aufzeichnung hat eine bekannte Länge (z. B. walk_72m.txt, oder eine Begleitdatei)</translation>
     </message>
     <message>
         <source>no recording has reference positions</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Aufzeichnung hat Referenzpositionen</translation>
     </message>
     <message>
         <source>None of the recordings has what this criterion needs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine der Aufzeichnungen hat, was dieses Kriterium benötigt.</translation>
     </message>
     <message numerus="yes">
         <source>Tuning on %n recording(s): the current parameters, then a spread over the whole range...</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Optimiere auf %n Aufzeichnung: die aktuellen Parameter, dann eine Streuung über den ganzen Bereich...</numerusform>
+            <numerusform>Optimiere auf %n Aufzeichnungen: die aktuellen Parameter, dann eine Streuung über den ganzen Bereich...</numerusform>
         </translation>
     </message>
     <message>
         <source>Stopping; the best parameters so far are kept...</source>
-        <translation type="unfinished"></translation>
+        <translation>Wird beendet; die bisher besten Parameter werden behalten...</translation>
     </message>
     <message>
         <source>Best mean so far: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bester Mittelwert bisher: %1</translation>
     </message>
     <message>
         <source>Searching around the best parameters found so far...</source>
-        <translation type="unfinished"></translation>
+        <translation>Suche um die bisher besten Parameter...</translation>
     </message>
     <message>
         <source>Best mean: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Bester Mittelwert: %1</translation>
     </message>
     <message numerus="yes">
         <source>Stopped after %n evaluation(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Angehalten nach %n Auswertung.</numerusform>
+            <numerusform>Angehalten nach %n Auswertungen.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>Done: %n evaluation(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Fertig: %n Auswertung.</numerusform>
+            <numerusform>Fertig: %n Auswertungen.</numerusform>
         </translation>
     </message>
     <message>
         <source>No better parameters were found; the current ones stay.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es wurden keine besseren Parameter gefunden; die aktuellen bleiben.</translation>
     </message>
     <message>
         <source>Save them as a preset, or apply them to the workspace.</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern Sie sie als Voreinstellung oder wenden Sie sie auf den Arbeitsbereich an.</translation>
     </message>
     <message>
         <source>Not scored: the recording lacks what the criterion needs</source>
-        <translation type="unfinished"></translation>
+        <translation>Nicht bewertet: der Aufzeichnung fehlt, was das Kriterium benötigt</translation>
     </message>
     <message>
         <source>Mean</source>
-        <translation type="unfinished"></translation>
+        <translation>Mittelwert</translation>
     </message>
     <message>
         <source>Start again</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu beginnen</translation>
     </message>
     <message>
         <source>Save preset</source>
-        <translation type="unfinished">Voreinstellung speichern</translation>
+        <translation>Voreinstellung speichern</translation>
     </message>
     <message>
         <source>Presets (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Voreinstellungen (*.json)</translation>
     </message>
     <message>
         <source>Preset written to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Voreinstellung gespeichert unter %1</translation>
     </message>
     <message>
         <source>Parameters tuned over %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Parameter optimiert über %1</translation>
     </message>
 </context>
 <context>
@@ -3425,11 +3432,11 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
     </message>
     <message>
         <source>Show this view: signals, detector, states, trajectory2d or trajectory3d</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Ansicht zeigen: signals, detector, states, trajectory2d oder trajectory3d</translation>
     </message>
     <message>
         <source>Recording to open; two files (or a folder): the left and the right foot of one walk</source>
-        <translation type="unfinished"></translation>
+        <translation>Zu öffnende Aufzeichnung; zwei Dateien (oder ein Ordner): der linke und der rechte Fuß eines Gangs</translation>
     </message>
 </context>
 </TS>

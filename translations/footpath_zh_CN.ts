@@ -325,169 +325,169 @@
     </message>
     <message>
         <source>failed: %1</source>
-        <translation type="unfinished">失败：%1</translation>
+        <translation>失败：%1</translation>
     </message>
     <message>
         <source>cancelled</source>
-        <translation type="unfinished">已取消</translation>
+        <translation>已取消</translation>
     </message>
     <message>
         <source>no estimate</source>
-        <translation type="unfinished">无估计结果</translation>
+        <translation>无估计结果</translation>
     </message>
     <message>
         <source>End to start
 (m)</source>
-        <translation type="unfinished">终点到起点
+        <translation>终点到起点
 (m)</translation>
     </message>
     <message>
         <source>End to start
 (%)</source>
-        <translation type="unfinished">终点到起点
+        <translation>终点到起点
 (%)</translation>
     </message>
     <message>
         <source>Path length
 (m)</source>
-        <translation type="unfinished">路径长度
+        <translation>路径长度
 (m)</translation>
     </message>
     <message>
         <source>Height change
 (m)</source>
-        <translation type="unfinished">高度变化
+        <translation>高度变化
 (m)</translation>
     </message>
     <message>
         <source>ARMSE 2D
 (m)</source>
-        <translation type="unfinished">ARMSE 2D
+        <translation>ARMSE 2D
 (m)</translation>
     </message>
     <message>
         <source>Stance F1</source>
-        <translation type="unfinished">支撑相 F1</translation>
+        <translation>支撑相 F1</translation>
     </message>
     <message>
         <source>Warnings</source>
-        <translation type="unfinished">警告</translation>
+        <translation>警告</translation>
     </message>
     <message>
         <source>Strides (turning)</source>
-        <translation type="unfinished"></translation>
+        <translation>跨步（转弯）</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2）</translation>
     </message>
     <message>
         <source>Stride time</source>
-        <translation type="unfinished"></translation>
+        <translation>跨步时长</translation>
     </message>
     <message>
         <source>Stride length</source>
-        <translation type="unfinished">步幅</translation>
+        <translation>步幅</translation>
     </message>
     <message>
         <source>Cadence</source>
-        <translation type="unfinished">步频</translation>
+        <translation>步频</translation>
     </message>
     <message>
         <source>Stance / swing</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相 / 摆动相</translation>
     </message>
     <message>
         <source>%1 % / %2 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 % / %2 %</translation>
     </message>
     <message>
         <source>Foot clearance</source>
-        <translation type="unfinished"></translation>
+        <translation>足部离地高度</translation>
     </message>
     <message>
         <source>Double support (both feet on the ground)</source>
-        <translation type="unfinished"></translation>
+        <translation>双支撑（双足着地）</translation>
     </message>
     <message>
         <source>%1 % of the gait cycle (initial %2 %, terminal %3 %), %4 strides</source>
-        <translation type="unfinished"></translation>
+        <translation>步态周期的 %1 %（初始 %2 %，末期 %3 %），%4 个跨步</translation>
     </message>
     <message>
         <source>Stance left / right</source>
-        <translation type="unfinished"></translation>
+        <translation>左 / 右支撑相</translation>
     </message>
     <message>
         <source>Symmetry index: stride time</source>
-        <translation type="unfinished"></translation>
+        <translation>对称指数：跨步时长</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %</translation>
     </message>
     <message>
         <source>Symmetry index: stride length</source>
-        <translation type="unfinished"></translation>
+        <translation>对称指数：步幅</translation>
     </message>
     <message>
         <source>Symmetry index: stance</source>
-        <translation type="unfinished"></translation>
+        <translation>对称指数：支撑相</translation>
     </message>
     <message>
         <source>Symmetry index: swing</source>
-        <translation type="unfinished"></translation>
+        <translation>对称指数：摆动相</translation>
     </message>
     <message>
         <source>Gait (heel strike to toe off)</source>
-        <translation type="unfinished"></translation>
+        <translation>步态（足跟着地至足尖离地）</translation>
     </message>
     <message>
         <source>From the gait events of %1: means over the strides that neither turn (more than 20 degrees) nor pause.</source>
-        <translation type="unfinished"></translation>
+        <translation>由%1的步态事件得出：对既不转弯（超过 20 度）也不停顿的跨步取平均。</translation>
     </message>
     <message>
         <source>the left foot</source>
-        <translation type="unfinished"></translation>
+        <translation>左脚</translation>
     </message>
     <message>
         <source>this foot</source>
-        <translation type="unfinished"></translation>
+        <translation>此脚</translation>
     </message>
     <message>
         <source>Both feet</source>
-        <translation type="unfinished"></translation>
+        <translation>双脚</translation>
     </message>
     <message>
         <source>The left and the right foot&apos;s files on one clock (their own time stamps). Symmetry index: 100 (left - right) / mean, 0 symmetric, positive where the left value is larger.</source>
-        <translation type="unfinished"></translation>
+        <translation>左脚和右脚的文件使用同一时钟（各自的时间戳）。对称指数：100 (左 - 右) / 平均值，0 表示对称，左侧数值较大时为正。</translation>
     </message>
     <message>
         <source>Note: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>注意：%1</translation>
     </message>
     <message>
         <source>Figure 9. Gait stance (heel strike to toe off, left) and foot clearance (right) per stride.</source>
-        <translation type="unfinished"></translation>
+        <translation>图 9. 每个跨步的步态支撑相（足跟着地至足尖离地，左）和足部离地高度（右）。</translation>
     </message>
     <message>
         <source>stride</source>
-        <translation type="unfinished"></translation>
+        <translation>跨步</translation>
     </message>
     <message>
         <source>stance (% of the stride)</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相（占跨步的 %）</translation>
     </message>
     <message>
         <source>clearance (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>离地高度 (m)</translation>
     </message>
     <message>
         <source>Figure 3. The path in 3D (reference dashed when present).</source>
-        <translation type="unfinished"></translation>
+        <translation>图 3. 三维路径（如有参考轨迹，以虚线表示）。</translation>
     </message>
     <message>
         <source>Parameters (* and bold: differs from the default)</source>
-        <translation type="unfinished"></translation>
+        <translation>参数（* 和粗体：与默认值不同）</translation>
     </message>
 </context>
 <context>
@@ -578,119 +578,119 @@
     <name>footpath::HelpDialog</name>
     <message>
         <source>Footpath help</source>
-        <translation type="unfinished"></translation>
+        <translation>Footpath 帮助</translation>
     </message>
     <message>
         <source>User guide</source>
-        <translation type="unfinished"></translation>
+        <translation>用户指南</translation>
     </message>
     <message>
         <source>Keyboard shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>键盘快捷键</translation>
     </message>
     <message>
         <source>Click</source>
-        <translation type="unfinished"></translation>
+        <translation>单击</translation>
     </message>
     <message>
         <source>Plots and 2D path: move the time cursor there</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线图和 2D 路径：将时间游标移到该处</translation>
     </message>
     <message>
         <source>Wheel</source>
-        <translation type="unfinished"></translation>
+        <translation>滚轮</translation>
     </message>
     <message>
         <source>Plots: zoom the time axis; 3D: zoom about the pointer</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线图：缩放时间轴；3D：围绕指针缩放</translation>
     </message>
     <message>
         <source>Drag</source>
-        <translation type="unfinished"></translation>
+        <translation>拖动</translation>
     </message>
     <message>
         <source>Plots and 2D path: pan; 3D: orbit (right or middle button: pan)</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线图和 2D 路径：平移；3D：旋转（右键或中键：平移）</translation>
     </message>
     <message>
         <source>Ctrl+Wheel</source>
-        <translation type="unfinished"></translation>
+        <translation>Ctrl+滚轮</translation>
     </message>
     <message>
         <source>Plots: zoom the value axis of the row under the pointer</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线图：缩放指针下方那一行的数值轴</translation>
     </message>
     <message>
         <source>Wheel or drag on a value axis</source>
-        <translation type="unfinished"></translation>
+        <translation>在数值轴上滚动滚轮或拖动</translation>
     </message>
     <message>
         <source>Plots: zoom or pan that row&apos;s values</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线图：缩放或平移该行的数值</translation>
     </message>
     <message>
         <source>Pointer over a plot</source>
-        <translation type="unfinished"></translation>
+        <translation>指针悬停在曲线图上</translation>
     </message>
     <message>
         <source>Plots and 2D path: read the time and the values there</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线图和 2D 路径：读取该处的时间和数值</translation>
     </message>
     <message>
         <source>Shift+Click</source>
-        <translation type="unfinished"></translation>
+        <translation>Shift+单击</translation>
     </message>
     <message>
         <source>Plots and 2D path: set a marker; the readout then gives Δt and Δy from it</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线图和 2D 路径：设置标记；读数随后给出相对它的 Δt 和 Δy</translation>
     </message>
     <message>
         <source>Right-click</source>
-        <translation type="unfinished"></translation>
+        <translation>右键单击</translation>
     </message>
     <message>
         <source>Plots: reset the view, export as PNG, SVG or PDF, or the visible data as CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线图：重置视图，导出为 PNG、SVG 或 PDF，或将可见数据导出为 CSV</translation>
     </message>
     <message>
         <source>Double-click</source>
-        <translation type="unfinished"></translation>
+        <translation>双击</translation>
     </message>
     <message>
         <source>Plots and paths: show everything again</source>
-        <translation type="unfinished"></translation>
+        <translation>曲线图和路径：重新显示全部</translation>
     </message>
     <message>
         <source>Up / Down</source>
-        <translation type="unfinished"></translation>
+        <translation>上 / 下</translation>
     </message>
     <message>
         <source>Parameter value field: one slider step</source>
-        <translation type="unfinished"></translation>
+        <translation>参数数值框：滑块移动一步</translation>
     </message>
     <message>
         <source>Page Up / Page Down</source>
-        <translation type="unfinished"></translation>
+        <translation>Page Up / Page Down</translation>
     </message>
     <message>
         <source>Parameter value field: ten slider steps</source>
-        <translation type="unfinished"></translation>
+        <translation>参数数值框：滑块移动十步</translation>
     </message>
     <message>
         <source>Step table: the next step, with the time cursor</source>
-        <translation type="unfinished"></translation>
+        <translation>步态表：下一步，时间游标随之移动</translation>
     </message>
     <message>
         <source>Keys or mouse</source>
-        <translation type="unfinished"></translation>
+        <translation>按键或鼠标</translation>
     </message>
     <message>
         <source>Does</source>
-        <translation type="unfinished"></translation>
+        <translation>作用</translation>
     </message>
     <message>
         <source>&lt;h2&gt;Footpath in five minutes&lt;/h2&gt;&lt;p&gt;Footpath turns the recording of an inertial sensor on a shoe into the path walked: it finds the moments the foot rests on the ground (stance), integrates the motion in between, and corrects the drift with zero-velocity updates in a Kalman filter.&lt;/p&gt;&lt;h3&gt;Opening a recording&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;File &amp;gt; Open recording&lt;/b&gt;, the Recorded input panel, or drag a file onto the window. Xsens text exports, MT binary logs (.mtb), PyShoe CSV files and plain CSV/text with one sample per row are read.&lt;/li&gt;&lt;li&gt;A file that does not name its columns opens the import dialog: say which column holds what and in which unit; the dialog shows the first rows as they will be read.&lt;/li&gt;&lt;li&gt;The recording should start with about a second of standing still: the sensor&apos;s attitude is found from it.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;What the views show&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;Trajectory 2D / 3D&lt;/b&gt;: the path from above and in space. Orange dots are the stances, the green square is the start and the red cross the end, the yellow dot the time cursor; a dashed line is the reference when the file has one. After a parameter change the path before it stays as a faint grey ghost until the next change.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Signals&lt;/b&gt;: accelerometer, gyroscope and the other channels over time. The coloured lanes under them mark the stance phases (the foot at rest), plausibility warnings (red spans: a stride too long, a stance missed) and, with a barometer, the motion class of each step (level, stairs, elevator).&lt;/li&gt;&lt;li&gt;&lt;b&gt;Stance detector&lt;/b&gt;: the statistic the detector thresholds and the threshold itself; where the curve is below the threshold the foot is taken to be at rest. A &lt;i&gt;Reference stance&lt;/i&gt; lane shows the stances the file&apos;s own labels give (gait events, motion capture), to compare with.&lt;/li&gt;&lt;li&gt;&lt;b&gt;States&lt;/b&gt;: the filter&apos;s attitude, velocity, height and sensor biases over time, with a band of one standard deviation where the filter estimates it.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Summary&lt;/b&gt;: the walk&apos;s figures (path length, strides, cadence, end-to-start distance), the figures against the reference when there is one, and a table of the steps. Selecting a step moves the time cursor to it in every view.&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;One time cursor links every view: click a plot or the path and all views show that moment. Hold the pointer over a plot to read the values; Shift+click sets a marker to measure time and value differences from; right-click a plot to export it. &lt;b&gt;Help &amp;gt; Keyboard shortcuts&lt;/b&gt; lists every key.&lt;/p&gt;&lt;h3&gt;Tuning&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;The &lt;b&gt;Parameters&lt;/b&gt; panel lists every setting with its unit; the tool tip names the identifier used in presets and on the command line. A setting that has no effect with the others is greyed out, and its tool tip says why.&lt;/li&gt;&lt;li&gt;Every change re-estimates at once. The summary then shows the key figures before and after the change, green where the change helped and red where it hurt, and the &lt;b&gt;History&lt;/b&gt; lists the last runs: double-click one to go back to it. Undo (Ctrl+Z) goes back one change.&lt;/li&gt;&lt;li&gt;Presets save and load the whole set; &lt;b&gt;Analysis &amp;gt; Compare methods&lt;/b&gt; runs several method sets on the same recording side by side.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;Live input&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;In the &lt;b&gt;Live input&lt;/b&gt; panel choose the sensor&apos;s serial port (or the emulator) and connect: the live path and signals appear in their own tabs while you walk.&lt;/li&gt;&lt;li&gt;Record writes the samples to a file (the name offered is the device&apos;s and the time&apos;s, in the folder of the last recording); when recording stops, the file opens for the full analysis. A session you did not record can still be saved after Disconnect.&lt;/li&gt;&lt;li&gt;A recording that starts while walking is still read: the path then starts at the first stance, and a warning says so.&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;Exporting&lt;/h3&gt;&lt;p&gt;&lt;b&gt;File &amp;gt; Export report&lt;/b&gt; writes a PDF with the figures, plots and parameters; &lt;b&gt;Export CSV&lt;/b&gt; writes the trajectory, steps, summary and parameters as CSV files.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h2&gt;五分钟上手 Footpath&lt;/h2&gt;&lt;p&gt;Footpath 将鞋上惯性传感器的记录转换为行走的路径：它找出足部静止在地面上的时刻（支撑相），对其间的运动进行积分，并在卡尔曼滤波器中用零速更新校正漂移。&lt;/p&gt;&lt;h3&gt;打开记录&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;文件 &amp;gt; 打开记录&lt;/b&gt;、“记录输入”面板，或将文件拖到窗口上。可读取 Xsens 文本导出、MT 二进制日志 (.mtb)、PyShoe CSV 文件，以及每行一个采样的普通 CSV/文本文件。&lt;/li&gt;&lt;li&gt;未标明列名的文件会打开导入对话框：请指定每列的内容及其单位；对话框会按读取方式显示前几行。&lt;/li&gt;&lt;li&gt;记录开始时应静止站立约一秒：传感器的姿态由此确定。&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;各视图显示的内容&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;2D / 3D 轨迹&lt;/b&gt;：俯视和空间中的路径。橙色圆点为支撑相，绿色方块为起点，红色叉号为终点，黄色圆点为时间游标；若文件含参考轨迹，则以虚线表示。参数更改后，更改前的路径会以淡灰色的残影保留，直到下一次更改。&lt;/li&gt;&lt;li&gt;&lt;b&gt;信号&lt;/b&gt;：加速度计、陀螺仪及其他通道随时间的变化。其下方的彩色条带标出支撑相（足部静止）、合理性警告（红色时段：步幅过长、漏检支撑相），以及有气压计时每一步的运动类别（平地、楼梯、电梯）。&lt;/li&gt;&lt;li&gt;&lt;b&gt;支撑相检测器&lt;/b&gt;：检测器用于阈值比较的统计量及阈值本身；曲线低于阈值处，足部被视为静止。&lt;i&gt;参考支撑相&lt;/i&gt;条带显示文件自带标注（步态事件、动作捕捉）给出的支撑相，以供比较。&lt;/li&gt;&lt;li&gt;&lt;b&gt;状态&lt;/b&gt;：滤波器估计的姿态、速度、高度和传感器零偏随时间的变化，在滤波器估计标准差之处附有一个标准差的带。&lt;/li&gt;&lt;li&gt;&lt;b&gt;摘要&lt;/b&gt;：行走的指标（路径长度、跨步、步频、终点到起点的距离）、如有参考则给出相对参考的指标，以及各步的表格。选中某一步会将所有视图中的时间游标移到该步。&lt;/li&gt;&lt;/ul&gt;&lt;p&gt;一个时间游标联动所有视图：单击曲线图或路径，所有视图都会显示该时刻。将指针悬停在曲线图上可读取数值；Shift+单击设置标记，用于测量相对它的时间差和数值差；右键单击曲线图可将其导出。&lt;b&gt;帮助 &amp;gt; 键盘快捷键&lt;/b&gt;列出所有按键。&lt;/p&gt;&lt;h3&gt;调参&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;&lt;b&gt;参数&lt;/b&gt;面板列出每个设置及其单位；工具提示给出预设和命令行中使用的标识符。与其他设置组合时不起作用的设置会显示为灰色，其工具提示会说明原因。&lt;/li&gt;&lt;li&gt;每次更改都会立即重新估计。摘要随后显示更改前后的关键指标，改善处为绿色，变差处为红色；&lt;b&gt;历史&lt;/b&gt;列出最近几次运行：双击其中一次即可回到该次。撤销 (Ctrl+Z) 回退一次更改。&lt;/li&gt;&lt;li&gt;预设可保存和加载整套参数；&lt;b&gt;分析 &amp;gt; 比较方法&lt;/b&gt;可在同一记录上并排运行多个方法组合。&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;实时输入&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;在&lt;b&gt;实时输入&lt;/b&gt;面板中选择传感器的串口（或模拟器）并连接：行走时，实时路径和信号会显示在各自的标签页中。&lt;/li&gt;&lt;li&gt;“记录”将采样写入文件（建议的文件名由设备名和时间组成，位于上次记录所在的文件夹）；记录停止后，该文件会打开以进行完整分析。未记录的会话在断开连接后仍可保存。&lt;/li&gt;&lt;li&gt;在行走中开始的记录仍可读取：此时路径从第一个支撑相开始，并会给出相应警告。&lt;/li&gt;&lt;/ul&gt;&lt;h3&gt;导出&lt;/h3&gt;&lt;p&gt;&lt;b&gt;文件 &amp;gt; 导出报告&lt;/b&gt;生成包含指标、曲线图和参数的 PDF；&lt;b&gt;导出 CSV&lt;/b&gt;将轨迹、各步、摘要和参数写入 CSV 文件。&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -781,11 +781,11 @@
     </message>
     <message>
         <source>°/s</source>
-        <translation type="unfinished"></translation>
+        <translation>°/s</translation>
     </message>
     <message>
         <source>%1 needs import settings and no one is there to give them: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 需要导入设置，但无人提供：%2</translation>
     </message>
 </context>
 <context>
@@ -964,99 +964,99 @@
     </message>
     <message>
         <source>Refresh the list of ports</source>
-        <translation type="unfinished"></translation>
+        <translation>刷新端口列表</translation>
     </message>
     <message>
         <source>Save...</source>
-        <translation type="unfinished"></translation>
+        <translation>保存...</translation>
     </message>
     <message>
         <source>Save the samples received in the last session (kept in memory) as a CSV file and open it as a recorded walk: for a session that was not recorded</source>
-        <translation type="unfinished"></translation>
+        <translation>将上次会话中接收的采样（保存在内存中）另存为 CSV 文件，并作为已记录的行走打开：适用于未记录的会话</translation>
     </message>
     <message>
         <source>Horizontal distance from the start to where the foot is now</source>
-        <translation type="unfinished"></translation>
+        <translation>从起点到足部当前位置的水平距离</translation>
     </message>
     <message>
         <source>Duration:</source>
-        <translation type="unfinished"></translation>
+        <translation>时长：</translation>
     </message>
     <message>
         <source>End to start:</source>
-        <translation type="unfinished"></translation>
+        <translation>终点到起点：</translation>
     </message>
     <message>
         <source>Warnings:</source>
-        <translation type="unfinished"></translation>
+        <translation>警告：</translation>
     </message>
     <message>
         <source>Live session: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>实时会话：%1</translation>
     </message>
     <message>
         <source>Samples saved to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>采样已保存到 %1</translation>
     </message>
     <message>
         <source>Save samples</source>
-        <translation type="unfinished"></translation>
+        <translation>保存采样</translation>
     </message>
     <message>
         <source>CSV (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV (*.csv)</translation>
     </message>
     <message>
         <source>Unsaved samples</source>
-        <translation type="unfinished"></translation>
+        <translation>未保存的采样</translation>
     </message>
     <message>
         <source>The last session&apos;s %1 samples were not recorded. Save them before connecting again?</source>
-        <translation type="unfinished"></translation>
+        <translation>上次会话的 %1 个采样尚未记录。是否在重新连接前保存？</translation>
     </message>
     <message>
         <source>Not connected: choose a port and Connect (Live input panel)</source>
-        <translation type="unfinished"></translation>
+        <translation>未连接：请选择端口并点击连接（实时输入面板）</translation>
     </message>
     <message>
         <source>Not connected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未连接：%1</translation>
     </message>
     <message>
         <source>Connecting to %1...</source>
-        <translation type="unfinished"></translation>
+        <translation>正在连接到 %1...</translation>
     </message>
     <message>
         <source>Connected: waiting for samples...</source>
-        <translation type="unfinished"></translation>
+        <translation>已连接：正在等待采样...</translation>
     </message>
     <message>
         <source>Disconnected: the session failed</source>
-        <translation type="unfinished"></translation>
+        <translation>已断开：会话失败</translation>
     </message>
     <message>
         <source>The connection failed.</source>
-        <translation type="unfinished"></translation>
+        <translation>连接失败。</translation>
     </message>
     <message>
         <source>Aligning: keep the foot still for %1 s (a walk already under way is aligned at its first stance)</source>
-        <translation type="unfinished"></translation>
+        <translation>对准中：请保持足部静止 %1 s（已在行走中的会话将在其第一个支撑相对准）</translation>
     </message>
     <message>
         <source>Estimating (%1 s behind)</source>
-        <translation type="unfinished"></translation>
+        <translation>正在估计（滞后 %1 s）</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished">无</translation>
+        <translation>无</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2）</translation>
     </message>
     <message>
         <source>Live: %1 steps, %2 m, %3 s, end to start %4 m, warnings: %5</source>
-        <translation type="unfinished"></translation>
+        <translation>实时：%1 步，%2 m，%3 s，终点到起点 %4 m，警告：%5</translation>
     </message>
 </context>
 <context>
@@ -1075,27 +1075,27 @@
     </message>
     <message>
         <source>The live session&apos;s path seen from above, as it grows</source>
-        <translation type="unfinished"></translation>
+        <translation>实时会话的俯视路径，随行走逐步延伸</translation>
     </message>
     <message>
         <source>The live session&apos;s path in three dimensions, as it grows</source>
-        <translation type="unfinished"></translation>
+        <translation>实时会话的三维路径，随行走逐步延伸</translation>
     </message>
     <message>
         <source>Live IMU</source>
-        <translation type="unfinished"></translation>
+        <translation>实时 IMU</translation>
     </message>
     <message>
         <source>Live signals: the live session&apos;s last seconds of sensor signals</source>
-        <translation type="unfinished"></translation>
+        <translation>实时信号：实时会话最近几秒的传感器信号</translation>
     </message>
     <message>
         <source>Live stance</source>
-        <translation type="unfinished"></translation>
+        <translation>实时支撑相</translation>
     </message>
     <message>
         <source>Live stance detector: the live session&apos;s detector over its last seconds</source>
-        <translation type="unfinished"></translation>
+        <translation>实时支撑相检测器：实时会话最近几秒的检测器</translation>
     </message>
 </context>
 <context>
@@ -1376,115 +1376,115 @@
     </message>
     <message>
         <source>IMU</source>
-        <translation type="unfinished"></translation>
+        <translation>IMU</translation>
     </message>
     <message>
         <source>Signals: the recorded walk&apos;s sensor signals</source>
-        <translation type="unfinished"></translation>
+        <translation>信号：已记录行走的传感器信号</translation>
     </message>
     <message>
         <source>Stance</source>
-        <translation type="unfinished">支撑相</translation>
+        <translation>支撑相</translation>
     </message>
     <message>
         <source>Stance detector: the recorded walk&apos;s statistics, thresholds, lanes</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相检测器：已记录行走的统计量、阈值和条带</translation>
     </message>
     <message>
         <source>States</source>
-        <translation type="unfinished"></translation>
+        <translation>状态</translation>
     </message>
     <message>
         <source>States: the recorded walk&apos;s attitude, velocity, biases</source>
-        <translation type="unfinished"></translation>
+        <translation>状态：已记录行走的姿态、速度和零偏</translation>
     </message>
     <message>
         <source>2D</source>
-        <translation type="unfinished"></translation>
+        <translation>2D</translation>
     </message>
     <message>
         <source>Trajectory 2D: the recorded walk&apos;s path seen from above</source>
-        <translation type="unfinished"></translation>
+        <translation>2D 轨迹：俯视的已记录行走路径</translation>
     </message>
     <message>
         <source>3D</source>
-        <translation type="unfinished"></translation>
+        <translation>3D</translation>
     </message>
     <message>
         <source>Trajectory 3D: the recorded walk&apos;s path in three dimensions</source>
-        <translation type="unfinished"></translation>
+        <translation>3D 轨迹：已记录行走的三维路径</translation>
     </message>
     <message>
         <source>History</source>
-        <translation type="unfinished"></translation>
+        <translation>历史</translation>
     </message>
     <message>
         <source>&amp;User guide</source>
-        <translation type="unfinished"></translation>
+        <translation>用户指南(&amp;U)</translation>
     </message>
     <message>
         <source>&amp;Keyboard shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>键盘快捷键(&amp;K)</translation>
     </message>
     <message>
         <source>Undo the last change</source>
-        <translation type="unfinished"></translation>
+        <translation>撤销上一次更改</translation>
     </message>
     <message>
         <source>Redo</source>
-        <translation type="unfinished">重做</translation>
+        <translation>重做</translation>
     </message>
     <message>
         <source>S&amp;tates</source>
-        <translation type="unfinished"></translation>
+        <translation>状态(&amp;T)</translation>
     </message>
     <message>
         <source>Back to run %1</source>
-        <translation type="unfinished"></translation>
+        <translation>回到第 %1 次运行</translation>
     </message>
     <message>
         <source>Left foot</source>
-        <translation type="unfinished"></translation>
+        <translation>左脚</translation>
     </message>
     <message>
         <source>&amp;Tune for this recording...</source>
-        <translation type="unfinished"></translation>
+        <translation>为此记录调参(&amp;T)...</translation>
     </message>
     <message>
         <source>Search the detector settings and the filter noise that fit this recording best</source>
-        <translation type="unfinished"></translation>
+        <translation>搜索最适合此记录的检测器设置和滤波器噪声</translation>
     </message>
     <message>
         <source>Tune over a &amp;folder...</source>
-        <translation type="unfinished"></translation>
+        <translation>对文件夹调参(&amp;F)...</translation>
     </message>
     <message>
         <source>One parameter set for many recordings of a sensor and a way of walking</source>
-        <translation type="unfinished"></translation>
+        <translation>为同一传感器和同一行走方式的多个记录找出一套参数</translation>
     </message>
     <message>
         <source>Tune for this recording</source>
-        <translation type="unfinished"></translation>
+        <translation>为此记录调参</translation>
     </message>
     <message>
         <source>Open a recording first.</source>
-        <translation type="unfinished"></translation>
+        <translation>请先打开一个记录。</translation>
     </message>
     <message>
         <source>Right foot</source>
-        <translation type="unfinished"></translation>
+        <translation>右脚</translation>
     </message>
     <message>
         <source>Open recording (two files: both feet)</source>
-        <translation type="unfinished"></translation>
+        <translation>打开记录（两个文件：双脚）</translation>
     </message>
     <message>
         <source>%1 files: open one recording, or the left and the right file of one walk</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个文件：请打开一个记录，或同一次行走的左脚和右脚文件</translation>
     </message>
     <message>
         <source>Footpath - %1 + %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Footpath - %1 + %2</translation>
     </message>
 </context>
 <context>
@@ -1646,11 +1646,11 @@
     <name>footpath::OtherFootSession</name>
     <message>
         <source>%1 (the right foot): %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（右脚）：%2</translation>
     </message>
     <message>
         <source>The right foot&apos;s estimate failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>右脚估计失败：%1</translation>
     </message>
 </context>
 <context>
@@ -1769,122 +1769,122 @@
     </message>
     <message>
         <source>%1&lt;br&gt;Choices in presets: %2&lt;br&gt;Default: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&lt;br&gt;预设中的可选值：%2&lt;br&gt;默认值：%3</translation>
     </message>
     <message>
         <source>%1&lt;br&gt;Range: %2 to %3 %4&lt;br&gt;Default: %5 %4&lt;br&gt;Up/Down in the value field: one slider step; Page Up/Down: ten</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&lt;br&gt;范围：%2 至 %3 %4&lt;br&gt;默认值：%5 %4&lt;br&gt;数值框中的上/下键：滑块移动一步；Page Up/Down：十步</translation>
     </message>
     <message>
         <source>Not used: HDR is off (use_hdr).</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：HDR 已关闭（use_hdr）。</translation>
     </message>
     <message>
         <source>Not used: IPER is off (use_iper).</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：IPER 已关闭（use_iper）。</translation>
     </message>
     <message>
         <source>Not used: the axis is estimated from the walk (iper_axis_auto is on).</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：轴由行走数据估计（iper_axis_auto 已开启）。</translation>
     </message>
     <message>
         <source>Not used: ZUNA is off (use_zuna).</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：ZUNA 已关闭（use_zuna）。</translation>
     </message>
     <message>
         <source>Not used: the barometer is off (use_baro).</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：气压计已关闭（use_baro）。</translation>
     </message>
     <message>
         <source>Not used: the barometric formula is chosen, not the linear constant.</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：当前选择的是气压公式，而非线性常数。</translation>
     </message>
     <message>
         <source>Not used: the magnetometer heading update is off (use_mag_heading).</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用：磁力计航向更新已关闭（use_mag_heading）。</translation>
     </message>
 </context>
 <context>
     <name>footpath::PlotInteraction</name>
     <message>
         <source>t = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1 s</translation>
     </message>
     <message>
         <source>   Δt = %1 s from the marker</source>
-        <translation type="unfinished"></translation>
+        <translation>   相对标记 Δt = %1 s</translation>
     </message>
     <message>
         <source> (Δ %1)</source>
-        <translation type="unfinished"></translation>
+        <translation> (Δ %1)</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished">时间 (s)</translation>
+        <translation>时间 (s)</translation>
     </message>
     <message>
         <source>Could not write %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入 %1。</translation>
     </message>
     <message>
         <source>Reset view</source>
-        <translation type="unfinished">重置视图</translation>
+        <translation>重置视图</translation>
     </message>
     <message>
         <source>Clear measurement marker</source>
-        <translation type="unfinished"></translation>
+        <translation>清除测量标记</translation>
     </message>
     <message>
         <source>Shift+click sets the marker; the readout then shows the differences to it</source>
-        <translation type="unfinished"></translation>
+        <translation>Shift+单击设置标记；读数随后显示相对它的差值</translation>
     </message>
     <message>
         <source>Export as PNG…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出为 PNG…</translation>
     </message>
     <message>
         <source>Export plot as PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>将曲线图导出为 PNG</translation>
     </message>
     <message>
         <source>PNG images (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG 图像 (*.png)</translation>
     </message>
     <message>
         <source>Export as SVG…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出为 SVG…</translation>
     </message>
     <message>
         <source>Export plot as SVG</source>
-        <translation type="unfinished"></translation>
+        <translation>将曲线图导出为 SVG</translation>
     </message>
     <message>
         <source>SVG images (*.svg)</source>
-        <translation type="unfinished"></translation>
+        <translation>SVG 图像 (*.svg)</translation>
     </message>
     <message>
         <source>Export as PDF (vector)…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出为 PDF（矢量）…</translation>
     </message>
     <message>
         <source>Export plot as PDF</source>
-        <translation type="unfinished"></translation>
+        <translation>将曲线图导出为 PDF</translation>
     </message>
     <message>
         <source>PDF documents (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>PDF 文档 (*.pdf)</translation>
     </message>
     <message>
         <source>Export visible data as CSV…</source>
-        <translation type="unfinished"></translation>
+        <translation>将可见数据导出为 CSV…</translation>
     </message>
     <message>
         <source>Export visible data as CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>将可见数据导出为 CSV</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV 文件 (*.csv)</translation>
     </message>
 </context>
 <context>
@@ -1993,60 +1993,60 @@
     <name>footpath::RunHistory</name>
     <message>
         <source>First run</source>
-        <translation type="unfinished"></translation>
+        <translation>首次运行</translation>
     </message>
     <message>
         <source>on</source>
-        <translation type="unfinished">开</translation>
+        <translation>开</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished">关</translation>
+        <translation>关</translation>
     </message>
     <message numerus="yes">
         <source>%1; %2 and %n more</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1；%2 及另外 %n 项</numerusform>
         </translation>
     </message>
     <message>
         <source>No change</source>
-        <translation type="unfinished"></translation>
+        <translation>无更改</translation>
     </message>
     <message>
         <source>Run</source>
-        <translation type="unfinished">运行</translation>
+        <translation>运行</translation>
     </message>
     <message>
         <source>Change</source>
-        <translation type="unfinished"></translation>
+        <translation>更改</translation>
     </message>
     <message>
         <source>Path (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>路径 (m)</translation>
     </message>
     <message>
         <source>End to start (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>终点到起点 (m)</translation>
     </message>
     <message>
         <source>ARMSE 2D (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>ARMSE 2D (m)</translation>
     </message>
     <message>
         <source>Steps</source>
-        <translation type="unfinished"></translation>
+        <translation>步数</translation>
     </message>
 </context>
 <context>
     <name>footpath::RunHistoryPanel</name>
     <message>
         <source>Go back to this run</source>
-        <translation type="unfinished"></translation>
+        <translation>回到此次运行</translation>
     </message>
     <message>
         <source>The last %1 estimates of this recording (bold: the one shown). Double-click one to go back to its parameters; Undo goes back too.</source>
-        <translation type="unfinished"></translation>
+        <translation>此记录最近 %1 次估计（粗体：当前显示的一次）。双击某次即可回到其参数；撤销也可回退。</translation>
     </message>
 </context>
 <context>
@@ -2135,11 +2135,11 @@
     </message>
     <message>
         <source>Heel strike</source>
-        <translation type="unfinished"></translation>
+        <translation>足跟着地</translation>
     </message>
     <message>
         <source>Toe off</source>
-        <translation type="unfinished"></translation>
+        <translation>足尖离地</translation>
     </message>
 </context>
 <context>
@@ -2274,36 +2274,37 @@ statistic</source>
     </message>
     <message>
         <source>stance</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相</translation>
     </message>
     <message>
         <source>swing</source>
-        <translation type="unfinished"></translation>
+        <translation>摆动相</translation>
     </message>
     <message>
         <source>1 (set)</source>
-        <translation type="unfinished"></translation>
+        <translation>1（置位）</translation>
     </message>
     <message>
         <source>0</source>
-        <translation type="unfinished"></translation>
+        <translation>0</translation>
     </message>
     <message>
         <source>Reference
 stance</source>
-        <translation type="unfinished"></translation>
+        <translation>参考
+支撑相</translation>
     </message>
     <message>
         <source>Reference stance</source>
-        <translation type="unfinished"></translation>
+        <translation>参考支撑相</translation>
     </message>
     <message>
         <source>from the recording&apos;s reference stance column (zero velocity by motion capture)</source>
-        <translation type="unfinished"></translation>
+        <translation>来自记录中的参考支撑相列（由动作捕捉得到的零速）</translation>
     </message>
     <message>
         <source>between the hand-labelled gait events (toe-off, heel-strike)</source>
-        <translation type="unfinished"></translation>
+        <translation>位于人工标注的步态事件（足尖离地、足跟着地）之间</translation>
     </message>
 </context>
 <context>
@@ -2311,75 +2312,80 @@ stance</source>
     <message>
         <source>Attitude
 (°)</source>
-        <translation type="unfinished"></translation>
+        <translation>姿态
+(°)</translation>
     </message>
     <message>
         <source>roll</source>
-        <translation type="unfinished"></translation>
+        <translation>横滚</translation>
     </message>
     <message>
         <source>pitch</source>
-        <translation type="unfinished"></translation>
+        <translation>俯仰</translation>
     </message>
     <message>
         <source>yaw</source>
-        <translation type="unfinished"></translation>
+        <translation>偏航</translation>
     </message>
     <message>
         <source>Velocity
 (m/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>速度
+(m/s)</translation>
     </message>
     <message>
         <source>x</source>
-        <translation type="unfinished">x</translation>
+        <translation>x</translation>
     </message>
     <message>
         <source>y</source>
-        <translation type="unfinished">y</translation>
+        <translation>y</translation>
     </message>
     <message>
         <source>z</source>
-        <translation type="unfinished">z</translation>
+        <translation>z</translation>
     </message>
     <message>
         <source>Height
 (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>高度
+(m)</translation>
     </message>
     <message>
         <source>height</source>
-        <translation type="unfinished"></translation>
+        <translation>高度</translation>
     </message>
     <message>
         <source>Gyro bias
 (rad/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>陀螺零偏
+(rad/s)</translation>
     </message>
     <message>
         <source>Acc. bias
 (m/s²)</source>
-        <translation type="unfinished"></translation>
+        <translation>加计零偏
+(m/s²)</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished">时间 (s)</translation>
+        <translation>时间 (s)</translation>
     </message>
     <message>
         <source>±1σ</source>
-        <translation type="unfinished"></translation>
+        <translation>±1σ</translation>
     </message>
     <message>
         <source>σ %1</source>
-        <translation type="unfinished"></translation>
+        <translation>σ %1</translation>
     </message>
     <message>
         <source>Not estimated (constant)</source>
-        <translation type="unfinished"></translation>
+        <translation>未估计（常数）</translation>
     </message>
     <message>
         <source>No ±1σ band: this estimator keeps no covariance</source>
-        <translation type="unfinished"></translation>
+        <translation>无 ±1σ 带：此估计器不保留协方差</translation>
     </message>
 </context>
 <context>
@@ -2608,151 +2614,151 @@ stance</source>
     </message>
     <message>
         <source>Heel strike (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>足跟着地 (s)</translation>
     </message>
     <message>
         <source>Toe off (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>足尖离地 (s)</translation>
     </message>
     <message>
         <source>Gait stance (%)</source>
-        <translation type="unfinished"></translation>
+        <translation>步态支撑相 (%)</translation>
     </message>
     <message>
         <source>Clearance (m)</source>
-        <translation type="unfinished"></translation>
+        <translation>离地高度 (m)</translation>
     </message>
     <message>
         <source>The gait stride whose stance holds this step: when the foot landed</source>
-        <translation type="unfinished"></translation>
+        <translation>其支撑相包含此步的步态跨步：足部着地的时刻</translation>
     </message>
     <message>
         <source>When the foot left the ground (the end of the gait lab&apos;s stance)</source>
-        <translation type="unfinished"></translation>
+        <translation>足部离开地面的时刻（步态实验室意义上支撑相的结束）</translation>
     </message>
     <message>
         <source>Heel strike to toe off, % of the stride time</source>
-        <translation type="unfinished"></translation>
+        <translation>足跟着地至足尖离地，占跨步时长的 %</translation>
     </message>
     <message>
         <source>Highest point of the swing after this stance above it</source>
-        <translation type="unfinished"></translation>
+        <translation>此支撑相之后摆动相的最高点，相对该支撑相的高度</translation>
     </message>
     <message>
         <source>Gait</source>
-        <translation type="unfinished"></translation>
+        <translation>步态</translation>
     </message>
     <message>
         <source>Gait (heel strike to toe off)</source>
-        <translation type="unfinished"></translation>
+        <translation>步态（足跟着地至足尖离地）</translation>
     </message>
     <message>
         <source>Strides</source>
-        <translation type="unfinished"></translation>
+        <translation>跨步</translation>
     </message>
     <message>
         <source>Stride time</source>
-        <translation type="unfinished"></translation>
+        <translation>跨步时长</translation>
     </message>
     <message>
         <source>Stance / swing</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相 / 摆动相</translation>
     </message>
     <message>
         <source>Foot clearance</source>
-        <translation type="unfinished"></translation>
+        <translation>足部离地高度</translation>
     </message>
     <message>
         <source>From the gait events (heel strike, toe off) of this foot: means over the strides that neither turn nor pause</source>
-        <translation type="unfinished"></translation>
+        <translation>由此脚的步态事件（足跟着地、足尖离地）得出：对既不转弯也不停顿的跨步取平均</translation>
     </message>
     <message>
         <source>Both feet</source>
-        <translation type="unfinished"></translation>
+        <translation>双脚</translation>
     </message>
     <message>
         <source>Double support</source>
-        <translation type="unfinished"></translation>
+        <translation>双支撑</translation>
     </message>
     <message>
         <source>Stance left / right</source>
-        <translation type="unfinished"></translation>
+        <translation>左 / 右支撑相</translation>
     </message>
     <message>
         <source>Symmetry: stride time</source>
-        <translation type="unfinished"></translation>
+        <translation>对称性：跨步时长</translation>
     </message>
     <message>
         <source>Symmetry: stride length</source>
-        <translation type="unfinished"></translation>
+        <translation>对称性：步幅</translation>
     </message>
     <message>
         <source>Symmetry: stance</source>
-        <translation type="unfinished"></translation>
+        <translation>对称性：支撑相</translation>
     </message>
     <message>
         <source>Symmetry: swing</source>
-        <translation type="unfinished"></translation>
+        <translation>对称性：摆动相</translation>
     </message>
     <message>
         <source>Double support: the share of the gait cycle both feet are on the ground. Symmetry index: 100 (left - right) / mean, 0 symmetric, positive: the left larger.</source>
-        <translation type="unfinished"></translation>
+        <translation>双支撑：双足同时着地的时间占步态周期的比例。对称指数：100 (左 - 右) / 平均值，0 表示对称，正值：左侧较大。</translation>
     </message>
     <message>
         <source>&lt;b&gt;Live session&lt;/b&gt;: the figures of the estimate so far. The recorded walk&apos;s return when its views are shown again.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;实时会话&lt;/b&gt;：目前估计结果的指标。再次显示已记录行走的视图时，其指标会恢复。</translation>
     </message>
     <message>
         <source>Last change</source>
-        <translation type="unfinished"></translation>
+        <translation>上次更改</translation>
     </message>
     <message>
         <source>The figures before and after the last parameter change (the grey ghost path). Green: better, red: worse. The History lists every run.</source>
-        <translation type="unfinished"></translation>
+        <translation>上次参数更改前后的指标（灰色残影路径）。绿色：更好，红色：更差。历史列出每次运行。</translation>
     </message>
     <message>
         <source>%1 → %2 m</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 → %2 m</translation>
     </message>
     <message>
         <source>%1 → %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 → %2</translation>
     </message>
     <message>
         <source>%1 (%2 turning)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（转弯 %2）</translation>
     </message>
     <message>
         <source>%1 steps/min</source>
-        <translation type="unfinished">%1 步/分钟</translation>
+        <translation>%1 步/分钟</translation>
     </message>
     <message>
         <source>%1 % / %2 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 % / %2 %</translation>
     </message>
     <message>
         <source>%1 % of the gait cycle (%2 strides)</source>
-        <translation type="unfinished"></translation>
+        <translation>步态周期的 %1 %（%2 个跨步）</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %</translation>
     </message>
     <message>
         <source>Gait stance per stride (heel strike to toe off)</source>
-        <translation type="unfinished"></translation>
+        <translation>每个跨步的步态支撑相（足跟着地至足尖离地）</translation>
     </message>
     <message>
         <source>Stance (% of the stride)</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相（占跨步的 %）</translation>
     </message>
     <message>
         <source>Stride</source>
-        <translation type="unfinished"></translation>
+        <translation>跨步</translation>
     </message>
     <message>
         <source>Foot clearance per stride</source>
-        <translation type="unfinished"></translation>
+        <translation>每个跨步的足部离地高度</translation>
     </message>
 </context>
 <context>
@@ -2799,16 +2805,17 @@ stance</source>
     </message>
     <message>
         <source>x = %1 m   y = %2 m   t = %3 s</source>
-        <translation type="unfinished"></translation>
+        <translation>x = %1 m   y = %2 m   t = %3 s</translation>
     </message>
     <message>
         <source>
 from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
-        <translation type="unfinished"></translation>
+        <translation>
+相对标记：Δt = %1 s   Δx = %2 m   Δy = %3 m   距离 %4 m</translation>
     </message>
     <message>
         <source>Before the last change</source>
-        <translation type="unfinished"></translation>
+        <translation>上次更改之前</translation>
     </message>
 </context>
 <context>
@@ -2887,450 +2894,450 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
     </message>
     <message>
         <source>Before the last change</source>
-        <translation type="unfinished"></translation>
+        <translation>上次更改之前</translation>
     </message>
 </context>
 <context>
     <name>footpath::TuneCriterionChoice</name>
     <message>
         <source>Minimise</source>
-        <translation type="unfinished"></translation>
+        <translation>最小化</translation>
     </message>
 </context>
 <context>
     <name>footpath::TuneDialog</name>
     <message>
         <source>on</source>
-        <translation type="unfinished">开</translation>
+        <translation>开</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished">关</translation>
+        <translation>关</translation>
     </message>
     <message>
         <source>End-to-start distance of a closed walk (%)</source>
-        <translation type="unfinished"></translation>
+        <translation>闭合行走的终点到起点距离 (%)</translation>
     </message>
     <message>
         <source>Error of the path length (%)</source>
-        <translation type="unfinished"></translation>
+        <translation>路径长度误差 (%)</translation>
     </message>
     <message>
         <source>Position error against the reference (ARMSE, m)</source>
-        <translation type="unfinished"></translation>
+        <translation>相对参考的位置误差（ARMSE，m）</translation>
     </message>
     <message>
         <source>%1 m</source>
-        <translation type="unfinished">%1 m</translation>
+        <translation>%1 m</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %</translation>
     </message>
     <message>
         <source>The criterion the search minimised</source>
-        <translation type="unfinished"></translation>
+        <translation>搜索所最小化的准则</translation>
     </message>
     <message>
         <source>Tune for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>为 %1 调参</translation>
     </message>
     <message>
         <source>What is known about the walk</source>
-        <translation type="unfinished"></translation>
+        <translation>关于此次行走的已知信息</translation>
     </message>
     <message>
         <source>The walk ends where it started</source>
-        <translation type="unfinished"></translation>
+        <translation>行走的终点即起点</translation>
     </message>
     <message>
         <source>Then the distance from its end to its start is the error to minimise</source>
-        <translation type="unfinished"></translation>
+        <translation>此时终点到起点的距离即为要最小化的误差</translation>
     </message>
     <message>
         <source> m</source>
-        <translation type="unfinished"></translation>
+        <translation> m</translation>
     </message>
     <message>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>未知</translation>
     </message>
     <message>
         <source>The length of the walked path, if measured; then the error of the estimated length is the error to minimise</source>
-        <translation type="unfinished"></translation>
+        <translation>所走路径的长度（如已测量）；此时估计长度的误差即为要最小化的误差</translation>
     </message>
     <message>
         <source>Path length:</source>
-        <translation type="unfinished"></translation>
+        <translation>路径长度：</translation>
     </message>
     <message>
         <source>Parameter sets to try, the current one included; more finds better settings but takes longer</source>
-        <translation type="unfinished"></translation>
+        <translation>要尝试的参数组数，包括当前参数；越多越能找到更好的设置，但耗时更长</translation>
     </message>
     <message numerus="yes">
         <source>on %n core(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>使用 %n 个核心</numerusform>
         </translation>
     </message>
     <message>
         <source>Evaluations:</source>
-        <translation type="unfinished"></translation>
+        <translation>评估次数：</translation>
     </message>
     <message>
         <source>%v of %m evaluations</source>
-        <translation type="unfinished"></translation>
+        <translation>%v / %m 次评估</translation>
     </message>
     <message>
         <source>What changed</source>
-        <translation type="unfinished"></translation>
+        <translation>变化内容</translation>
     </message>
     <message>
         <source>Before</source>
-        <translation type="unfinished"></translation>
+        <translation>之前</translation>
     </message>
     <message>
         <source>After</source>
-        <translation type="unfinished"></translation>
+        <translation>之后</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished">起点</translation>
+        <translation>开始</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>停止</translation>
     </message>
     <message>
         <source>Stop searching and keep the best parameters found so far</source>
-        <translation type="unfinished"></translation>
+        <translation>停止搜索并保留目前找到的最佳参数</translation>
     </message>
     <message>
         <source>Use the tuned parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>使用调参后的参数</translation>
     </message>
     <message>
         <source>Make them the workspace&apos;s parameters (Edit &gt; Undo brings the current ones back)</source>
-        <translation type="unfinished"></translation>
+        <translation>将其设为工作区参数（编辑 &gt; 撤销可恢复当前参数）</translation>
     </message>
     <message>
         <source>Close</source>
-        <translation type="unfinished"></translation>
+        <translation>关闭</translation>
     </message>
     <message>
         <source>no recording is open</source>
-        <translation type="unfinished"></translation>
+        <translation>未打开记录</translation>
     </message>
     <message>
         <source>needs a walk that ends where it started: tick it if yours does</source>
-        <translation type="unfinished"></translation>
+        <translation>需要终点即起点的行走：如果你的行走如此，请勾选</translation>
     </message>
     <message>
         <source>needs the path length: enter it</source>
-        <translation type="unfinished"></translation>
+        <translation>需要路径长度：请输入</translation>
     </message>
     <message>
         <source>needs reference positions: this recording has none</source>
-        <translation type="unfinished"></translation>
+        <translation>需要参考位置：此记录没有</translation>
     </message>
     <message>
         <source>Trying the current parameters, then a spread over the whole range...</source>
-        <translation type="unfinished"></translation>
+        <translation>正在尝试当前参数，然后在整个范围内散布尝试...</translation>
     </message>
     <message>
         <source>Stopping; the best parameters so far are kept...</source>
-        <translation type="unfinished"></translation>
+        <translation>正在停止；将保留目前最佳的参数...</translation>
     </message>
     <message>
         <source>Best so far: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>目前最佳：%1</translation>
     </message>
     <message>
         <source>Searching around the best parameters found so far...</source>
-        <translation type="unfinished"></translation>
+        <translation>正在目前最佳参数附近搜索...</translation>
     </message>
     <message>
         <source>Best: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>最佳：%1</translation>
     </message>
     <message numerus="yes">
         <source>Stopped after %n evaluation(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>已在 %n 次评估后停止。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>Done: %n evaluation(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>完成：%n 次评估。</numerusform>
         </translation>
     </message>
     <message>
         <source>No better parameters were found; the current ones stay.</source>
-        <translation type="unfinished"></translation>
+        <translation>未找到更好的参数；保留当前参数。</translation>
     </message>
     <message>
         <source>The path with the tuned parameters, over the current one (orange). Use them, or keep the current ones.</source>
-        <translation type="unfinished"></translation>
+        <translation>调参后参数得到的路径，叠加在当前路径（橙色）之上。可使用新参数，或保留当前参数。</translation>
     </message>
     <message>
         <source>Path length</source>
-        <translation type="unfinished">路径长度</translation>
+        <translation>路径长度</translation>
     </message>
     <message>
         <source>The estimated path&apos;s length, for comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>估计路径的长度，供比较</translation>
     </message>
     <message>
         <source>End to start</source>
-        <translation type="unfinished">终点至起点</translation>
+        <translation>终点到起点</translation>
     </message>
     <message>
         <source>The distance from the path&apos;s end to its start, for comparison</source>
-        <translation type="unfinished"></translation>
+        <translation>路径终点到起点的距离，供比较</translation>
     </message>
     <message>
         <source>Beware: the tuned path is %1 % shorter than the current one; a smaller error may come from a path that shrank rather than from a better one.</source>
-        <translation type="unfinished"></translation>
+        <translation>注意：调参后的路径比当前路径短 %1 %；误差变小可能源于路径缩短，而非路径更好。</translation>
     </message>
     <message>
         <source>Beware: the tuned path is %1 % longer than the current one.</source>
-        <translation type="unfinished"></translation>
+        <translation>注意：调参后的路径比当前路径长 %1 %。</translation>
     </message>
     <message>
         <source>Current parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>当前参数</translation>
     </message>
     <message>
         <source>Start again</source>
-        <translation type="unfinished"></translation>
+        <translation>重新开始</translation>
     </message>
     <message>
         <source>Keep the current ones</source>
-        <translation type="unfinished"></translation>
+        <translation>保留当前参数</translation>
     </message>
     <message>
         <source>Tuned parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>调参后的参数</translation>
     </message>
 </context>
 <context>
     <name>footpath::TuneFolderDialog</name>
     <message>
         <source>%1: no samples</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：无采样</translation>
     </message>
     <message>
         <source>Tune over a folder</source>
-        <translation type="unfinished"></translation>
+        <translation>对文件夹调参</translation>
     </message>
     <message>
         <source>Choose a folder of recordings of one sensor and one way of walking.</source>
-        <translation type="unfinished"></translation>
+        <translation>请选择一个文件夹，其中为同一传感器、同一行走方式的记录。</translation>
     </message>
     <message>
         <source>Choose...</source>
-        <translation type="unfinished"></translation>
+        <translation>选择...</translation>
     </message>
     <message>
         <source>Detect (headerless files: the usual columns)</source>
-        <translation type="unfinished"></translation>
+        <translation>自动检测（无表头文件：常用列）</translation>
     </message>
     <message>
         <source>How to read files that do not describe themselves</source>
-        <translation type="unfinished"></translation>
+        <translation>如何读取未自带说明的文件</translation>
     </message>
     <message>
         <source>Every walk ends where it started</source>
-        <translation type="unfinished"></translation>
+        <translation>每次行走的终点即起点</translation>
     </message>
     <message>
         <source>Score every recording by its end-to-start distance, also those not marked closed</source>
-        <translation type="unfinished"></translation>
+        <translation>按终点到起点的距离为每个记录评分，包括未标记为闭合的记录</translation>
     </message>
     <message>
         <source>Folder:</source>
-        <translation type="unfinished"></translation>
+        <translation>文件夹：</translation>
     </message>
     <message>
         <source>Read with:</source>
-        <translation type="unfinished"></translation>
+        <translation>读取方式：</translation>
     </message>
     <message>
         <source>Parameter sets to try, each on every recording</source>
-        <translation type="unfinished"></translation>
+        <translation>要尝试的参数组数，每组都在每个记录上运行</translation>
     </message>
     <message>
         <source>Evaluations:</source>
-        <translation type="unfinished"></translation>
+        <translation>评估次数：</translation>
     </message>
     <message numerus="yes">
         <source>on %n core(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>使用 %n 个核心</numerusform>
         </translation>
     </message>
     <message>
         <source>%v of %m evaluations</source>
-        <translation type="unfinished"></translation>
+        <translation>%v / %m 次评估</translation>
     </message>
     <message>
         <source>Recording</source>
-        <translation type="unfinished">记录</translation>
+        <translation>记录</translation>
     </message>
     <message>
         <source>Before</source>
-        <translation type="unfinished"></translation>
+        <translation>之前</translation>
     </message>
     <message>
         <source>After</source>
-        <translation type="unfinished"></translation>
+        <translation>之后</translation>
     </message>
     <message>
         <source>What changed</source>
-        <translation type="unfinished"></translation>
+        <translation>变化内容</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished">起点</translation>
+        <translation>开始</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>停止</translation>
     </message>
     <message>
         <source>Stop searching and keep the best parameters found so far</source>
-        <translation type="unfinished"></translation>
+        <translation>停止搜索并保留目前找到的最佳参数</translation>
     </message>
     <message>
         <source>Save preset...</source>
-        <translation type="unfinished">保存预设...</translation>
+        <translation>保存预设...</translation>
     </message>
     <message>
         <source>Apply to the workspace</source>
-        <translation type="unfinished"></translation>
+        <translation>应用到工作区</translation>
     </message>
     <message>
         <source>Make them the workspace&apos;s parameters (Edit &gt; Undo brings the current ones back)</source>
-        <translation type="unfinished"></translation>
+        <translation>将其设为工作区参数（编辑 &gt; 撤销可恢复当前参数）</translation>
     </message>
     <message>
         <source>Close</source>
-        <translation type="unfinished"></translation>
+        <translation>关闭</translation>
     </message>
     <message>
         <source>Folder of recordings</source>
-        <translation type="unfinished"></translation>
+        <translation>记录所在文件夹</translation>
     </message>
     <message>
         <source>Reading the recordings in %1...</source>
-        <translation type="unfinished"></translation>
+        <translation>正在读取 %1 中的记录...</translation>
     </message>
     <message>
         <source>No recording could be read in this folder.</source>
-        <translation type="unfinished"></translation>
+        <translation>此文件夹中没有可读取的记录。</translation>
     </message>
     <message numerus="yes">
         <source>%n recording(s) read. Choose what to minimise and start.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>已读取 %n 个记录。请选择要最小化的量，然后开始。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>Not read (%n file(s)):</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>未读取（%n 个文件）：</numerusform>
         </translation>
     </message>
     <message>
         <source>no recordings read yet</source>
-        <translation type="unfinished"></translation>
+        <translation>尚未读取任何记录</translation>
     </message>
     <message>
         <source>no walk is marked closed: tick it if they all end where they started</source>
-        <translation type="unfinished"></translation>
+        <translation>没有行走被标记为闭合：如果所有行走的终点都是起点，请勾选</translation>
     </message>
     <message>
         <source>no recording has a known length (e.g. walk_72m.txt, or a sidecar)</source>
-        <translation type="unfinished"></translation>
+        <translation>没有记录具有已知长度（例如 walk_72m.txt，或附带的说明文件）</translation>
     </message>
     <message>
         <source>no recording has reference positions</source>
-        <translation type="unfinished"></translation>
+        <translation>没有记录具有参考位置</translation>
     </message>
     <message>
         <source>None of the recordings has what this criterion needs.</source>
-        <translation type="unfinished"></translation>
+        <translation>没有任何记录具备此准则所需的数据。</translation>
     </message>
     <message numerus="yes">
         <source>Tuning on %n recording(s): the current parameters, then a spread over the whole range...</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>正在 %n 个记录上调参：先用当前参数，然后在整个范围内散布尝试...</numerusform>
         </translation>
     </message>
     <message>
         <source>Stopping; the best parameters so far are kept...</source>
-        <translation type="unfinished"></translation>
+        <translation>正在停止；将保留目前最佳的参数...</translation>
     </message>
     <message>
         <source>Best mean so far: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>目前最佳平均值：%1</translation>
     </message>
     <message>
         <source>Searching around the best parameters found so far...</source>
-        <translation type="unfinished"></translation>
+        <translation>正在目前最佳参数附近搜索...</translation>
     </message>
     <message>
         <source>Best mean: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>最佳平均值：%1</translation>
     </message>
     <message numerus="yes">
         <source>Stopped after %n evaluation(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>已在 %n 次评估后停止。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>Done: %n evaluation(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>完成：%n 次评估。</numerusform>
         </translation>
     </message>
     <message>
         <source>No better parameters were found; the current ones stay.</source>
-        <translation type="unfinished"></translation>
+        <translation>未找到更好的参数；保留当前参数。</translation>
     </message>
     <message>
         <source>Save them as a preset, or apply them to the workspace.</source>
-        <translation type="unfinished"></translation>
+        <translation>可将其保存为预设，或应用到工作区。</translation>
     </message>
     <message>
         <source>Not scored: the recording lacks what the criterion needs</source>
-        <translation type="unfinished"></translation>
+        <translation>未评分：该记录缺少此准则所需的数据</translation>
     </message>
     <message>
         <source>Mean</source>
-        <translation type="unfinished"></translation>
+        <translation>平均值</translation>
     </message>
     <message>
         <source>Start again</source>
-        <translation type="unfinished"></translation>
+        <translation>重新开始</translation>
     </message>
     <message>
         <source>Save preset</source>
-        <translation type="unfinished">保存预设</translation>
+        <translation>保存预设</translation>
     </message>
     <message>
         <source>Presets (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>预设 (*.json)</translation>
     </message>
     <message>
         <source>Preset written to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>预设已写入 %1</translation>
     </message>
     <message>
         <source>Parameters tuned over %1</source>
-        <translation type="unfinished"></translation>
+        <translation>在 %1 上调参得到的参数</translation>
     </message>
 </context>
 <context>
@@ -3412,11 +3419,11 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
     </message>
     <message>
         <source>Show this view: signals, detector, states, trajectory2d or trajectory3d</source>
-        <translation type="unfinished"></translation>
+        <translation>显示此视图：signals、detector、states、trajectory2d 或 trajectory3d</translation>
     </message>
     <message>
         <source>Recording to open; two files (or a folder): the left and the right foot of one walk</source>
-        <translation type="unfinished"></translation>
+        <translation>要打开的记录；两个文件（或一个文件夹）：同一次行走的左脚和右脚</translation>
     </message>
 </context>
 </TS>
