@@ -226,6 +226,30 @@ private slots:
         QCOMPARE(stats.firstProblems[1].size, std::uint64_t(3));
     }
 
+    void extendedLengthFieldForAShortPayload()
+    {
+        // LEN = 0xFF with an extended length of 3: legal framing for a payload that would fit the
+        // standard field, two header bytes longer. The fuzzer found the byte accounting of such a
+        // frame (tests/fuzz/corpus/fuzz_xbus_stream/extended-length-short-payload.bin).
+        std::vector<std::uint8_t> frame = bytes("FA FF 36 FF 00 03 01 02 03");
+        std::uint8_t sum = 0;
+        for (std::size_t k = 1; k < frame.size(); ++k)
+            sum = static_cast<std::uint8_t>(sum + frame[k]);
+        frame.push_back(static_cast<std::uint8_t>(0x100 - sum));
+        const std::vector<std::uint8_t> stream = concat({frame, kDeviceId});
+        XbusFrameDecoder decoder;
+        XbusMessage message;
+        decoder.feed(stream.data(), stream.size());
+        QVERIFY(decoder.next(message));
+        QCOMPARE(int(message.mid), 0x36);
+        QCOMPARE(message.payload, bytes("01 02 03"));
+        QCOMPARE(decoder.pendingOffset() - decoder.lastFrameOffset(), std::uint64_t(frame.size()));
+        QVERIFY(decoder.next(message));
+        QCOMPARE(int(message.mid), 0x01);
+        QCOMPARE(decoder.pendingOffset(), std::uint64_t(stream.size()));
+        QCOMPARE(decoder.stats().bytesSkipped, std::uint64_t(0));
+    }
+
     void badChecksumIsSkippedAndCounted()
     {
         std::vector<std::uint8_t> damaged = kDeviceId;
