@@ -30,14 +30,13 @@ Eigen::Matrix<double, 15, 1> blockDiagonal(double att, double gyroBias, double p
     return d;
 }
 
-/// K = P H^T S^-1 (eq. 31) by a Cholesky solve, not an inverse: S = L L^T (symmetric positive
-/// definite because R is), then K L^T L = P H^T by substitution on whole columns of K, which are
+/// K = P H^T S^-1 (eq. 31) by substitution with the Cholesky factor L of S (S = L L^T, symmetric
+/// positive definite because R is), not an inverse: K L L^T = P H^T on whole columns of K, which are
 /// contiguous 15-vectors (Eigen's general triangular solver is slow at these sizes).
 template <int Rows>
 Eigen::Matrix<double, 15, Rows> solveGain(const Eigen::Matrix<double, 15, Rows>& pht,
-                                          const Eigen::Matrix<double, Rows, Rows>& innovationCovariance)
+                                          const Eigen::Matrix<double, Rows, Rows>& l)
 {
-    const Eigen::Matrix<double, Rows, Rows> l = innovationCovariance.llt().matrixL();
     Eigen::Matrix<double, 15, Rows> k = pht;
     for (int i = 0; i < Rows; ++i) {  // K L^T = P H^T: forward over the columns of K
         for (int j = 0; j < i; ++j)
@@ -50,6 +49,24 @@ Eigen::Matrix<double, 15, Rows> solveGain(const Eigen::Matrix<double, 15, Rows>&
         k.col(i) /= l(i, i);
     }
     return k;
+}
+
+/// S^-1 = L^-T L^-1 from the Cholesky factor S = L L^T: L^-1 by forward substitution on its
+/// columns (Eigen's general triangular solver is slow at these sizes, as in solveGain).
+template <int Rows>
+Eigen::Matrix<double, Rows, Rows> inverseFromCholesky(const Eigen::Matrix<double, Rows, Rows>& l)
+{
+    Eigen::Matrix<double, Rows, Rows> inverseL = Eigen::Matrix<double, Rows, Rows>::Zero();
+    for (int c = 0; c < Rows; ++c) {
+        inverseL(c, c) = 1.0 / l(c, c);
+        for (int i = c + 1; i < Rows; ++i) {
+            double sum = 0.0;
+            for (int j = c; j < i; ++j)
+                sum += l(i, j) * inverseL(j, c);
+            inverseL(i, c) = -sum / l(i, i);
+        }
+    }
+    return inverseL.transpose() * inverseL;
 }
 
 }  // namespace
@@ -192,7 +209,8 @@ void ErrorStateEkf::update(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets,
     for (int b = 0; b < Rows / 3; ++b)
         s.template middleRows<3>(3 * b) = pht.template middleRows<3>(blockOffsets(b));
     s.diagonal() += noiseVariance;
-    const PHt gain = solveGain(pht, s);
+    const MatR choleskyFactor = s.llt().matrixL();  // S is symmetric positive definite because R is
+    const PHt gain = solveGain(pht, choleskyFactor);
     const Vector15 dx = gain * innovation;
 
     // Joseph form (eq. 33), with A = (I - KH) P = P - K (P H^T)^T:
@@ -223,7 +241,7 @@ void ErrorStateEkf::update(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets,
     else
         subtractLowerTriangle(kNavigationStates);
     if (recordUpdates_)
-        recordUpdate<Rows>(blockOffsets, gain, innovation, s);
+        recordUpdate<Rows>(blockOffsets, gain, innovation, choleskyFactor);
     applyCorrection(dx);
 }
 
@@ -238,7 +256,7 @@ template <int Rows>
 void ErrorStateEkf::recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets,
                                  const Eigen::Matrix<double, 15, Rows>& gain,
                                  const Eigen::Matrix<double, Rows, 1>& innovation,
-                                 const Eigen::Matrix<double, Rows, Rows>& s)
+                                 const Eigen::Matrix<double, Rows, Rows>& choleskyFactor)
 {
     MeasurementUpdate& record = nextRecord();
     record.selectedStates.resize(Rows);
@@ -247,9 +265,9 @@ void ErrorStateEkf::recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOff
             record.selectedStates(3 * b + i) = blockOffsets(b) + i;
     record.h.resize(0, kStates);
     record.gain = gain;
-    const Eigen::LLT<Eigen::Matrix<double, Rows, Rows>> cholesky(s);
-    record.weightedInnovation = cholesky.solve(innovation);
-    record.inverseS = cholesky.solve(Eigen::Matrix<double, Rows, Rows>::Identity());
+    const Eigen::Matrix<double, Rows, Rows> inverseS = inverseFromCholesky<Rows>(choleskyFactor);
+    record.weightedInnovation = inverseS * innovation;
+    record.inverseS = inverseS;
 }
 
 void ErrorStateEkf::recordUpdate(const Eigen::MatrixXd& h, const Eigen::MatrixXd& gain,

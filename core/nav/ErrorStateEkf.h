@@ -108,7 +108,8 @@ private:
                 const Eigen::Matrix<double, Rows, 1>& noiseVariance);
     template <int Rows>
     void recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, 15, Rows>& gain,
-                      const Eigen::Matrix<double, Rows, 1>& innovation, const Eigen::Matrix<double, Rows, Rows>& s);
+                      const Eigen::Matrix<double, Rows, 1>& innovation,
+                      const Eigen::Matrix<double, Rows, Rows>& choleskyFactor);
     void recordUpdate(const Eigen::MatrixXd& h, const Eigen::MatrixXd& gain, const Eigen::VectorXd& innovation,
                       const Eigen::MatrixXd& s);
     MeasurementUpdate& nextRecord();

@@ -22,11 +22,33 @@ std::vector<int> activeStates(FilterStates states)
     return active;
 }
 
-/// Where the blocks of the running states sit: the filter's order, without the biases for 9.
-template <int N>
-struct Blocks {
+/// The states the backward pass carries. mu and L are zero in the rows of a state no update observes
+/// and no observed state's transition reads: with ZUPT (and ZARU) alone that is the position, which
+/// Phi only adds to itself (Phi(pos, pos) = I is its column's only entry) and H never selects. So
+/// unless an update measures position (height, IPER), mu and L live on the other states and the
+/// smoothed variances need L times 6 (or 12) columns of P instead of 9 (or 15).
+/// N: the states the filter runs (9 or 15); Position: the backward pass carries position too.
+/// Offsets are in the carried states' order (the filter's, without position when it is dropped);
+/// -1 where a block is not carried.
+template <int N, bool Position>
+struct Carried {
     static constexpr bool biases = N == 15;
-    static constexpr int att = 0, gyroBias = 3, pos = biases ? 6 : 3, vel = biases ? 9 : 6, accBias = 12;
+    static constexpr int running = N;
+    static constexpr int size = Position ? N : N - 3;  ///< M, the states mu and L have
+    static constexpr int runningPos = biases ? 6 : 3;  ///< position's offset among the running states
+    static constexpr int att = 0, gyroBias = biases ? 3 : -1;
+    static constexpr int pos = Position ? runningPos : -1;
+    static constexpr int vel = Position ? runningPos + 3 : runningPos;
+    static constexpr int accBias = biases ? vel + 3 : -1;
+    /// The running state of carried state i.
+    static constexpr int runningIndex(int i) { return Position || i < runningPos ? i : i + 3; }
+    /// The carried state of running state i, -1 for position when it is dropped.
+    static constexpr int carriedIndex(int i)
+    {
+        if (Position || i < runningPos)
+            return i;
+        return i < runningPos + 3 ? -1 : i - 3;
+    }
 };
 
 /// Asks for the cache lines of values (count doubles) ahead of their use.
@@ -40,6 +62,14 @@ void prefetch(const double* values, std::size_t count)
 constexpr int kMaxRows = MeasurementUpdate::kMaxRows;
 using RowsVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1>;
 using RowsMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxRows>;
+
+bool observesPosition(const MeasurementUpdate& update, int row)
+{
+    constexpr int pos = ErrorStateEkf::kPos;
+    if (update.selectedStates.size() > 0)
+        return update.selectedStates(row) >= pos && update.selectedStates(row) < pos + 3;
+    return update.h.row(row).segment<3>(pos).any();  // any non-zero entry
+}
 
 }  // namespace
 
@@ -96,6 +126,8 @@ void RtsSmoother::storeUpdate(const MeasurementUpdate& update)
                            : update.h(row, active_[static_cast<std::size_t>(i)]) != 0.0;
         if (seen)
             rows.push_back(row);
+        if (seen && observesPosition(update, row))
+            positionObserved_ = true;
     }
     if (rows.empty())
         return;
@@ -182,60 +214,75 @@ bool RtsSmoother::smooth(Result& result, const std::function<bool(double fractio
 {
     if (samples_ == 0 || result.position_m.size() != samples_)
         return true;
-    return active_.size() == 15 ? smoothBackward<15>(result, keepGoing) : smoothBackward<9>(result, keepGoing);
+    if (active_.size() == 15)
+        return positionObserved_ ? smoothBackward<Carried<15, true>>(result, keepGoing)
+                                 : smoothBackward<Carried<15, false>>(result, keepGoing);
+    return positionObserved_ ? smoothBackward<Carried<9, true>>(result, keepGoing)
+                             : smoothBackward<Carried<9, false>>(result, keepGoing);
 }
 
-template <int N>
-Eigen::Matrix<double, N, N> RtsSmoother::filteredCovariance(std::size_t k) const
+template <class C>
+void RtsSmoother::filteredRows(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows,
+                               Eigen::Matrix<double, C::running, 1>& diagonal) const
 {
-    Eigen::Matrix<double, N, N> p;
+    // P(k|k) is symmetric: its rows of the carried states are its columns of them.
     const double* packed = record(k);
-    for (int j = 0; j < N; ++j)
-        for (int i = 0; i <= j; ++i, ++packed)
-            p(i, j) = p(j, i) = *packed;
-    return p;
+    for (int j = 0; j < C::running; ++j)
+        for (int i = 0; i <= j; ++i, ++packed) {
+            if (C::carriedIndex(i) >= 0)
+                carriedRows(C::carriedIndex(i), j) = *packed;
+            if (C::carriedIndex(j) >= 0)
+                carriedRows(C::carriedIndex(j), i) = *packed;
+            if (i == j)
+                diagonal(i) = *packed;
+        }
 }
 
-template <int N>
-void RtsSmoother::transitionBackward(Eigen::Matrix<double, N, 1>& adjoint, Eigen::Matrix<double, N, N>& information,
+template <class C>
+void RtsSmoother::transitionBackward(Eigen::Matrix<double, C::size, 1>& adjoint,
+                                     Eigen::Matrix<double, C::size, C::size>& information,
                                      const PropagationStep& step) const
 {
     // mu = Phi^T mu and L = Phi^T L Phi with Phi = I + the blocks of eq. 26: (att, gyro bias) and
-    // (vel, acc bias) dt C, (pos, vel) dt I, (vel, att) -dt S(a_n). Each block reads a block the
-    // later ones change, so the order matters: biases, then attitude, then velocity.
+    // (vel, acc bias) dt C, (pos, vel) dt I, (vel, att) -dt S(a_n); of these only the blocks
+    // between carried states (C::pos is -1 when position is not carried). Each block reads a block
+    // the later ones change, so the order matters: biases, then attitude, then velocity.
     if (!(step.dt_s > 0.0))
         return;
-    using B = Blocks<N>;
     const Eigen::Matrix3d velFromAtt = -step.dt_s * skew(step.navSpecificForce);
     const Eigen::Matrix3d velFromAttT = velFromAtt.transpose();
     auto& l = information;
-    if constexpr (B::biases) {
+    if constexpr (C::biases) {
         const Eigen::Matrix3d biasGain = step.dt_s * step.bodyToNav;
         const Eigen::Matrix3d biasGainT = biasGain.transpose();
-        adjoint.template segment<3>(B::gyroBias) += biasGainT * adjoint.template segment<3>(B::att);
-        adjoint.template segment<3>(B::accBias) += biasGainT * adjoint.template segment<3>(B::vel);
-        l.template middleCols<3>(B::gyroBias) += l.template middleCols<3>(B::att).lazyProduct(biasGain);
-        l.template middleCols<3>(B::accBias) += l.template middleCols<3>(B::vel).lazyProduct(biasGain);
-        l.template middleCols<3>(B::att) += l.template middleCols<3>(B::vel).lazyProduct(velFromAtt);
-        l.template middleCols<3>(B::vel) += step.dt_s * l.template middleCols<3>(B::pos);
-        l.template middleRows<3>(B::gyroBias) += biasGainT.lazyProduct(l.template middleRows<3>(B::att));
-        l.template middleRows<3>(B::accBias) += biasGainT.lazyProduct(l.template middleRows<3>(B::vel));
+        adjoint.template segment<3>(C::gyroBias) += biasGainT * adjoint.template segment<3>(C::att);
+        adjoint.template segment<3>(C::accBias) += biasGainT * adjoint.template segment<3>(C::vel);
+        l.template middleCols<3>(C::gyroBias) += l.template middleCols<3>(C::att).lazyProduct(biasGain);
+        l.template middleCols<3>(C::accBias) += l.template middleCols<3>(C::vel).lazyProduct(biasGain);
+        l.template middleCols<3>(C::att) += l.template middleCols<3>(C::vel).lazyProduct(velFromAtt);
+        if constexpr (C::pos >= 0)
+            l.template middleCols<3>(C::vel) += step.dt_s * l.template middleCols<3>(C::pos);
+        l.template middleRows<3>(C::gyroBias) += biasGainT.lazyProduct(l.template middleRows<3>(C::att));
+        l.template middleRows<3>(C::accBias) += biasGainT.lazyProduct(l.template middleRows<3>(C::vel));
     } else {
-        l.template middleCols<3>(B::att) += l.template middleCols<3>(B::vel).lazyProduct(velFromAtt);
-        l.template middleCols<3>(B::vel) += step.dt_s * l.template middleCols<3>(B::pos);
+        l.template middleCols<3>(C::att) += l.template middleCols<3>(C::vel).lazyProduct(velFromAtt);
+        if constexpr (C::pos >= 0)
+            l.template middleCols<3>(C::vel) += step.dt_s * l.template middleCols<3>(C::pos);
     }
-    adjoint.template segment<3>(B::att) += velFromAttT * adjoint.template segment<3>(B::vel);
-    adjoint.template segment<3>(B::vel) += step.dt_s * adjoint.template segment<3>(B::pos);
-    l.template middleRows<3>(B::att) += velFromAttT.lazyProduct(l.template middleRows<3>(B::vel));
-    l.template middleRows<3>(B::vel) += step.dt_s * l.template middleRows<3>(B::pos);
+    adjoint.template segment<3>(C::att) += velFromAttT * adjoint.template segment<3>(C::vel);
+    l.template middleRows<3>(C::att) += velFromAttT.lazyProduct(l.template middleRows<3>(C::vel));
+    if constexpr (C::pos >= 0) {
+        adjoint.template segment<3>(C::vel) += step.dt_s * adjoint.template segment<3>(C::pos);
+        l.template middleRows<3>(C::vel) += step.dt_s * l.template middleRows<3>(C::pos);
+    }
 }
 
-template <int N>
-void RtsSmoother::updatesBackward(std::size_t k, Eigen::Matrix<double, N, 1>& adjoint,
-                                  Eigen::Matrix<double, N, N>& information) const
+template <class C>
+void RtsSmoother::updatesBackward(std::size_t k, Eigen::Matrix<double, C::size, 1>& adjoint,
+                                  Eigen::Matrix<double, C::size, C::size>& information) const
 {
-    using VectorN = Eigen::Matrix<double, N, 1>;
-    using Gain = Eigen::Matrix<double, N, Eigen::Dynamic, 0, N, kMaxRows>;
+    constexpr int N = C::running, M = C::size;
+    using CarriedGain = Eigen::Matrix<double, M, Eigen::Dynamic, 0, M, kMaxRows>;
     auto& l = information;
     // Last update first: each record ends with its length.
     for (std::size_t end = updateStart_[k + 1]; end > updateStart_[k];) {
@@ -246,59 +293,64 @@ void RtsSmoother::updatesBackward(std::size_t k, Eigen::Matrix<double, N, 1>& ad
         const bool selects = record[1] != 0.0;
         const double* h = record + 2;
         const double* gainData = h + (selects ? m : m * N);
-        const Eigen::Map<const Eigen::Matrix<double, N, Eigen::Dynamic>> gain(gainData, N, m);
         const Eigen::Map<const Eigen::VectorXd> weightedInnovation(gainData + N * m, m);
         const Eigen::Map<const Eigen::MatrixXd> inverseS(gainData + N * m + m, m, m);
+        CarriedGain gain(M, m);  // K's rows of the carried states: mu and L are zero in the others
+        for (int j = 0; j < m; ++j)
+            for (int a = 0; a < M; ++a)
+                gain(a, j) = gainData[N * j + C::runningIndex(a)];
 
         // B = L K and C = K^T B + S^-1, from L and mu before the update.
-        Gain b(N, m);
-        for (int j = 0; j < m; ++j)
-            b.col(j).noalias() = l.lazyProduct(Eigen::Map<const VectorN>(gainData + N * j));
+        const CarriedGain b = l.lazyProduct(gain);
         const RowsMatrix c = gain.transpose().lazyProduct(b) + inverseS;
         const RowsVector t = weightedInnovation - gain.transpose().lazyProduct(adjoint);
         // mu += H^T t, L = L - B H - (B H)^T + H^T C H.
         if (selects) {
             for (int j = 0; j < m; ++j) {
-                const int state = static_cast<int>(h[j]);
+                const int state = C::carriedIndex(static_cast<int>(h[j]));
                 adjoint(state) += t(j);
                 l.col(state) -= b.col(j);
                 l.row(state) -= b.col(j).transpose();
             }
             for (int j = 0; j < m; ++j)
                 for (int i = 0; i < m; ++i)
-                    l(static_cast<int>(h[i]), static_cast<int>(h[j])) += c(i, j);
+                    l(C::carriedIndex(static_cast<int>(h[i])), C::carriedIndex(static_cast<int>(h[j]))) += c(i, j);
         } else {
-            const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, N, Eigen::RowMajor>> hm(h, m, N);
+            Eigen::Matrix<double, Eigen::Dynamic, M, Eigen::RowMajor, kMaxRows, M> hm(m, M);
+            for (int r = 0; r < m; ++r)
+                for (int a = 0; a < M; ++a)
+                    hm(r, a) = h[r * N + C::runningIndex(a)];
             adjoint += hm.transpose().lazyProduct(t);
-            const Eigen::Matrix<double, N, N> bh = b.lazyProduct(hm);
+            const Eigen::Matrix<double, M, M> bh = b.lazyProduct(hm);
             l -= bh + bh.transpose();
             l += hm.transpose().lazyProduct(c.lazyProduct(hm));
         }
     }
 }
 
-template <int N>
+template <class C>
 bool RtsSmoother::smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing) const
 {
-    using MatrixN = Eigen::Matrix<double, N, N>;
-    using VectorN = Eigen::Matrix<double, N, 1>;
+    constexpr int N = C::running, M = C::size;
     const std::size_t n = samples_;
     // After the last sample nothing is measured: mu and L start at zero.
-    VectorN adjoint = VectorN::Zero();
-    MatrixN information = MatrixN::Zero();
+    Eigen::Matrix<double, M, 1> adjoint = Eigen::Matrix<double, M, 1>::Zero();
+    Eigen::Matrix<double, M, M> information = Eigen::Matrix<double, M, M>::Zero();
+    Eigen::Matrix<double, M, N> carriedRows;  // P(k|k) in the carried states' rows
+    Eigen::Matrix<double, N, 1> filteredVariance;
     for (std::size_t k = n; k-- > 0;) {
         if (k >= 2)  // the pass walks memory backwards, which the hardware prefetcher follows poorly
             prefetch(record(k - 2), recordStride());
         if (k + 1 < n)
-            transitionBackward<N>(adjoint, information, propagationInto(k + 1));
-        const MatrixN filtered = filteredCovariance<N>(k);
-        // diag(P L P) as the columns of P dotted with those of L P.
-        const MatrixN informationTimesFiltered = information.lazyProduct(filtered);
-        VectorN variance;
+            transitionBackward<C>(adjoint, information, propagationInto(k + 1));
+        filteredRows<C>(k, carriedRows, filteredVariance);
+        // diag(P L P) as the columns of P's carried rows dotted with those of L times them.
+        const Eigen::Matrix<double, M, N> informationTimesRows = information.lazyProduct(carriedRows);
+        Eigen::Matrix<double, N, 1> variance;
         for (int i = 0; i < N; ++i)
-            variance(i) = filtered(i, i) - filtered.col(i).dot(informationTimesFiltered.col(i));
-        writeSmoothed<N>(result, k, filtered.lazyProduct(adjoint), variance);
-        updatesBackward<N>(k, adjoint, information);
+            variance(i) = filteredVariance(i) - carriedRows.col(i).dot(informationTimesRows.col(i));
+        writeSmoothed<N>(result, k, carriedRows.transpose().lazyProduct(adjoint), variance);
+        updatesBackward<C>(k, adjoint, information);
         if (keepGoing && k % kProgressInterval == 0 && !keepGoing(static_cast<double>(n - k) / static_cast<double>(n)))
             return false;
     }

@@ -61,25 +61,28 @@ private:
     const double* record(std::size_t k) const { return records_.data() + k * recordStride(); }
     Eigen::Matrix3d attitude(std::size_t k) const;
     void storeUpdate(const MeasurementUpdate& update);
-    /// The backward pass on fixed-size N x N blocks of the running states (9 or 15), which Eigen
-    /// unrolls and vectorises.
-    template <int N>
+    /// The backward pass on fixed-size blocks of the carried states C (RtsSmoother.cpp: the
+    /// running states, without position unless an update measures it), which Eigen unrolls.
+    template <class C>
     bool smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing) const;
-    template <int N>
-    Eigen::Matrix<double, N, N> filteredCovariance(std::size_t k) const;
+    /// P(k|k)'s rows of the carried states and its diagonal.
+    template <class C>
+    void filteredRows(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows,
+                      Eigen::Matrix<double, C::running, 1>& diagonal) const;
     PropagationStep propagationInto(std::size_t k) const;
-    template <int N>
-    void transitionBackward(Eigen::Matrix<double, N, 1>& adjoint, Eigen::Matrix<double, N, N>& information,
-                            const PropagationStep& step) const;
-    template <int N>
-    void updatesBackward(std::size_t k, Eigen::Matrix<double, N, 1>& adjoint,
-                         Eigen::Matrix<double, N, N>& information) const;
+    template <class C>
+    void transitionBackward(Eigen::Matrix<double, C::size, 1>& adjoint,
+                            Eigen::Matrix<double, C::size, C::size>& information, const PropagationStep& step) const;
+    template <class C>
+    void updatesBackward(std::size_t k, Eigen::Matrix<double, C::size, 1>& adjoint,
+                         Eigen::Matrix<double, C::size, C::size>& information) const;
     template <int N>
     void writeSmoothed(Result& result, std::size_t k, const Eigen::Matrix<double, N, 1>& correction,
                        const Eigen::Matrix<double, N, 1>& variance) const;
 
     std::vector<int> active_;  ///< error-state indices the filter runs (all 15, or 9 without biases)
     bool storesPropagationAttitude_ = false;  ///< only the bias blocks of Phi need it
+    bool positionObserved_ = false;           ///< an update measured position (height, IPER)
     /// One record of recordStride() doubles a sample, so the backward pass reads one block per
     /// sample: the packed covariance, the attitude (quaternion), the propagation's specific force,
     /// step and (15 states) attitude.
