@@ -80,9 +80,12 @@ Eigen::Vector3d sagittalAxis(const std::vector<ImuSample>& samples, const std::v
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
     Eigen::Vector3d axis = solver.eigenvectors().col(2);  // eigenvalues ascending
     // Toe rising while moving forwards is a positive turn about the axis to the right of the
-    // motion (v x up); the rate about `axis` should agree with it.
+    // motion (v x up); the rate about `axis` should agree with it. Samples slower than a swing
+    // are left out: their weight (the speed) is small and each costs a rotation from angles.
     double agreement = 0.0;
     for (std::size_t k = 0; k < samples.size(); ++k) {
+        if (result.velocity_mps[k].squaredNorm() < kMinSwingSpeed_mps * kMinSwingSpeed_mps)
+            continue;
         const Eigen::Vector3d& rpy = result.rollPitchYaw_rad[k];
         const Eigen::Vector3d rate_n = rotationFromRollPitchYaw(rpy.x(), rpy.y(), rpy.z()) * samples[k].gyr_radps;
         const Eigen::Vector3d rightOfMotion = result.velocity_mps[k].cross(Eigen::Vector3d::UnitZ());

@@ -5,7 +5,6 @@
 
 #include <Eigen/Cholesky>
 
-#include <array>
 
 namespace footpath {
 
@@ -14,12 +13,6 @@ namespace {
 // The paper's Q values are per step at 100 Hz; scaling the variance by dt / 10 ms keeps the noise
 // per second the same at any rate.
 constexpr double kReferenceStep_s = 0.01;
-
-/// The states of the 15-state filter, and the 9 with variance when it runs without biases.
-constexpr std::array<int, 15> kAllStates{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14};
-constexpr std::array<int, 9> kNavigationStates{ErrorStateEkf::kAtt, ErrorStateEkf::kAtt + 1, ErrorStateEkf::kAtt + 2,
-                                               ErrorStateEkf::kPos, ErrorStateEkf::kPos + 1, ErrorStateEkf::kPos + 2,
-                                               ErrorStateEkf::kVel, ErrorStateEkf::kVel + 1, ErrorStateEkf::kVel + 2};
 
 Eigen::Matrix<double, 15, 1> blockDiagonal(double att, double gyroBias, double pos, double vel, double accBias)
 {
@@ -32,12 +25,12 @@ Eigen::Matrix<double, 15, 1> blockDiagonal(double att, double gyroBias, double p
 
 /// K = P H^T S^-1 (eq. 31) by substitution with the Cholesky factor L of S (S = L L^T, symmetric
 /// positive definite because R is), not an inverse: K L L^T = P H^T on whole columns of K, which are
-/// contiguous 15-vectors (Eigen's general triangular solver is slow at these sizes).
-template <int Rows>
-Eigen::Matrix<double, 15, Rows> solveGain(const Eigen::Matrix<double, 15, Rows>& pht,
-                                          const Eigen::Matrix<double, Rows, Rows>& l)
+/// contiguous N-vectors (Eigen's general triangular solver is slow at these sizes).
+template <int N, int Rows>
+Eigen::Matrix<double, N, Rows> solveGain(const Eigen::Matrix<double, N, Rows>& pht,
+                                         const Eigen::Matrix<double, Rows, Rows>& l)
 {
-    Eigen::Matrix<double, 15, Rows> k = pht;
+    Eigen::Matrix<double, N, Rows> k = pht;
     for (int i = 0; i < Rows; ++i) {  // K L^T = P H^T: forward over the columns of K
         for (int j = 0; j < i; ++j)
             k.col(i) -= l(i, j) * k.col(j);
@@ -197,52 +190,65 @@ void ErrorStateEkf::update(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets,
                            const Eigen::Matrix<double, Rows, 1>& innovation,
                            const Eigen::Matrix<double, Rows, 1>& noiseVariance)
 {
-    using PHt = Eigen::Matrix<double, kStates, Rows>;
+    if (biasStates_)
+        updateRunning<kStates, Rows>(blockOffsets, innovation, noiseVariance);
+    else
+        updateRunning<9, Rows>(blockOffsets, innovation, noiseVariance);
+}
+
+template <int N, int Rows>
+void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets,
+                                  const Eigen::Matrix<double, Rows, 1>& innovation,
+                                  const Eigen::Matrix<double, Rows, 1>& noiseVariance)
+{
+    using PHt = Eigen::Matrix<double, N, Rows>;
     using MatR = Eigen::Matrix<double, Rows, Rows>;
+    // The filter's index of running state i: the 9-state filter skips the gyro bias block, and its
+    // bias rows of P, and so of every gain, stay zero (no work is done on them).
+    constexpr auto filterIndex = [](int i) { return N == kStates || i < kGyroBias ? i : i + 3; };
     Matrix15& p = covariance_;
     // H only selects 3-blocks of the state with +I, so P H^T is a set of columns of P and H P H^T
     // a set of its rows; S = H P H^T + R.
+    const auto selected = [&blockOffsets](int row) { return blockOffsets(row / 3) + row % 3; };
     PHt pht;
-    for (int b = 0; b < Rows / 3; ++b)
-        pht.template middleCols<3>(3 * b) = p.template middleCols<3>(blockOffsets(b));
+    for (int c = 0; c < Rows; ++c)
+        for (int i = 0; i < N; ++i)
+            pht(i, c) = p(filterIndex(i), selected(c));
     MatR s;
-    for (int b = 0; b < Rows / 3; ++b)
-        s.template middleRows<3>(3 * b) = pht.template middleRows<3>(blockOffsets(b));
+    for (int c = 0; c < Rows; ++c)
+        for (int r = 0; r < Rows; ++r)
+            s(r, c) = p(selected(r), selected(c));
     s.diagonal() += noiseVariance;
     const MatR choleskyFactor = s.llt().matrixL();  // S is symmetric positive definite because R is
     const PHt gain = solveGain(pht, choleskyFactor);
-    const Vector15 dx = gain * innovation;
 
     // Joseph form (eq. 33), with A = (I - KH) P = P - K (P H^T)^T:
     //   (I - KH) P (I - KH)^T + K R K^T = A - (A H^T - K R) K^T,
     // where A H^T - K R = P H^T - K (H P H^T + R) = P H^T - K S, the residual of the gain's solve.
-    // Not the shorter P - K H P: the Joseph form stays symmetric positive under rounding. Only the
-    // lower triangle is computed, as one product of stacked factors, then mirrored.
-    PHt correction = pht;
-    for (int c = 0; c < Rows; ++c)  // columns of K S as contiguous AXPYs
-        for (int k = 0; k < Rows; ++k)
-            correction.col(c) -= s(k, c) * gain.col(k);
-    Eigen::Matrix<double, 2 * Rows, kStates> left, right;  // transposed: columns are contiguous
-    left << gain.transpose(), correction.transpose();
-    right << pht.transpose(), gain.transpose();
-    // The states without variance (the biases of the 9-state filter) have zero rows in both.
-    const auto subtractLowerTriangle = [&](const auto& states) {
-        for (std::size_t jj = 0; jj < states.size(); ++jj) {
-            const int j = states[jj];
-            for (std::size_t ii = jj; ii < states.size(); ++ii) {
-                const int i = states[ii];
-                p(i, j) -= left.col(i).dot(right.col(j));
-                p(j, i) = p(i, j);
-            }
+    // Not the shorter P - K H P: the Joseph form stays symmetric positive under rounding. The
+    // change is one product of stacked factors; its lower triangle is applied, then mirrored.
+    const PHt correction = pht - gain.lazyProduct(s);
+    Eigen::Matrix<double, N, 2 * Rows> left, right;
+    left << gain, correction;
+    right << pht, gain;
+    const Eigen::Matrix<double, N, N> change = left.lazyProduct(right.transpose());
+    for (int j = 0; j < N; ++j)
+        for (int i = j; i < N; ++i) {
+            double& lower = p(filterIndex(i), filterIndex(j));
+            lower -= change(i, j);
+            p(filterIndex(j), filterIndex(i)) = lower;
         }
-    };
-    if (biasStates_)
-        subtractLowerTriangle(kAllStates);
-    else
-        subtractLowerTriangle(kNavigationStates);
+    Eigen::Matrix<double, kStates, Rows> fullGain;
+    if constexpr (N == kStates) {
+        fullGain = gain;
+    } else {
+        fullGain.setZero();
+        for (int i = 0; i < N; ++i)
+            fullGain.row(filterIndex(i)) = gain.row(i);
+    }
     if (recordUpdates_)
-        recordUpdate<Rows>(blockOffsets, gain, innovation, choleskyFactor);
-    applyCorrection(dx);
+        recordUpdate<Rows>(blockOffsets, fullGain, innovation, choleskyFactor);
+    applyCorrection(fullGain * innovation);
 }
 
 MeasurementUpdate& ErrorStateEkf::nextRecord()

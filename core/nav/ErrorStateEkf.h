@@ -106,6 +106,10 @@ private:
     template <int Rows>
     void update(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, Rows, 1>& innovation,
                 const Eigen::Matrix<double, Rows, 1>& noiseVariance);
+    /// The update on the N states the filter runs (9 or 15), on fixed-size blocks Eigen unrolls.
+    template <int N, int Rows>
+    void updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, Rows, 1>& innovation,
+                       const Eigen::Matrix<double, Rows, 1>& noiseVariance);
     template <int Rows>
     void recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, 15, Rows>& gain,
                       const Eigen::Matrix<double, Rows, 1>& innovation,

@@ -51,6 +51,20 @@ struct Carried {
     }
 };
 
+/// The upper triangle of the running states' block of P, column by column, from out; returns the
+/// end. The running states' indices are known at compile time, so the loop unrolls.
+template <int N>
+double* storePackedCovariance(const ErrorStateEkf::Matrix15& p, double* out)
+{
+    constexpr int runningPos = Carried<N, false>::runningPos;
+    // From position on, the 9-state filter's running states skip the gyro bias block of the 15.
+    constexpr auto filterIndex = [](int i) { return N == 15 || i < runningPos ? i : i + 3; };
+    for (int j = 0; j < N; ++j)
+        for (int i = 0; i <= j; ++i)
+            *out++ = p(filterIndex(i), filterIndex(j));
+    return out;
+}
+
 /// Asks for the cache lines of values (count doubles) ahead of their use.
 void prefetch(const double* values, std::size_t count)
 {
@@ -89,12 +103,10 @@ void RtsSmoother::reserve(std::size_t samples, std::size_t updates)
 
 void RtsSmoother::capture(const ErrorStateEkf& ekf)
 {
-    const ErrorStateEkf::Matrix15& p = ekf.covariance();
     records_.resize(records_.size() + recordStride());
     double* out = records_.data() + samples_++ * recordStride();
-    for (std::size_t j = 0; j < active_.size(); ++j)
-        for (std::size_t i = 0; i <= j; ++i)
-            *out++ = p(active_[i], active_[j]);
+    out = active_.size() == 15 ? storePackedCovariance<15>(ekf.covariance(), out)
+                               : storePackedCovariance<9>(ekf.covariance(), out);
     const auto store = [&out](const auto& values) {
         for (int i = 0; i < values.size(); ++i)
             *out++ = values(i);
@@ -195,9 +207,9 @@ void RtsSmoother::writeSmoothed(Result& result, std::size_t k, const Eigen::Matr
         dx(active_[static_cast<std::size_t>(i)]) = correction(i);
     // The filter's signs (ErrorStateEkf::applyCorrection): attitude, position and velocity errors
     // are estimate - truth, bias errors truth - estimate.
-    Eigen::Matrix3d bodyToNav = padeRotation(-dx.segment<3>(E::kAtt)) * attitude(k);
-    reorthonormalize(bodyToNav);
-    result.rollPitchYaw_rad[k] = rollPitchYaw(bodyToNav);
+    // Not re-orthonormalised: both factors are rotations to rounding (a unit quaternion's matrix, a
+    // Cayley transform), and this product is read for its angles once, never multiplied on.
+    result.rollPitchYaw_rad[k] = rollPitchYaw(padeRotation(-dx.segment<3>(E::kAtt)) * attitude(k));
     result.position_m[k] -= dx.segment<3>(E::kPos);
     result.velocity_mps[k] -= dx.segment<3>(E::kVel);
     result.gyroBias_radps[k] += dx.segment<3>(E::kGyroBias);
