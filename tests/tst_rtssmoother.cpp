@@ -173,6 +173,28 @@ private slots:
         QVERIFY2(sigma < 1e-6, qPrintable(QString::number(sigma)));
     }
 
+    void aRecordingBeyondTheMemoryBudgetIsFilteredWithANote()
+    {
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), mtiClassSensor(100.0, 5));
+        const Parameters params;  // the smoother
+        const StanceFlags flags = detectStance(walk.recording.samples, params);
+        ErrorStateEkf ekf(params, Eigen::Matrix3d::Identity());
+        std::vector<MethodNote> notes;
+        QVERIFY(smootherFor(walk.recording.samples, params, flags, ekf, notes).has_value());
+        QVERIFY(notes.empty());
+        const RtsSmoother probe(params, ekf);
+        const std::size_t needed = probe.projectedBytes(walk.recording.samples.size(),
+                                                        std::size_t(std::count(flags.stance.begin(), flags.stance.end(), 1)));
+        QVERIFY(!smootherFor(walk.recording.samples, params, flags, ekf, notes, needed - 1).has_value());
+        QCOMPARE(notes.size(), std::size_t(1));
+        QCOMPARE(notes.front().method, std::string("rts"));
+        QVERIFY2(notes.front().message.find("not applied") == 0, notes.front().message.c_str());
+        // The budget's figures: ten hours at 100 Hz with stance half the time fit, at 200 Hz not.
+        const std::size_t tenHours100Hz = 10 * 3600 * 100;
+        QVERIFY(probe.projectedBytes(tenHours100Hz, tenHours100Hz / 2) < RtsSmoother::kMemoryBudget_bytes);
+        QVERIFY(probe.projectedBytes(2 * tenHours100Hz, tenHours100Hz) > RtsSmoother::kMemoryBudget_bytes);
+    }
+
     void storageIsWhatTheHeaderSays()
     {
         Parameters nine;

@@ -225,17 +225,16 @@ void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOf
     // Joseph form (eq. 33), with A = (I - KH) P = P - K (P H^T)^T:
     //   (I - KH) P (I - KH)^T + K R K^T = A - (A H^T - K R) K^T,
     // where A H^T - K R = P H^T - K (H P H^T + R) = P H^T - K S, the residual of the gain's solve.
-    // Not the shorter P - K H P: the Joseph form stays symmetric positive under rounding. The
-    // change is one product of stacked factors; its lower triangle is applied, then mirrored.
+    // Not the shorter P - K H P: the Joseph form stays symmetric positive under rounding. Only the
+    // lower triangle is computed, as one product of stacked factors, then mirrored.
     const PHt correction = pht - gain.lazyProduct(s);
-    Eigen::Matrix<double, N, 2 * Rows> left, right;
-    left << gain, correction;
-    right << pht, gain;
-    const Eigen::Matrix<double, N, N> change = left.lazyProduct(right.transpose());
+    Eigen::Matrix<double, 2 * Rows, N> left, right;  // transposed: columns are contiguous
+    left << gain.transpose(), correction.transpose();
+    right << pht.transpose(), gain.transpose();
     for (int j = 0; j < N; ++j)
         for (int i = j; i < N; ++i) {
             double& lower = p(filterIndex(i), filterIndex(j));
-            lower -= change(i, j);
+            lower -= left.col(i).dot(right.col(j));
             p(filterIndex(j), filterIndex(i)) = lower;
         }
     Eigen::Matrix<double, kStates, Rows> fullGain;

@@ -86,6 +86,35 @@ SampleStanceFlags flagsAt(const StanceFlags& flags, std::size_t k)
     return sample;
 }
 
+}  // namespace
+
+std::optional<RtsSmoother> smootherFor(const std::vector<ImuSample>& samples, const Parameters& params,
+                                       const StanceFlags& flags, ErrorStateEkf& ekf, std::vector<MethodNote>& notes,
+                                       std::size_t budget_bytes)
+{
+    std::optional<RtsSmoother> smoother;
+    if (params.estimatorKind() != EstimatorKind::Smoother)
+        return smoother;
+    smoother.emplace(params, ekf);
+    const auto stanceSamples = static_cast<std::size_t>(std::count(flags.stance.begin(), flags.stance.end(), 1));
+    const std::size_t needed = smoother->projectedBytes(samples.size(), stanceSamples);
+    if (needed <= budget_bytes) {
+        smoother->reserve(samples.size(), stanceSamples);
+        return smoother;
+    }
+    smoother.reset();
+    ekf.setRecordUpdates(false);
+    std::ostringstream message;
+    message.precision(2);
+    message << std::fixed << "not applied: smoothing this recording would store " << static_cast<double>(needed) / double(1 << 30)
+            << " GiB, more than the " << static_cast<double>(budget_bytes) / double(1 << 30)
+            << " GiB a run may use; the path is the filter's (a shorter recording is smoothed)";
+    notes.push_back(MethodNote{"rts", samples.front().time_s, samples.back().time_s, message.str()});
+    return smoother;
+}
+
+namespace {
+
 /// Runs the filter over every sample, then the smoother's backward pass when it is chosen; returns
 /// false if the callback cancelled.
 bool runFilter(const Recording& recording, const Parameters& params, const StanceFlags& flags,
@@ -95,12 +124,7 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
     const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
     ErrorStateEkf ekf(params, alignment.bodyToNav);
     MeasurementSources sources(params);
-    std::optional<RtsSmoother> smoother;
-    if (params.estimatorKind() == EstimatorKind::Smoother) {
-        smoother.emplace(params, ekf);
-        smoother->reserve(samples.size(),
-                          static_cast<std::size_t>(std::count(flags.stance.begin(), flags.stance.end(), 1)));
-    }
+    std::optional<RtsSmoother> smoother = smootherFor(samples, params, flags, ekf, result.methodNotes);
     // The forward pass is most of the work without the smoother, about half with it.
     const double forwardShare = smoother ? 0.5 : 1.0;
     reserveResult(result, samples.size());

@@ -3,6 +3,7 @@
 #include "Recording.h"
 #include "Result.h"
 #include "nav/Parameters.h"
+#include "nav/RtsSmoother.h"
 
 #include <functional>
 #include <optional>
@@ -32,6 +33,13 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
 
 /// Reserves room for n samples in result's per-sample vectors (time, state, attitude, biases).
 void reserveResult(Result& result, std::size_t n);
+
+/// The smoother for a run when the parameters choose it and what it would store fits budget_bytes
+/// (runPipeline: RtsSmoother::kMemoryBudget_bytes); otherwise none, the filter's estimate, with a
+/// note saying why. Exposed for tests.
+std::optional<RtsSmoother> smootherFor(const std::vector<ImuSample>& samples, const Parameters& params,
+                                       const StanceFlags& flags, ErrorStateEkf& ekf, std::vector<MethodNote>& notes,
+                                       std::size_t budget_bytes = RtsSmoother::kMemoryBudget_bytes);
 
 /// Appends one sample's time and navigation state to result's per-sample vectors.
 void recordState(Result& result, double time_s, const NavState& state);

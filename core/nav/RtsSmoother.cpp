@@ -175,6 +175,11 @@ std::size_t RtsSmoother::bytesPerSample() const
     return doubles * sizeof(double) + sizeof(std::size_t);
 }
 
+std::size_t RtsSmoother::projectedBytes(std::size_t samples, std::size_t stanceSamples) const
+{
+    return samples * bytesPerSample() + stanceSamples * bytesPerUpdate(storesPropagationAttitude_ ? 6 : 3);
+}
+
 std::size_t RtsSmoother::bytesPerUpdate(int rows) const
 {
     const std::size_t m = static_cast<std::size_t>(rows);

@@ -38,6 +38,12 @@ namespace footpath {
 /// states the future observes.
 class RtsSmoother {
 public:
+    /// The most a run may store (4 GiB): a recording that would need more is estimated by the
+    /// filter alone, with a note (runPipeline). A fixed figure, not a share of this machine's
+    /// memory, so a file gives the same result everywhere: 10 hours at 100 Hz with 9 states fit
+    /// (about 2.2 GB), 10 hours at 200 Hz (4.4 GB) do not.
+    static constexpr std::size_t kMemoryBudget_bytes = std::size_t(4) << 30;
+
     /// Switches the filter's update recording on: the backward pass runs its updates backwards.
     RtsSmoother(const Parameters& params, ErrorStateEkf& ekf);
 
@@ -53,6 +59,9 @@ public:
 
     /// Storage for each sample, and for each update of rows state-selecting rows on top.
     std::size_t bytesPerSample() const;
+    /// What a run over this many samples, with a ZUPT (and ZARU for 15 states) in stanceSamples of
+    /// them, stores.
+    std::size_t projectedBytes(std::size_t samples, std::size_t stanceSamples) const;
     std::size_t bytesPerUpdate(int rows) const;
 
 private:
