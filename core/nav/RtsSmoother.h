@@ -27,8 +27,10 @@ namespace footpath {
 /// and through each update of sample k (z = H dx + noise, gain K, S = H P H^T + R), last one first,
 ///   mu~ = mu + H^T (S^-1 z - K^T mu),  L~ = A^T L A + H^T S^-1 H,  A = I - K H.
 /// The same numbers as G(k) = P(k|k) Phi^T P(k+1|k)^-1 (tests/DenseReferenceFilter), but Phi is
-/// I plus a few 3x3 blocks and H selects states, so a sample costs one N x N product (the smoothed
+/// I plus a few 3x3 blocks and H selects states, so a sample costs one M x N product (the smoothed
 /// variances) and a few block products, where the gain form needs a Cholesky solve and two products.
+/// M: mu and L are zero in the states no update reaches (position under ZUPT/ZARU), so the pass
+/// carries the other 6 of 9 (12 of 15) unless an update measures position (RtsSmoother.cpp, Carried).
 ///
 /// Storage per sample: the filtered covariance of the states the filter runs (upper triangle), the
 /// attitude, the propagation's specific force and step, where its updates start; per update its
