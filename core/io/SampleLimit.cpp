@@ -35,17 +35,29 @@ std::string count(std::size_t n)
     return text;
 }
 
-std::string gigabytes(std::size_t bytes)
+std::string byteCount(std::size_t bytes)
 {
     char text[32];
-    std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+    if (bytes >= 1000000000)
+        std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+    else if (bytes >= 1000000)
+        std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / 1e6);
+    else
+        std::snprintf(text, sizeof text, "%zu bytes", bytes);
     return text;
 }
 
-std::string hoursAt100Hz(std::size_t samples)
+/// How long a recording of that many samples lasts at 100 Hz, in the unit that reads best.
+std::string durationAt100Hz(std::size_t samples)
 {
+    const double seconds = static_cast<double>(samples) / 100.0;
     char text[48];
-    std::snprintf(text, sizeof text, "%.0f hours at 100 Hz", static_cast<double>(samples) / 100.0 / 3600.0);
+    if (seconds < 120.0)
+        std::snprintf(text, sizeof text, "%.0f s at 100 Hz", seconds);
+    else if (seconds < 7200.0)
+        std::snprintf(text, sizeof text, "%.0f minutes at 100 Hz", seconds / 60.0);
+    else
+        std::snprintf(text, sizeof text, "%.0f hours at 100 Hz", seconds / 3600.0);
     return text;
 }
 
@@ -64,13 +76,14 @@ std::size_t sampleLimit(const ImportOptions& options)
 std::string tooManySamplesMessage(std::size_t samples, const std::string& estimateBasis, const ImportOptions& options)
 {
     const std::size_t limit = sampleLimit(options);
-    std::string text = estimateBasis.empty() ? "the file holds more than " + count(samples) + " samples"
-                                             : "the file holds about " + count(samples) + " samples (" + estimateBasis
-                                                   + ")";
-    text += ", more than the " + count(limit) + " (" + hoursAt100Hz(limit) + ") a recording may hold";
+    const std::string most = count(limit) + " samples (" + durationAt100Hz(limit) + ") a recording may hold";
+    std::string text = estimateBasis.empty()
+                           ? "the file holds more than the " + most
+                           : "the file holds about " + count(samples) + " samples (" + estimateBasis
+                                 + "), more than the " + most;
     if (options.maxSamples == 0)
         text += ": analysing a sample takes about " + std::to_string(kAnalysisBytesPerSample)
-                + " bytes of memory, and half of this computer's " + gigabytes(physicalMemory_bytes())
+                + " bytes of memory, and half of this computer's " + byteCount(physicalMemory_bytes())
                 + " holds that many";
     return text + "; split the file into shorter recordings";
 }
@@ -82,9 +95,9 @@ std::string checkEstimatedSamples(std::size_t remainingBytes, std::size_t bytesP
         return {};
     const std::size_t estimate = remainingBytes / bytesPerSample;
     const std::size_t limit = sampleLimit(options);
-    if (estimate <= limit + limit / 4)
+    if (estimate / 2 <= limit)
         return {};
-    return tooManySamplesMessage(estimate, gigabytes(remainingBytes) + " at " + std::to_string(bytesPerSample)
+    return tooManySamplesMessage(estimate, byteCount(remainingBytes) + " at " + std::to_string(bytesPerSample)
                                                + " bytes a " + unit,
                                  options);
 }

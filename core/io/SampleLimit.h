@@ -28,8 +28,9 @@ std::string tooManySamplesMessage(std::size_t samples, const std::string& estima
 
 /// A reader's up-front check: a file whose rest (`remainingBytes`) at `bytesPerSample` (the first
 /// row or message) would hold clearly more samples than the limit. The first row may be shorter
-/// than the rest, so only an estimate a quarter above the limit refuses; reading stops at the
-/// limit itself in any case. Empty when the file may hold few enough.
+/// than the rest (zeros at rest, more digits later), so only an estimate of twice the limit
+/// refuses; reading stops at the limit itself in any case, having held at most the limit's
+/// samples as read (96 bytes each), before any analysis. Empty when the file may hold few enough.
 std::string checkEstimatedSamples(std::size_t remainingBytes, std::size_t bytesPerSample, const char* unit,
                                   const ImportOptions& options);
 
