@@ -9,7 +9,7 @@ struct ImportOptions;
 
 /// Memory one sample costs from the file to every view, measured on a simulated 10-hour 100 Hz
 /// walk (README, "Limits"): footpath-cli process holds about 860 bytes a sample at its peak (the
-/// sample as read 96, the smoother's records about 580, the result about 200), the window about
+/// sample as read 88, the smoother's records about 580, the result about 200), the window about
 /// 1.1 KB (it keeps a copy of the samples and what it draws).
 constexpr std::size_t kAnalysisBytesPerSample = 1200;
 
@@ -30,7 +30,7 @@ std::string tooManySamplesMessage(std::size_t samples, const std::string& estima
 /// row or message) would hold clearly more samples than the limit. The first row may be shorter
 /// than the rest (zeros at rest, more digits later), so only an estimate of twice the limit
 /// refuses; reading stops at the limit itself in any case, having held at most the limit's
-/// samples as read (96 bytes each), before any analysis. Empty when the file may hold few enough.
+/// samples as read (88 bytes each), before any analysis. Empty when the file may hold few enough.
 std::string checkEstimatedSamples(std::size_t remainingBytes, std::size_t bytesPerSample, const char* unit,
                                   const ImportOptions& options);
 
