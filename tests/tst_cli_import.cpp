@@ -106,6 +106,37 @@ private slots:
         QVERIFY(unknown.err.contains("saved presets: ecg"));
     }
 
+    void aLineOverTheBoundAndARateOutOfRangeAreRefused()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("long-line.csv");
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,0.1,0.2,9.81,0,0,0\n");
+        file.write(QByteArray(1100 * 1024, '7'));  // a line just over 1 MiB, as a 100 MB one would be
+        file.close();
+        const Run longLine = runCli({"info", path});
+        QCOMPARE(longLine.exitCode, 2);
+        QVERIFY2(longLine.err.contains(path + ":3: the line is longer than 1 MiB (1048576 bytes), the most a line of "
+                                              "text may hold; expected one sample a line"),
+                 qPrintable(longLine.err));
+
+        const Run hugeRate = runCli({"info", path, "--rate", "1e9"});
+        QCOMPARE(hugeRate.exitCode, 2);
+        QVERIFY2(hugeRate.err.contains("--rate expects a rate in Hz > 0 and up to 10000, got '1e9'"), qPrintable(hugeRate.err));
+
+        const QString preset = dir.filePath("negative.json");
+        QFile presetFile(preset);
+        QVERIFY(presetFile.open(QIODevice::WriteOnly));
+        presetFile.write(R"({"format": "footpath-import-preset", "version": 1, "name": "negative", "rate_hz": -100})");
+        presetFile.close();
+        const Run negative = runCli({"info", path, "--import-preset", preset});
+        QCOMPARE(negative.exitCode, 2);
+        QVERIFY2(negative.err.contains(preset + ": \"rate_hz\" must be a number of Hz from 0 (the rate comes from "
+                                                "the file) to 10000, got -100"),
+                 qPrintable(negative.err));
+    }
+
     void unitOverridesAndFormatOverride()
     {
         QTemporaryDir dir;
