@@ -4,7 +4,8 @@
 //   simulate_walk_csv HOURS RATE_HZ OUT.csv
 //
 // Laps of a 200 m x 150 m rectangle walked by an MTi-class sensor (noise and biases of its data
-// sheet), as many as fill the hours, with the simulator's rest at the start and the end.
+// sheet), the whole number of laps nearest the hours (10: 65 laps, 9.93 h), with the simulator's
+// rest at the start and the end.
 #include "sim/WalkSimulator.h"
 
 #include <cmath>
