@@ -37,6 +37,12 @@ QJsonObject infoJson(const QStringList& arguments, const QString& presetDir = {}
     return QJsonDocument::fromJson(run.out.toUtf8()).object();
 }
 
+QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes)
+{
+    QFile file(dir.filePath(name));
+    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size() ? file.fileName() : QString();
+}
+
 const QStringList kEcgColumns{"--columns", "time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,pressure_pa"};
 
 }  // namespace
@@ -104,6 +110,33 @@ private slots:
         const Run unknown = runCli({"info", file, "--import-preset", "nope"}, presets.path());
         QCOMPARE(unknown.exitCode, 2);
         QVERIFY(unknown.err.contains("saved presets: ecg"));
+    }
+
+    void aLineOverTheBoundAndARateOutOfRangeAreRefused()
+    {
+        QTemporaryDir dir;
+        // A line just over 1 MiB, as a 100 MB one would be.
+        const QString path = writeFile(dir, "long-line.csv", "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n"
+                                                             "0,0.1,0.2,9.81,0,0,0\n" + QByteArray(1100 * 1024, '7'));
+        QVERIFY(!path.isEmpty());
+        const Run longLine = runCli({"info", path});
+        QCOMPARE(longLine.exitCode, 2);
+        QVERIFY2(longLine.err.contains(path + ":3: the line is longer than 1 MiB (1048576 bytes), the most a line of "
+                                              "text may hold; expected one sample a line"),
+                 qPrintable(longLine.err));
+
+        const Run hugeRate = runCli({"info", path, "--rate", "1e9"});
+        QCOMPARE(hugeRate.exitCode, 2);
+        QVERIFY2(hugeRate.err.contains("--rate expects a rate in Hz > 0 and up to 10000, got '1e9'"), qPrintable(hugeRate.err));
+
+        const QString preset = writeFile(
+            dir, "negative.json", R"({"format": "footpath-import-preset", "version": 1, "name": "negative", "rate_hz": -100})");
+        QVERIFY(!preset.isEmpty());
+        const Run negative = runCli({"info", path, "--import-preset", preset});
+        QCOMPARE(negative.exitCode, 2);
+        QVERIFY2(negative.err.contains(preset + ": \"rate_hz\" must be a number of Hz from 0 (the rate comes from "
+                                                "the file) to 10000, got -100"),
+                 qPrintable(negative.err));
     }
 
     void unitOverridesAndFormatOverride()

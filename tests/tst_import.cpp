@@ -353,6 +353,38 @@ private slots:
         QVERIFY(!saveImportPreset(ImportPreset{"../evil", {}, {}, {}, {}, {}, 0.0}, dir.path().toStdString()).empty());
     }
 
+    void importPresetRate_isRefusedOutsideZeroTo10kHz_data()
+    {
+        QTest::addColumn<QString>("rate");
+        QTest::addColumn<QString>("problem");  // empty: read
+        QTest::newRow("200 Hz") << "200" << "";
+        QTest::newRow("0: from the file") << "0" << "";
+        QTest::newRow("10 kHz") << "10000" << "";
+        QTest::newRow("negative") << "-100" << "got -100";
+        QTest::newRow("huge") << "1e12" << "got 1e+12";
+        QTest::newRow("text") << "\"fast\"" << "got \"fast\"";
+        QTest::newRow("null") << "null" << "got null";
+    }
+
+    void importPresetRate_isRefusedOutsideZeroTo10kHz()
+    {
+        QFETCH(QString, rate);
+        QFETCH(QString, problem);
+        const std::string json = R"({"format": "footpath-import-preset", "version": 1, "name": "x", "rate_hz": )"
+                                 + rate.toStdString() + "}";
+        ImportPreset preset;
+        preset.rate_hz = 55.0;
+        const QString error = QString::fromStdString(importPresetFromJson(json, "presets/x.json", preset));
+        if (problem.isEmpty()) {
+            QVERIFY2(error.isEmpty(), qPrintable(error));
+            QCOMPARE(preset.rate_hz, rate.toDouble());
+            return;
+        }
+        QCOMPARE(error, "presets/x.json: \"rate_hz\" must be a number of Hz from 0 (the rate comes from the file) to "
+                        "10000, " + problem);
+        QCOMPARE(preset.rate_hz, 55.0);  // left as it was
+    }
+
     // ---- header names -------------------------------------------------------------------------
     void headerNames_data()
     {

@@ -3,6 +3,7 @@
 // line, the errors a user sees (file:line:column: message), format detection, and every real IPOL
 // MTw export in ../shared/datasets/xsens-mtw-ipol.
 
+#include "io/LineReader.h"
 #include "io/XsensTextReader.h"
 
 #include "TestData.h"
@@ -504,7 +505,8 @@ void TestXsensTextReader::errors_data()
     QTest::newRow("metadata only") << rate + "// Filter Profile: human\n" << 0.0 << 0 << 0
                                    << "no column line after 2 metadata line(s)";
     QTest::newRow("counter without any rate") << kImuHeader + imuRows({0, 1}) << 0.0 << 0 << 0 << "give the sample rate";
-    QTest::newRow("a line without end") << QByteArray(70000, 'x') << 0.0 << 1 << 0 << "longer than 64 KiB";
+    QTest::newRow("a line without end") << QByteArray(int(footpath::kMaxTextLineLength_bytes) + 1, 'x') << 0.0 << 1 << 0
+                                        << "the line is longer than 1 MiB (1048576 bytes)";
     QTest::newRow("binary bytes") << QByteArray("\xFA\xFF\x36\x10\x20\x02\x00\x01\xFA\xFF\x0D", 11) << 0.0 << 1 << 0
                                   << "missing column(s) Acc_X";
 }

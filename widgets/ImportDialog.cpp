@@ -79,7 +79,7 @@ ImportDialog::ImportDialog(const QString& path, const QString& problem, const Im
     form->addRow(tr("Gyroscope unit:"), gyrUnit_);
     form->addRow(tr("Time unit:"), timeUnit_);
     rate_ = new QDoubleSpinBox(this);
-    rate_->setRange(0.0, 10000.0);
+    rate_->setRange(0.0, kMaxImportRate_hz);
     rate_->setSuffix(tr(" Hz"));
     rate_->setSpecialValueText(tr("from the time column"));
     rate_->setValue(start.rate_hz);

@@ -13,7 +13,7 @@ OtherFootSession::OtherFootSession(AnalysisSession& session, QObject* parent)
 {
     connect(loader_, &RecordingLoader::loaded, this,
             [this](const QString&, const std::shared_ptr<const ImportResult>& read) {
-                recording_ = std::make_shared<const Recording>(read->recording);
+                recording_ = std::shared_ptr<const Recording>(read, &read->recording);  // shared, not copied
                 estimate();
             });
     connect(loader_, &RecordingLoader::failed, this, [this](const QString& path, const QString& message) {

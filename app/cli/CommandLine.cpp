@@ -1,5 +1,6 @@
 #include "cli/CommandLine.h"
 
+#include "io/Import.h"
 #include "io/NearestNames.h"
 #include "nav/MethodSets.h"
 
@@ -285,7 +286,13 @@ const std::map<std::string, Handler>& valueOptions()
         {"--acc-unit", storeText(&CommandLine::accUnit)},
         {"--gyr-unit", storeText(&CommandLine::gyrUnit)},
         {"--time-unit", storeText(&CommandLine::timeUnit)},
-        {"--rate", storePositive(&CommandLine::rate_hz, "--rate", "a rate in Hz")},
+        {"--rate", [](CommandLine& c, const std::string& v) {
+             // The bound of an import preset's rate_hz: a larger number is a typing error.
+             if (parsePositive(v, c.rate_hz) && c.rate_hz <= kMaxImportRate_hz)
+                 return std::string();
+             return "--rate expects a rate in Hz > 0 and up to " + std::to_string(static_cast<int>(kMaxImportRate_hz))
+                    + ", got '" + v + "'";
+         }},
         {"--trajectory", storeText(&CommandLine::trajectoryOut)},
         {"--steps", storeText(&CommandLine::stepsOut)},
         {"--summary", storeText(&CommandLine::summaryOut)},

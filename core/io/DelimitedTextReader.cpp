@@ -2,6 +2,8 @@
 
 #include "io/ColumnNames.h"
 #include "io/Import.h"
+#include "io/LineReader.h"
+#include "io/SampleLimit.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,6 +14,8 @@
 namespace footpath {
 
 namespace {
+
+constexpr std::size_t kMaxListedHeaderChars = 300;
 
 struct Column {
     ColumnMeaning meaning;
@@ -114,7 +118,7 @@ std::string placeOf(const ReadError& problem)
 class TextParser {
 public:
     TextParser(std::istream& in, std::string source, const ImportOptions& options, std::size_t totalBytes)
-        : in_(in), options_(options), totalBytes_(totalBytes)
+        : lines_(in), options_(options), totalBytes_(totalBytes), sampleLimit_(sampleLimit(options))
     {
         result_.recording.source = std::move(source);
         result_.info.format = "delimited";
@@ -143,14 +147,15 @@ private:
     RowOutcome parseRow(const std::string& line);
     bool readNumbers(ImuSample& sample, Eigen::Vector3d& reference, double& counter, std::size_t& badColumn);
     bool reportProgress();
-    void reserveSamples(std::size_t firstLineLength);
+    bool reserveSamples(std::size_t firstLineLength);
     void readRows(std::string& line, bool more);
     void judgeSkippedRows();
     void warnAboutSkippedRows();
 
-    std::istream& in_;
+    LineReader lines_;
     const ImportOptions& options_;
     std::size_t totalBytes_;
+    std::size_t sampleLimit_;
     ImportResult result_;
     std::vector<Column> columns_;
     std::vector<std::string> names_;
@@ -170,12 +175,16 @@ private:
     std::vector<std::string> cells_;
 };
 
+/// False at the end of the file, and with an error for a line beyond the bound (a file without
+/// line breaks), which is never read whole.
 bool TextParser::nextContentLine(std::string& line)
 {
-    while (std::getline(in_, line)) {
-        ++lineNumber_;
-        bytesRead_ += line.size() + 1;
-        lineTerminated_ = !in_.eof();
+    while (lines_.next(line)) {
+        lineNumber_ = lines_.lineNumber();
+        bytesRead_ = lines_.bytesRead();
+        lineTerminated_ = lines_.terminated();
+        if (lines_.overlong())
+            return fail(0, lines_.overlongMessage() + "; expected one sample a line");
         if (!isBlank(line))
             return true;
     }
@@ -257,6 +266,8 @@ bool TextParser::checkRequiredRoles()
         std::string found;
         for (const std::string& name : names_)
             found += (found.empty() ? "" : ", ") + name;
+        if (found.size() > kMaxListedHeaderChars)  // a header of thousands of names would flood the message
+            found = found.substr(0, kMaxListedHeaderChars) + " ... (" + std::to_string(names_.size()) + " columns)";
         if (!options_.columnMap.empty())
             return fail(0, "the column map lacks:" + missing + "; it has: " + found);
         const std::string hint = names_.size() == 1 ? " (one column only: columns must be separated by commas, "
@@ -356,6 +367,10 @@ RowOutcome TextParser::parseRow(const std::string& line)
     if (counterPeriod_s_ > 0.0)
         sample.time_s = counter * counterPeriod_s_;
     std::vector<ImuSample>& samples = result_.recording.samples;
+    if (samples.size() == sampleLimit_) {
+        fail(0, tooManySamplesMessage(sampleLimit_, {}, options_));
+        return RowOutcome::Fatal;
+    }
     if (!samples.empty() && sample.time_s < samples.back().time_s) {
         std::ostringstream message;
         message.precision(12);
@@ -416,14 +431,24 @@ void TextParser::warnAboutSkippedRows()
     }
 }
 
-void TextParser::reserveSamples(std::size_t firstLineLength)
+/// False, with the error, when the file clearly holds more samples than the limit: said before
+/// reading on, not when the memory has run out.
+bool TextParser::reserveSamples(std::size_t firstLineLength)
 {
+    if (totalBytes_ > bytesRead_) {
+        const std::string problem = checkEstimatedSamples(totalBytes_ - bytesRead_, firstLineLength + 1, "row", options_);
+        if (!problem.empty()) {
+            result_.error = ReadError{result_.recording.source, 0, 0, problem};
+            return false;
+        }
+    }
     // Growing a vector by doubling holds old and new copies at once; an estimate from the file size
     // with a margin avoids that (pages reserved but never written cost no memory).
     if (totalBytes_ > 0 && firstLineLength > 0) {
         const std::size_t estimate = totalBytes_ / (firstLineLength + 1) + 16;
-        result_.recording.samples.reserve(std::min(estimate + estimate / 8, totalBytes_ / 8 + 16));
+        result_.recording.samples.reserve(std::min({estimate + estimate / 8, totalBytes_ / 8 + 16, sampleLimit_}));
     }
+    return true;
 }
 
 void TextParser::readRows(std::string& line, bool more)
@@ -437,8 +462,10 @@ ImportResult TextParser::run()
 {
     std::string line;
     if (!nextContentLine(line)) {
-        lineNumber_ = 0;
-        fail(0, "the file is empty: expected a header row and numeric samples");
+        if (!result_.error) {
+            lineNumber_ = 0;
+            fail(0, "the file is empty: expected a header row and numeric samples");
+        }
         return std::move(result_);
     }
     if (line.rfind("\xEF\xBB\xBF", 0) == 0)  // spreadsheet "CSV UTF-8" exports start with a BOM
@@ -456,7 +483,8 @@ ImportResult TextParser::run()
     if (more) {
         // "9,81" with a semicolon or tab delimiter is a decimal comma, not two cells.
         decimalComma_ = delimiter_ != ',' && line.find(',') != std::string::npos;
-        reserveSamples(line.size());
+        if (!reserveSamples(line.size()))
+            return std::move(result_);
     }
     readRows(line, more);
     if (result_.error)

@@ -258,6 +258,16 @@ void listChannels(ImportResult& r)
         channels.push_back("gait-events");
 }
 
+/// The finishing steps pass over every sample, a few tenths of a second on a ten-hour file: a cancel
+/// between them is heard without waiting for all of them.
+bool cancelledWhileFinishing(ImportResult& r, const std::string& path, const ImportOptions& options)
+{
+    if (!options.progress || options.progress(1.0))
+        return false;
+    r.error = ReadError{path, 0, 0, "reading cancelled"};
+    return true;
+}
+
 void finishImport(ImportResult& r, const std::string& path, const ImportOptions& options)
 {
     resolveTimeUnit(r, options);
@@ -265,9 +275,15 @@ void finishImport(ImportResult& r, const std::string& path, const ImportOptions&
     resolveGyrUnit(r, options);
     if (options.rate_hz > 0.0)
         r.info.rate_hz = options.rate_hz;
+    if (cancelledWhileFinishing(r, path, options))
+        return;
     reportGaps(r);
+    if (cancelledWhileFinishing(r, path, options))
+        return;
     for (std::string& warning : describeSaturation(r.recording.samples))
         r.recording.warnings.push_back(std::move(warning));
+    if (cancelledWhileFinishing(r, path, options))
+        return;
     if (r.info.format == "pyshoe-vicon") {
         r.recording.reference.closedLoop = true;
         r.recording.reference.notes.push_back("closed loop: every pyshoe-vicon trial ends where it started");

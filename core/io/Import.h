@@ -20,6 +20,10 @@ const char* unitName(AccUnit unit);   ///< "m/s^2", "g", "unknown"
 const char* unitName(GyrUnit unit);   ///< "rad/s", "deg/s", "unknown"
 const char* unitName(TimeUnit unit);  ///< "s", "ms", "us", "unknown"
 
+/// The highest sample rate an import option or preset may state: above any IMU's output rate, so a
+/// larger number is a typing error (a period in us, say), not a rate.
+constexpr double kMaxImportRate_hz = 10000.0;
+
 /// What the user says about a file; everything left Unknown/empty/0 is detected or read from it.
 struct ImportOptions {
     std::string format;                         ///< "" detects; else one of importFormatNames()
@@ -29,6 +33,9 @@ struct ImportOptions {
     GyrUnit gyrUnit = GyrUnit::Unknown;         ///< override
     TimeUnit timeUnit = TimeUnit::Unknown;      ///< override for a time column without a stated unit
     double rate_hz = 0.0;                       ///< override, or the rate of a counter time base
+    /// The most samples to take; a file with more is refused (io/SampleLimit.h). 0: what this
+    /// computer's memory holds for the analysis, defaultSampleLimit().
+    std::size_t maxSamples = 0;
     std::function<bool(double)> progress;       ///< fraction of bytes read; return false to cancel
 };
 

@@ -52,6 +52,24 @@ bool validName(const std::string& name)
     return !name.empty() && name.find_first_of("/\\:") == std::string::npos && name.front() != '.';
 }
 
+/// "rate_hz" is optional; 0 says "from the file", as it does in ImportOptions.
+std::string readRate(const QJsonObject& root, const std::string& sourceName, double& rate_hz)
+{
+    rate_hz = 0.0;
+    if (!root.contains("rate_hz"))
+        return {};
+    const QJsonValue value = root.value("rate_hz");
+    if (value.isDouble() && value.toDouble() >= 0.0 && value.toDouble() <= kMaxImportRate_hz) {
+        rate_hz = value.toDouble();
+        return {};
+    }
+    const QString given = value.isDouble() ? QString::number(value.toDouble(), 'g', 10)
+                                           : QString::fromUtf8(QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact))
+                                                 .mid(1).chopped(1);
+    return sourceName + ": \"rate_hz\" must be a number of Hz from 0 (the rate comes from the file) to "
+           + QString::number(kMaxImportRate_hz).toStdString() + ", got " + given.toStdString();
+}
+
 }  // namespace
 
 bool parseAccUnit(const std::string& text, AccUnit& unit) { return parseUnit(kAccUnits, text, unit); }
@@ -100,7 +118,8 @@ std::string importPresetFromJson(const std::string& json, const std::string& sou
         return sourceName + ": \"gyr_unit\" must be radps or degps";
     if (root.contains("time_unit") && !parseTimeUnit(unitText("time_unit"), read.timeUnit))
         return sourceName + ": \"time_unit\" must be s, ms or us";
-    read.rate_hz = root.value("rate_hz").toDouble(0.0);
+    if (std::string problem = readRate(root, sourceName, read.rate_hz); !problem.empty())
+        return problem;
     preset = read;
     return {};
 }

@@ -1,5 +1,7 @@
 #include "io/MtbReader.h"
 
+#include "io/SampleLimit.h"
+
 #include "xbus/LegacyMtData.h"
 #include "xbus/MtData2.h"
 #include "xbus/XbusFrame.h"
@@ -58,7 +60,7 @@ enum class TimeBase { Undecided, SampleTimeFine, Counter, MessageOrder };
 class MtbParser {
 public:
     MtbParser(std::istream& in, std::string source, const ImportOptions& options, std::size_t totalBytes)
-        : in_(in), options_(options), totalBytes_(totalBytes)
+        : in_(in), options_(options), totalBytes_(totalBytes), sampleLimit_(sampleLimit(options))
     {
         result_.recording.source = std::move(source);
         result_.info.format = "xsens-mtb";
@@ -90,7 +92,7 @@ private:
     void addSample(const MtData2Sample& data);
     void chooseTimeBase(const MtData2Sample& data);
     std::optional<std::uint64_t> rawStamp(const MtData2Sample& data) const;
-    void reserveSamples(std::uint64_t offset);
+    bool reserveSamples(std::uint64_t offset);
     bool finish();
     void reportStreamDamage();
     std::string skippedBytesWarning() const;
@@ -103,6 +105,7 @@ private:
     std::istream& in_;
     const ImportOptions& options_;
     std::size_t totalBytes_;
+    std::size_t sampleLimit_;
     ImportResult result_;
     XbusFrameDecoder decoder_;
     XbusMessage message_;
@@ -143,13 +146,13 @@ bool MtbParser::readAll()
         decoder_.feed(reinterpret_cast<const std::uint8_t*>(chunk.data()), got);
         bytesRead_ += got;
         drainDecoder();
-        if (!reportProgress())
+        if (result_.error || !reportProgress())
             return false;
     }
     readFailed_ = in_.bad();
     decoder_.finish();
     drainDecoder();
-    return true;
+    return !result_.error;
 }
 
 bool MtbParser::reportProgress()
@@ -163,7 +166,7 @@ bool MtbParser::reportProgress()
 
 void MtbParser::drainDecoder()
 {
-    while (decoder_.next(message_))
+    while (!result_.error && decoder_.next(message_))
         handleMessage(message_);
 }
 
@@ -261,7 +264,8 @@ void MtbParser::addSample(const MtData2Sample& data)
     }
     if (timeBase_ == TimeBase::Undecided) {
         chooseTimeBase(data);
-        reserveSamples(offset);
+        if (!reserveSamples(offset))
+            return;
     }
     const std::optional<std::uint64_t> raw = rawStamp(data);
     if (timeBase_ != TimeBase::MessageOrder && !raw) {
@@ -283,6 +287,11 @@ void MtbParser::addSample(const MtData2Sample& data)
     sawMag_ = sawMag_ || data.magneticField.has_value();
     sawPressure_ = sawPressure_ || data.pressure_pa.has_value();
 
+    if (ticks_.size() == sampleLimit_) {
+        fail(tooManySamplesMessage(sampleLimit_, {}, options_) + " (stopped at byte offset " + std::to_string(offset)
+             + ")");
+        return;
+    }
     ImuSample sample;
     sample.acc_mps2 = *data.acceleration;
     sample.gyr_radps = *data.rateOfTurn;
@@ -292,15 +301,21 @@ void MtbParser::addSample(const MtData2Sample& data)
     ticks_.push_back(ticks);
 }
 
-void MtbParser::reserveSamples(std::uint64_t offset)
+/// False, with the error, when the file clearly holds more samples than the limit: said before
+/// reading on, not when the memory has run out.
+bool MtbParser::reserveSamples(std::uint64_t offset)
 {
     // The data messages of a log usually all have the size of the first one, so the rest of the
     // file holds about this many samples: allocating once avoids the peak of a doubling vector.
     if (totalBytes_ <= offset || frameSize_ == 0)
-        return;
-    const std::size_t expected = static_cast<std::size_t>(totalBytes_ - offset) / frameSize_ + 1;
+        return true;
+    const auto remaining = static_cast<std::size_t>(totalBytes_ - offset);
+    if (std::string problem = checkEstimatedSamples(remaining, frameSize_, "message", options_); !problem.empty())
+        return fail(std::move(problem));
+    const std::size_t expected = std::min(remaining / frameSize_ + 1, sampleLimit_);
     result_.recording.samples.reserve(expected);
     ticks_.reserve(expected);
+    return true;
 }
 
 bool MtbParser::finish()

@@ -1,5 +1,8 @@
 #include "io/XsensTextReader.h"
 
+#include "io/LineReader.h"
+#include "io/SampleLimit.h"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -8,7 +11,6 @@
 #include <limits>
 #include <optional>
 #include <sstream>
-#include <streambuf>
 #include <string_view>
 #include <vector>
 
@@ -20,13 +22,10 @@ constexpr std::uint64_t kPacketCounterModulus = 65536;           // u16 (MTData2
 constexpr std::uint64_t kSampleTimeFineModulus = 4294967296ULL;  // u32 (MTData2 0x1060)
 // Counters are read as doubles ("0.0" in the IPOL files); above 2^53 they are no longer exact.
 constexpr double kLargestExactCounter = 9007199254740992.0;
-// No export line comes near this; a file without newlines (binary, or not an export) stops here
-// instead of being read into one string.
-constexpr std::size_t kMaxLineLength = 64 * 1024;
 constexpr std::size_t kProgressIntervalLines = 1024;
 constexpr std::size_t kMaxListedHeaderChars = 300;
 constexpr std::size_t kDamagedRowsShown = 3;  // more are counted, not listed
-// Cap on the up-front reservation in case totalBytes is wrong (4 Mi samples = 11 h at 100 Hz).
+// No row is shorter: bounds the up-front reservation should totalBytes be wrong.
 constexpr std::size_t kShortestRow_bytes = 8;
 
 enum class Field { Counter, SampleTimeFine, AccX, AccY, AccZ, GyrX, GyrY, GyrZ, MagX, MagY, MagZ, Pressure, Count };
@@ -162,54 +161,6 @@ std::string formatNumber(double value)
     return out.str();
 }
 
-/// Reads lines from a stream buffer one character at a time, so that a file without newlines
-/// cannot grow a line without bound, and remembers whether the last line ended with a newline (a
-/// file cut in the middle of a line does not).
-class LineReader {
-public:
-    explicit LineReader(std::istream& in) : buffer_(in.rdbuf()) {}
-
-    bool next(std::string& line);
-    std::size_t lineNumber() const { return lineNumber_; }
-    std::size_t bytesRead() const { return bytesRead_; }
-    bool terminated() const { return terminated_; }
-    bool overlong() const { return overlong_; }
-
-private:
-    std::streambuf* buffer_;
-    std::size_t lineNumber_ = 0;
-    std::size_t bytesRead_ = 0;
-    bool terminated_ = false;
-    bool overlong_ = false;
-};
-
-bool LineReader::next(std::string& line)
-{
-    line.clear();
-    terminated_ = false;
-    if (buffer_ == nullptr || overlong_)
-        return false;
-    using Traits = std::streambuf::traits_type;
-    for (Traits::int_type ch = buffer_->sbumpc(); !Traits::eq_int_type(ch, Traits::eof()); ch = buffer_->sbumpc()) {
-        ++bytesRead_;
-        if (Traits::to_char_type(ch) == '\n') {
-            terminated_ = true;
-            break;
-        }
-        line.push_back(Traits::to_char_type(ch));
-        if (line.size() >= kMaxLineLength) {
-            overlong_ = true;
-            break;
-        }
-    }
-    if (!terminated_ && line.empty())
-        return false;
-    ++lineNumber_;
-    if (!line.empty() && line.back() == '\r')
-        line.pop_back();
-    return true;
-}
-
 /// Unwraps a counter that wraps at `modulus` into a monotonic count. A step is (new - old) mod
 /// modulus; a step longer than half the range is the counter going back, not that many lost packets
 /// (half of 65536 packets is 5.5 min at 100 Hz). Values at or above the modulus mean the export
@@ -286,7 +237,7 @@ struct Row {
 class XsensTextParser {
 public:
     XsensTextParser(std::istream& in, const std::string& source, const ImportOptions& options, std::size_t totalBytes)
-        : lines_(in), options_(options), totalBytes_(totalBytes)
+        : lines_(in), options_(options), totalBytes_(totalBytes), sampleLimit_(sampleLimit(options))
     {
         result_.recording.source = source;
     }
@@ -311,8 +262,8 @@ private:
     bool unwrapCounters(const Row& row, std::optional<std::uint64_t>& ticks);
     void holdMagAndPressure(const Row& row);
     double toPascal(double pressure);
-    void keepSample(const Row& row, std::uint64_t ticks, std::size_t lineLength);
-    void reserveSamples(std::size_t lineLength);
+    bool keepSample(const Row& row, std::uint64_t ticks, std::size_t lineLength);
+    bool reserveSamples(std::size_t lineLength);
     bool reportProgress();
     bool finish();
     bool resolveRate();
@@ -323,6 +274,7 @@ private:
     LineReader lines_;
     const ImportOptions& options_;
     std::size_t totalBytes_;
+    std::size_t sampleLimit_;
     ImportResult result_;
     Layout layout_;
     std::size_t columnLine_ = 0;
@@ -346,7 +298,7 @@ bool XsensTextParser::readColumnLine(std::string& header)
     std::size_t metadataLines = 0;
     while (lines_.next(header)) {
         if (lines_.overlong())
-            return fail(lines_.lineNumber(), 0, "line longer than 64 KiB: this is not an MT Manager text export");
+            return fail(lines_.lineNumber(), 0, lines_.overlongMessage() + "; this is not an MT Manager text export");
         const std::string_view line = lines_.lineNumber() == 1 ? withoutByteOrderMark(header) : header;
         if (isBlank(line))
             continue;
@@ -432,7 +384,7 @@ bool XsensTextParser::readRows()
     std::string line;
     while (lines_.next(line)) {
         if (lines_.overlong())
-            return fail(lines_.lineNumber(), 0, "line longer than 64 KiB: expected one packet a line");
+            return fail(lines_.lineNumber(), 0, lines_.overlongMessage() + "; expected one packet a line");
         if (!isBlank(line) && !startsWith(trimmed(line), "//") && !readRow(line))
             return false;
         if (lines_.lineNumber() % kProgressIntervalLines == 0 && !reportProgress())
@@ -465,7 +417,7 @@ bool XsensTextParser::readRow(const std::string& line)
     else if (!ticks_.empty() && *ticks == ticks_.back())
         repeatedRows_.add(lines_.lineNumber());
     else
-        keepSample(row, *ticks, line.size());
+        return keepSample(row, *ticks, line.size());
     return true;
 }
 
@@ -548,10 +500,12 @@ double XsensTextParser::toPascal(double pressure)
     return pressure * pressureScale_;
 }
 
-void XsensTextParser::keepSample(const Row& row, std::uint64_t ticks, std::size_t lineLength)
+bool XsensTextParser::keepSample(const Row& row, std::uint64_t ticks, std::size_t lineLength)
 {
-    if (ticks_.empty())
-        reserveSamples(lineLength);
+    if (ticks_.empty() && !reserveSamples(lineLength))
+        return false;
+    if (ticks_.size() == sampleLimit_)
+        return fail(lines_.lineNumber(), 0, tooManySamplesMessage(sampleLimit_, {}, options_));
     ImuSample sample;
     sample.acc_mps2 = row.vector(Field::AccX);
     sample.gyr_radps = row.vector(Field::GyrX);
@@ -559,20 +513,26 @@ void XsensTextParser::keepSample(const Row& row, std::uint64_t ticks, std::size_
     sample.pressure_pa = lastPressure_pa_;
     result_.recording.samples.push_back(sample);
     ticks_.push_back(ticks);
+    return true;
 }
 
-void XsensTextParser::reserveSamples(std::size_t lineLength)
+/// False, with the error, when the file clearly holds more samples than the limit: said before
+/// reading on, not when the memory has run out.
+bool XsensTextParser::reserveSamples(std::size_t lineLength)
 {
     if (totalBytes_ <= lines_.bytesRead())
-        return;
+        return true;
     // Reserving too much costs address space only (pages never written stay unmapped); too little
     // makes the vector regrow by doubling, holding old and new copies at once. So: the estimate
     // plus a margin, bounded by the shortest possible row (8 bytes).
     const std::size_t remaining = totalBytes_ - lines_.bytesRead();
+    if (std::string problem = checkEstimatedSamples(remaining, lineLength + 1, "row", options_); !problem.empty())
+        return fail(0, 0, std::move(problem));
     const std::size_t estimate = remaining / (lineLength + 1) + 1;
-    const std::size_t count = std::min(estimate + estimate / 8, remaining / kShortestRow_bytes + 1);
+    const std::size_t count = std::min({estimate + estimate / 8, remaining / kShortestRow_bytes + 1, sampleLimit_});
     result_.recording.samples.reserve(count);
     ticks_.reserve(count);
+    return true;
 }
 
 bool XsensTextParser::reportProgress()
