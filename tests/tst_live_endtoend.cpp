@@ -150,7 +150,8 @@ std::map<QString, std::uint64_t> injectedSummary(const QString& emulatorOutput)
 
 std::uint64_t countFate(const std::vector<Sent>& sent, const char* fate)
 {
-    return std::uint64_t(std::count_if(sent.begin(), sent.end(), [fate](const Sent& s) { return s.fate == QLatin1String(fate); }));
+    const auto hasFate = [fate](const Sent& s) { return s.fate == QLatin1String(fate); };
+    return std::uint64_t(std::count_if(sent.begin(), sent.end(), hasFate));
 }
 
 /// A recording re-opened through the importer holds the first samples the emulator sent intact,
@@ -306,7 +307,8 @@ private slots:
         // Losses before the first or after the last intact message show as no counter gap.
         const auto firstIntact = std::find_if(sent.begin(), sent.end(), [](const Sent& s) { return s.intact(); });
         const auto lastIntact = std::find_if(sent.rbegin(), sent.rend(), [](const Sent& s) { return s.intact(); });
-        const std::uint64_t lostAtTheEdges = std::uint64_t(firstIntact - sent.begin()) + std::uint64_t(lastIntact - sent.rbegin());
+        const std::uint64_t lostAtTheEdges =
+            std::uint64_t(firstIntact - sent.begin()) + std::uint64_t(lastIntact - sent.rbegin());
         QCOMPARE(lastCounter(run.out, QStringLiteral("checksum errors")), injected[QStringLiteral("corrupted")]);
         QCOMPARE(lastCounter(run.out, QStringLiteral("junk bytes")), injected[QStringLiteral("junk_bytes")]);
         QCOMPARE(lastCounter(run.out, QStringLiteral("lost")),
@@ -333,7 +335,8 @@ private slots:
         const QString problem = emulator.start(
             link, log,
             {QStringLiteral("--speed"), QStringLiteral("5"), QStringLiteral("--burst-at"), QStringLiteral("2"),
-             QStringLiteral("--burst-for"), QStringLiteral("4"), QStringLiteral("--burst-factor"), QStringLiteral("10")});
+             QStringLiteral("--burst-for"), QStringLiteral("4"), QStringLiteral("--burst-factor"),
+             QStringLiteral("10")});
         if (!problem.isEmpty())
             QSKIP(qPrintable(QStringLiteral("cannot run the emulator: ") + problem));
 

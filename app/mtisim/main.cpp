@@ -405,7 +405,9 @@ void observeInto(std::FILE* log, MtiEmulator& emulator)
 /// counters with it.
 void sayInjected(const MtiInjected& injected, std::uint64_t unreadBytes)
 {
-    const auto pair = [](const char* key, std::uint64_t value) { return " " + std::string(key) + "=" + std::to_string(value); };
+    const auto pair = [](const char* key, std::uint64_t value) {
+        return " " + std::string(key) + "=" + std::to_string(value);
+    };
     say("injected:" + pair("data_messages", injected.dataMessages) + pair("dropped", injected.dropped)
         + pair("corrupted", injected.corrupted) + pair("corrupted_bytes", injected.corruptedBytes)
         + pair("junk_bytes", injected.junkBytes) + pair("junk_runs", injected.junkRuns)
