@@ -39,6 +39,8 @@ SessionSettings settingsFrom(const CommandLine& cmd)
     settings.stopAfter_s = cmd.duration_s;
     settings.recording.mtb = QString::fromStdString(cmd.outFile);
     settings.recording.csv = QString::fromStdString(cmd.csvOut);
+    // Nothing here looks at the samples: hold none for a view (the recorder never depends on it).
+    settings.displayQueueSamples = 1;
     return settings;
 }
 
