@@ -91,6 +91,8 @@ public:
         return QFileInfo(link).isSymLink() ? QString() : QStringLiteral("the emulator's port did not appear");
     }
     bool waitForExit() { return process_.waitForFinished(10000); }
+    /// What it printed; complete once it has exited (waitForExit() or stop()).
+    QString output() { return QString::fromLocal8Bit(process_.readAllStandardOutput()); }
     void stop()
     {
         if (process_.state() == QProcess::NotRunning)

@@ -355,6 +355,20 @@ private slots:
         QCOMPARE(rig.session.state(), SessionState::Streaming);
     }
 
+    void aFloodOfDeviceErrorsIsCountedButWarnedOnce()
+    {
+        // Queued warnings for a busy GUI must not grow with the device's error rate.
+        Rig rig;
+        QVERIFY(rig.start());
+        QByteArray flood;
+        for (int k = 0; k < 500; ++k)
+            flood += toBytes(encodeFrame(errorMessage(XbusErrorCode::DataOverflow)));
+        flood += dataFrame(0);
+        feedInChunks(rig.line, flood);
+        QTRY_COMPARE(rig.session.counters().deviceErrors, std::uint64_t(500));
+        QCOMPARE(rig.warningTexts().filter(QStringLiteral("data overflow")).size(), 1);
+    }
+
     void stopAsksTheDeviceToStop()
     {
         Rig rig;
@@ -475,6 +489,60 @@ private slots:
         QCOMPARE(kept.size(), std::size_t(10));
         QCOMPARE(*kept.front().packetCounter, std::uint16_t(40));  // the newest are kept
         QCOMPARE(available.count(), 1);  // one notification until the queue is drained
+    }
+
+    void displayOverflowNeverTouchesTheRecording()
+    {
+        // A consumer that never takes its samples (a frozen GUI): the queue holds its bound, the
+        // rest is counted as not shown, and the recording has every sample all the same.
+        QTemporaryDir dir;
+        Rig rig;
+        SessionSettings settings = fastSettings();
+        settings.displayQueueSamples = 25;
+        settings.recording = {dir.filePath(QStringLiteral("slow.mtb")), dir.filePath(QStringLiteral("slow.csv"))};
+        QVERIFY(rig.start(settings));
+        QByteArray stream;
+        for (std::uint16_t c = 0; c < 400; ++c)
+            stream += dataFrame(c);
+        feedInChunks(rig.line, stream);
+        QTRY_COMPARE(rig.session.counters().samplesReceived, std::uint64_t(400));
+        QTRY_COMPARE(rig.session.counters().samplesNotShown, std::uint64_t(375));
+        rig.session.stop();
+        QVERIFY(rig.ended.wait(5000) || !rig.ended.isEmpty());
+        QCOMPARE(rig.session.takeSamples().size(), std::size_t(25));
+        const ImportResult csv = importRecording(settings.recording.csv.toStdString());
+        const ImportResult mtb = importRecording(settings.recording.mtb.toStdString());
+        QVERIFY(csv.ok() && mtb.ok());
+        QCOMPARE(csv.recording.samples.size(), std::size_t(400));
+        QCOMPARE(mtb.recording.samples.size(), std::size_t(400));
+        QCOMPARE(csv.recording.samples.back().acc_mps2.x(), 0.5 * 399);
+    }
+
+    void stoppedRecordingEndsOnAWholeMessage()
+    {
+        // Stopped while the decoder still waits on a false preamble inside a damaged message: the
+        // .mtb ends with the last whole message, so it re-opens without a truncated tail.
+        QTemporaryDir dir;
+        Rig rig;
+        SessionSettings settings = fastSettings();
+        settings.recording = {dir.filePath(QStringLiteral("cut.mtb")), {}};
+        QVERIFY(rig.start(settings));
+        QByteArray stream;
+        for (std::uint16_t c = 0; c < 20; ++c)
+            stream += dataFrame(c);
+        QByteArray damaged = toBytes(encodeFrame(
+            xbusMessage(XbusMid::MtData2, {0x10, 0x20, 0x02, 0x00, 0x14, 0xFA, 0xFF, 0x36, 0x40, 0x01})));
+        damaged[4] = char(damaged[4] ^ 0x01);  // the checksum fails; FA FF 36 40 inside claims 64 more bytes
+        rig.line.feedReceived(stream + QByteArray("\x01\x02\x03", 3) + damaged);
+        QTRY_COMPARE(rig.session.counters().checksumErrors, std::uint64_t(1));
+        rig.session.stop();
+        QVERIFY(rig.ended.wait(5000) || !rig.ended.isEmpty());
+        const ImportResult mtb = importRecording(settings.recording.mtb.toStdString());
+        QVERIFY(mtb.ok());
+        QCOMPARE(mtb.recording.samples.size(), std::size_t(20));
+        QVERIFY(!mtb.info.truncated);
+        for (const std::string& warning : mtb.recording.warnings)
+            QVERIFY2(warning.find("ends inside") == std::string::npos, warning.c_str());
     }
 
     void recordingCanStartAndStopMidStream()

@@ -279,7 +279,8 @@ private slots:
     {
         const auto run = [](std::uint32_t seed) {
             MtiEmulatorConfig config;
-            config.faults = {0.1, 0.1, 0.1, 0.0, seed};
+            config.faults.corruptRate = config.faults.dropRate = config.faults.junkRate = 0.1;
+            config.faults.seed = seed;
             MtiEmulator device = configDevice(config);
             device.receive(frame(goToMeasurementMessage()), 0.0);
             return device.advance(5.0);
@@ -291,14 +292,21 @@ private slots:
     void faultsAreWhatTheObserverSays()
     {
         MtiEmulatorConfig config;
-        config.faults = {0.05, 0.05, 0.05, 0.0, 3};
+        config.faults.corruptRate = config.faults.dropRate = config.faults.junkRate = 0.05;
+        config.faults.seed = 3;
         MtiEmulator device = configDevice(config);
         std::vector<MtiEmulator::DataRecord> records;
         device.setDataObserver([&records](const MtiEmulator::DataRecord& r) { records.push_back(r); });
         device.receive(frame(goToMeasurementMessage()), 0.0);
         const Bytes stream = device.advance(20.0);
-        XbusDecodeStats stats;
-        const std::vector<MtData2Sample> received = dataOf(decode(stream, &stats));
+        XbusFrameDecoder decoder;
+        decoder.feed(stream.data(), stream.size());
+        decoder.finish();
+        std::vector<XbusMessage> messages;
+        for (XbusMessage message; decoder.next(message);)
+            messages.push_back(message);
+        const XbusDecodeStats& stats = decoder.stats();
+        const std::vector<MtData2Sample> received = dataOf(messages);
 
         std::vector<std::uint16_t> sentIntact;
         std::size_t corrupted = 0;
@@ -315,8 +323,37 @@ private slots:
         for (const MtData2Sample& s : received)
             receivedCounters.push_back(*s.packetCounter);
         QVERIFY(receivedCounters == sentIntact);  // every intact message arrives, nothing else does
-        QVERIFY(stats.checksumFailures >= corrupted - 5);  // a damaged preamble shows as skipped bytes
-        QVERIFY(stats.skippedRuns > 0);
+        // What the emulator says it injected is what a receiver finds, exactly.
+        const MtiInjected& injected = device.injected();
+        QCOMPARE(injected.dataMessages, std::uint64_t(records.size()));
+        QCOMPARE(injected.corrupted, std::uint64_t(corrupted));
+        QCOMPARE(injected.dropped, std::uint64_t(dropped));
+        QCOMPARE(stats.damagedFrames, injected.corrupted);
+        QVERIFY(stats.checksumFailures > stats.damagedFrames);  // false preambles inside damaged frames
+        QCOMPARE(stats.damagedFrameBytes, injected.corruptedBytes);
+        QCOMPARE(stats.bytesSkipped - stats.damagedFrameBytes, injected.junkBytes);
+        QVERIFY(injected.junkBytes > 0);
+        QCOMPARE(stats.bytesTruncated, std::uint64_t(0));
+    }
+
+    void burstSendsFasterWithTheRatesTimeStamps()
+    {
+        MtiEmulatorConfig config;
+        config.faults.burstAt_s = 1.0;
+        config.faults.burstLength_s = 0.5;
+        config.faults.burstFactor = 10.0;
+        MtiEmulator device = configDevice(config);
+        device.receive(frame(goToMeasurementMessage()), 0.0);
+        // 100 messages in the first wall second, then 50 in 50 ms, then 100 Hz again.
+        std::vector<MtData2Sample> samples = dataOf(decode(device.advance(1.0495)));
+        QCOMPARE(samples.size(), std::size_t(150));
+        QCOMPARE(*samples.back().sampleTimeFine, std::uint32_t(14900));  // stamped at the rate
+        QCOMPARE(device.injected().burstMessages, std::uint64_t(50));
+        QVERIFY(std::abs(device.nextEventAt() - 1.05) < 1e-9);
+        samples = dataOf(decode(device.advance(1.1495)));
+        QCOMPARE(samples.size(), std::size_t(10));  // 1.05, 1.06, ..., 1.14
+        QCOMPARE(*samples.front().packetCounter, std::uint16_t(150));
+        QCOMPARE(device.injected().burstMessages, std::uint64_t(50));
     }
 
     void junkNeverContainsThePreamble()

@@ -293,6 +293,35 @@ private slots:
         QCOMPARE(decoder.stats().checksumFailures, std::uint64_t(checksumFailures));
     }
 
+    void damagedFramesAreCountedOnceEachAndApartFromJunk()
+    {
+        // Each damaged frame holds a false preamble with a complete (failing) candidate inside.
+        std::vector<std::uint8_t> damaged =
+            encodeFrame({kXbusMasterBusId, 0x36, bytes("01 FA 12 34 02 00 00 00 05 06")});
+        damaged[4] ^= 0x10;  // a payload byte: the length still says where the frame ends
+        const std::vector<std::uint8_t> junk = bytes("01 02 03");
+        const std::vector<std::uint8_t> stream = concat({kGoToConfig, damaged, damaged, junk, kDeviceId});
+        XbusFrameDecoder decoder;
+        QCOMPARE(decodeAll(decoder, stream).size(), std::size_t(2));
+        const XbusDecodeStats& stats = decoder.stats();
+        QCOMPARE(stats.checksumFailures, std::uint64_t(4));  // two frames, two false preambles
+        QCOMPARE(stats.damagedFrames, std::uint64_t(2));
+        QCOMPARE(stats.damagedFrameBytes, std::uint64_t(2 * damaged.size()));
+        QCOMPARE(stats.bytesSkipped - stats.damagedFrameBytes, std::uint64_t(junk.size()));
+    }
+
+    void damagedLengthDoesNotHideTheNextFrame()
+    {
+        std::vector<std::uint8_t> damaged = kGoToConfig;
+        damaged[3] = 0x03;  // claims three payload bytes: the next frame's first bytes
+        XbusFrameDecoder decoder;
+        const std::vector<XbusMessage> messages = decodeAll(decoder, concat({damaged, kDeviceId}));
+        QCOMPARE(messages.size(), std::size_t(1));
+        QCOMPARE(int(messages[0].mid), 0x01);
+        QCOMPARE(decoder.stats().damagedFrames, std::uint64_t(1));
+        QCOMPARE(decoder.stats().damagedFrameBytes, std::uint64_t(damaged.size()));  // not the frame after it
+    }
+
     void frameSplitByteByByte()
     {
         XbusMessage extended{kXbusMasterBusId, 0x36, extendedExamplePayload()};

@@ -39,6 +39,8 @@ SessionSettings settingsFrom(const CommandLine& cmd)
     settings.stopAfter_s = cmd.duration_s;
     settings.recording.mtb = QString::fromStdString(cmd.outFile);
     settings.recording.csv = QString::fromStdString(cmd.csvOut);
+    // Nothing here looks at the samples: hold none for a view (the recorder never depends on it).
+    settings.displayQueueSamples = 1;
     return settings;
 }
 
@@ -53,9 +55,10 @@ void printDevice(const DeviceInfo& info)
 
 void printCounters(const DeviceCounters& c)
 {
-    std::printf("t = %7.2f s  samples %llu  lost %llu  checksum errors %llu  resyncs %llu\n", c.deviceTime_s,
-                static_cast<unsigned long long>(c.samplesReceived), static_cast<unsigned long long>(c.packetsLost),
-                static_cast<unsigned long long>(c.checksumErrors), static_cast<unsigned long long>(c.resyncs));
+    std::printf("t = %7.2f s  samples %llu  lost %llu  checksum errors %llu  junk bytes %llu  resyncs %llu\n",
+                c.deviceTime_s, static_cast<unsigned long long>(c.samplesReceived),
+                static_cast<unsigned long long>(c.packetsLost), static_cast<unsigned long long>(c.checksumErrors),
+                static_cast<unsigned long long>(c.junkBytes), static_cast<unsigned long long>(c.resyncs));
     std::fflush(stdout);
 }
 
@@ -104,6 +107,9 @@ private:
                          [this](const RecordingPaths&, const QString& error) {
                              if (error.isEmpty())
                                  return;
+                             // At once, not after the device has acknowledged the stop.
+                             std::fprintf(stderr, "footpath-cli: %s\n", error.toStdString().c_str());
+                             std::fflush(stderr);
                              recordingError_ = error;
                              session_.stop();  // a recording that cannot be written is not worth streaming
                          });
@@ -121,7 +127,7 @@ private:
         printCounters(session_.counters());
         printFiles(settings_.recording);
         if (!recordingError_.isEmpty())
-            throw BadInput{recordingError_.toStdString()};
+            return kExitDeviceProblem;  // said when it happened; the files hold what was written
         if (end_ == SessionEnd::Vanished) {  // the recording is kept, but it is shorter than asked
             std::fprintf(stderr, "footpath-cli: %s\n", endMessage_.toStdString().c_str());
             return kExitDeviceProblem;
@@ -149,6 +155,9 @@ int runRecord(const CommandLine& cmd)
     QCoreApplication app(argc, argv);
     std::signal(SIGINT, onInterrupt);
     std::signal(SIGTERM, onInterrupt);
+    // Past a file size limit (ulimit -f) a write then fails with EFBIG, which the recorder reports
+    // and survives, instead of the signal killing the process mid-write.
+    std::signal(SIGXFSZ, SIG_IGN);
     DeviceSession session;
     return RecordRun(session, settingsFrom(cmd)).exec(app);
 }

@@ -42,9 +42,10 @@ struct DeviceCounters {
     std::uint64_t framesDecoded = 0;
     std::uint64_t samplesReceived = 0;     ///< intact data messages with acceleration and rate of turn
     std::uint64_t packetsLost = 0;         ///< counter gaps: dropped or damaged on the way
-    std::uint64_t checksumErrors = 0;
+    std::uint64_t checksumErrors = 0;      ///< frames damaged on the way, each once (XbusDecodeStats::damagedFrames)
     std::uint64_t resyncs = 0;             ///< stretches of bytes skipped to find the next frame
-    std::uint64_t bytesSkipped = 0;
+    std::uint64_t bytesSkipped = 0;        ///< junk and damaged frames
+    std::uint64_t junkBytes = 0;           ///< skipped bytes outside damaged frames: noise between frames
     std::uint64_t malformedMessages = 0;   ///< frames intact but the MTData2 inside was not
     std::uint64_t incompleteMessages = 0;  ///< data messages without acceleration or rate of turn
     std::uint64_t counterRestarts = 0;     ///< the packet counter jumped back (device restart)
@@ -78,7 +79,10 @@ struct SessionSettings {
     double stopAfter_s = 0.0;    ///< device seconds of samples, then stop; 0: until close()
     RecordingPaths recording;    ///< recorded from the first sample on; empty: not recorded
     DeviceTimeouts timeouts;
-    std::size_t displayQueueSamples = 120000;  ///< bound of the queue takeSamples() drains
+    /// Bound of the queue takeSamples() drains (LiveSampleQueue): about 13 MB; 20 minutes at
+    /// 100 Hz, 60 s at 2 kHz. A consumer further behind loses the oldest samples from its view
+    /// (counted in samplesNotShown); the recording is written before the queue and keeps them.
+    std::size_t displayQueueSamples = 120000;
 };
 
 /// Where a session is.

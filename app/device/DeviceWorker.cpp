@@ -11,6 +11,7 @@ namespace {
 
 constexpr int kCountersInterval_ms = 200;
 constexpr int kSyncInterval_ms = 1000;  ///< recordings reach the disk at least this often
+constexpr qint64 kRepeatedWarningInterval_ms = 1000;
 
 QByteArray frameBytes(const XbusMessage& message)
 {
@@ -106,6 +107,7 @@ void DeviceWorker::resetStream()
     decoder_.reset();
     rawPending_.clear();
     rawPendingOffset_ = 0;
+    lastMessageEnd_ = 0;
     bytesWithoutFrames_ = false;
 }
 
@@ -247,14 +249,16 @@ void DeviceWorker::onReadyRead()
     rawPending_.append(bytes);
     decoder_.feed(reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size()));
     XbusMessage message;
-    while (port_ && decoder_.next(message))
+    while (port_ && decoder_.next(message)) {
+        lastMessageEnd_ = decoder_.pendingOffset();  // next() has just stepped past the message
         dispatch(message);
+    }
     if (state_ == SessionState::Initialising) {
         bytesWithoutFrames_ = bytesWithoutFrames_ || decoder_.stats().framesDecoded == 0;
         flushRaw(decoder_.pendingOffset());  // init traffic is not recorded: dropped here
     } else if (state_ == SessionState::Streaming) {
         deliverBatch();
-        flushRaw(decoder_.pendingOffset());
+        flushRaw(recordableEnd());
     }
     updateCounters();
 }
@@ -397,13 +401,29 @@ void DeviceWorker::handleStreamMessage(const XbusMessage& message)
     case XbusMid::MtData2: handleDataMessage(message); break;
     case XbusMid::Error:
         ++counters_.deviceErrors;
-        emit warning(tr("the device reported during measurement: %1").arg(qs(xbusErrorText(message.payload))));
+        warnAtMostOncePerSecond(
+            tr("the device reported during measurement: %1").arg(qs(xbusErrorText(message.payload))));
         break;
     case XbusMid::WakeUp:
-        emit warning(tr("the device restarted during measurement (WakeUp); it resumes with its stored settings"));
+        warnAtMostOncePerSecond(
+            tr("the device restarted during measurement (WakeUp); it resumes with its stored settings"));
         break;
     default: break;
     }
+}
+
+/// A sick device may send an Error with every sample: each distinct warning goes out at most once
+/// a second, so that the signals queued for a busy GUI stay bounded (deviceErrors counts all).
+void DeviceWorker::warnAtMostOncePerSecond(const QString& text)
+{
+    if (!warningClock_.isValid())
+        warningClock_.start();
+    const qint64 now_ms = warningClock_.elapsed();
+    const auto last = lastWarningAt_ms_.constFind(text);
+    if (last != lastWarningAt_ms_.constEnd() && now_ms - *last < kRepeatedWarningInterval_ms)
+        return;
+    lastWarningAt_ms_.insert(text, now_ms);
+    emit warning(text);
 }
 
 void DeviceWorker::handleDataMessage(const XbusMessage& message)
@@ -438,9 +458,21 @@ void DeviceWorker::deliverBatch()
     batch_.clear();
 }
 
+/// Where the recordable bytes end: after the last whole message. What follows it (junk, a damaged
+/// message, the start of the next one) waits for the next whole message, so that a recording that
+/// is stopped, cut short by a full disk or killed ends on a whole message and re-opens without a
+/// truncated tail. Garbage longer than any frame is written anyway: nothing is held without bound.
+std::uint64_t DeviceWorker::recordableEnd() const
+{
+    const std::uint64_t decided = decoder_.pendingOffset();
+    return decided - lastMessageEnd_ > kXbusMaxFrameSize ? decided : lastMessageEnd_;
+}
+
 /// Hands the received bytes before `upToOffset` (whole frames and skipped junk) to the recorder.
 void DeviceWorker::flushRaw(std::uint64_t upToOffset)
 {
+    if (upToOffset <= rawPendingOffset_)
+        return;
     const auto count = static_cast<int>(std::min<std::uint64_t>(upToOffset - rawPendingOffset_,
                                                                 static_cast<std::uint64_t>(rawPending_.size())));
     if (count <= 0)
@@ -501,7 +533,7 @@ void DeviceWorker::stop()
     case SessionState::Initialising:
         endSession(SessionEnd::Stopped, tr("stopped before the device was ready"));
         return;
-    case SessionState::Streaming: cutAndStop(decoder_.pendingOffset()); return;
+    case SessionState::Streaming: cutAndStop(recordableEnd()); return;
     }
 }
 
@@ -592,7 +624,7 @@ void DeviceWorker::shutdown()
 {
     if (state_ == SessionState::Streaming) {
         deliverBatch();
-        flushRaw(decoder_.pendingOffset());
+        flushRaw(recordableEnd());
     }
     if (state_ != SessionState::Idle)
         endSession(SessionEnd::Stopped, tr("the session was closed"));
@@ -618,9 +650,10 @@ void DeviceWorker::updateCounters()
         return;
     const XbusDecodeStats& stats = decoder_.stats();
     counters_.framesDecoded = stats.framesDecoded;
-    counters_.checksumErrors = stats.checksumFailures;
+    counters_.checksumErrors = stats.damagedFrames;
     counters_.resyncs = stats.skippedRuns;
     counters_.bytesSkipped = stats.bytesSkipped;
+    counters_.junkBytes = stats.bytesSkipped - stats.damagedFrameBytes;
     counters_.samplesReceived = assembler_.samples();
     counters_.packetsLost = assembler_.packetsLost();
     counters_.incompleteMessages = assembler_.incompleteMessages();

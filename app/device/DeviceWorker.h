@@ -7,6 +7,8 @@
 #include "SampleAssembler.h"
 #include "xbus/XbusFrame.h"
 
+#include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
 #include <QTimer>
 
@@ -71,7 +73,9 @@ private:
     void enterStreaming();
     void handleStreamMessage(const XbusMessage& message);
     void handleDataMessage(const XbusMessage& message);
+    void warnAtMostOncePerSecond(const QString& text);
     void deliverBatch();
+    std::uint64_t recordableEnd() const;
     void flushRaw(std::uint64_t upToOffset);
     void cutAndStop(std::uint64_t cutOffset);
     void finishStop();
@@ -113,12 +117,15 @@ private:
     SampleAssembler assembler_;
     QByteArray rawPending_;             ///< received bytes not yet handed to the recorder
     std::uint64_t rawPendingOffset_ = 0;  ///< stream offset of rawPending_'s first byte
+    std::uint64_t lastMessageEnd_ = 0;    ///< stream offset just past the last whole message
     std::vector<LiveSample> batch_;
     std::vector<MtData2Sample> recordBatch_;
     Recorder recorder_;
     bool recordingHeaderDue_ = false;
     QTimer countersTimer_{this};
     QTimer syncTimer_{this};
+    QElapsedTimer warningClock_;
+    QHash<QString, qint64> lastWarningAt_ms_;  ///< per distinct streaming warning
 };
 
 }  // namespace footpath

@@ -2,18 +2,23 @@
 
 #include <QMutexLocker>
 
+#include <algorithm>
+
 namespace footpath {
 
 bool LiveSampleQueue::push(const std::vector<LiveSample>& samples)
 {
     QMutexLocker lock(&mutex_);
     const bool wasEmpty = samples_.empty();
-    samples_.insert(samples_.end(), samples.begin(), samples.end());
-    if (samples_.size() > capacity_) {
-        const std::size_t excess = samples_.size() - capacity_;
+    // The newest samples stay; the queue never holds more than its capacity, not even for a moment.
+    const std::size_t incoming = std::min(samples.size(), capacity_);
+    dropped_ += samples.size() - incoming;
+    if (samples_.size() + incoming > capacity_) {
+        const std::size_t excess = samples_.size() + incoming - capacity_;
         samples_.erase(samples_.begin(), samples_.begin() + static_cast<std::ptrdiff_t>(excess));
         dropped_ += excess;
     }
+    samples_.insert(samples_.end(), samples.end() - static_cast<std::ptrdiff_t>(incoming), samples.end());
     return wasEmpty && !samples_.empty();
 }
 

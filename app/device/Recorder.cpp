@@ -8,7 +8,9 @@
 #include <QFileInfo>
 #include <QSaveFile>
 
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <unistd.h>
 
 namespace footpath {
@@ -181,8 +183,14 @@ QString writeSamplesCsv(const QString& path, const std::vector<LiveSample>& samp
 
 bool Recorder::writeAll(QFile& file, const QByteArray& bytes)
 {
-    if (file.write(bytes) != bytes.size())
-        return fail(file, tr("writing failed"));
+    const qint64 before = file.pos();
+    if (file.write(bytes) != bytes.size()) {
+        const QString reason = file.errorString();
+        // A write cut short leaves half a frame or half a row: cut it off, so that the file ends
+        // on the last whole write and re-opens cleanly (shrinking works on a full disk, too).
+        file.resize(before);
+        return fail(file, tr("writing failed"), reason);
+    }
     dirty_ = true;
     return true;
 }
@@ -193,16 +201,18 @@ bool Recorder::sync()
         return isOpen();
     for (QFile* file : {&mtb_, &csv_}) {
         if (file->isOpen() && ::fsync(file->handle()) != 0)
-            return fail(*file, tr("flushing to the disk failed"));
+            return fail(*file, tr("flushing to the disk failed"), QString::fromLocal8Bit(std::strerror(errno)));
     }
     dirty_ = false;
     return true;
 }
 
-bool Recorder::fail(QFile& file, const QString& what)
+bool Recorder::fail(QFile& file, const QString& what, const QString& reason)
 {
-    error_ = tr("%1 for %2: %3 (disk full or removed?); the recording stopped, everything before was kept")
-                 .arg(what, file.fileName(), file.errorString());
+    error_ = tr("%1 for %2: %3 (disk full, file size limit reached, or the disk removed?); the recording "
+                "stopped at %4 bytes, everything before was kept")
+                 .arg(what, QDir::toNativeSeparators(file.fileName()), reason)
+                 .arg(file.size());
     close();
     return false;
 }

@@ -33,8 +33,9 @@ QString writeSamplesCsv(const QString& path, const std::vector<LiveSample>& samp
 /// time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z[,mag_x,mag_y,mag_z][,pressure_pa],packet_counter.
 ///
 /// Files are unbuffered, so every write reaches the operating system at once (a crash of the
-/// program loses nothing) and a full disk fails the write that hits it; sync() forces the data
-/// onto the disk (the worker calls it every second, so a power loss costs at most that).
+/// program loses nothing) and a full disk fails the write that hits it, which is then cut off so
+/// that both files end on a whole message and row; sync() forces the data onto the disk (the
+/// worker calls it every second, so a power loss costs at most that).
 /// Not thread-safe: it lives in the session's worker thread.
 class Recorder {
 public:
@@ -69,7 +70,7 @@ public:
 private:
     bool openFile(QFile& file, const QString& path);
     bool writeAll(QFile& file, const QByteArray& bytes);
-    bool fail(QFile& file, const QString& what);
+    bool fail(QFile& file, const QString& what, const QString& reason);
     void appendRows(QByteArray& out, const std::vector<MtData2Sample>& messages);
 
     RecordingPaths paths_;

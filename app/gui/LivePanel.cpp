@@ -226,10 +226,16 @@ void LivePanel::buildUi()
     lostLabel_ = valueLabel(counters);
     checksumLabel_ = valueLabel(counters);
     resyncLabel_ = valueLabel(counters);
+    notShownLabel_ = valueLabel(counters);
+    notShownLabel_->setToolTip(tr("Samples the views could not keep up with (the window was busy for longer "
+                                  "than the display queue holds). They are in the recording all the same."));
     countersForm->addRow(tr("Samples:"), samplesLabel_);
     countersForm->addRow(tr("Lost packets:"), lostLabel_);
     countersForm->addRow(tr("Checksum errors:"), checksumLabel_);
     countersForm->addRow(tr("Resyncs:"), resyncLabel_);
+    countersForm->addRow(tr("Not shown:"), notShownLabel_);
+    countersForm->setRowVisible(notShownLabel_, false);  // only once it happens
+    countersForm_ = countersForm;
 
     // The views sit here until the workspace takes them (moveViewsInto).
     viewArea_ = new QSplitter(Qt::Vertical, this);
@@ -648,6 +654,8 @@ void LivePanel::onCounters(const DeviceCounters& counters)
     lostLabel_->setText(QString::number(counters.packetsLost));
     checksumLabel_->setText(QString::number(counters.checksumErrors));
     resyncLabel_->setText(QString::number(counters.resyncs));
+    notShownLabel_->setText(QString::number(counters.samplesNotShown));
+    countersForm_->setRowVisible(notShownLabel_, counters.samplesNotShown > 0);
 }
 
 void LivePanel::onRecordingStopped(const RecordingPaths& paths, const QString& error)

@@ -13,6 +13,7 @@
 
 class QComboBox;
 class QDateTime;
+class QFormLayout;
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -142,6 +143,8 @@ private:
     QLabel* lostLabel_ = nullptr;
     QLabel* checksumLabel_ = nullptr;
     QLabel* resyncLabel_ = nullptr;
+    QLabel* notShownLabel_ = nullptr;  ///< its row shows only once the display queue overflowed
+    QFormLayout* countersForm_ = nullptr;
     QLabel* latency_ = nullptr;
     QLabel* estimateState_ = nullptr;
     QLabel* steps_ = nullptr;

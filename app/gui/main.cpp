@@ -15,6 +15,7 @@
 #include <QTimer>
 #include <QTranslator>
 
+#include <csignal>
 #include <cstdio>
 
 namespace {
@@ -148,6 +149,9 @@ int main(int argc, char** argv)
     if (asksOnlyForHelpOrVersion(argc, argv))
         return answerHelpOrVersion(argc, argv);
     QApplication app(argc, argv);
+    // Past a file size limit (ulimit -f) a write then fails with EFBIG, which the recorder reports
+    // and survives, instead of the signal ending the program with the recording in flight.
+    std::signal(SIGXFSZ, SIG_IGN);
     setApplicationNames();
     qRegisterMetaType<std::shared_ptr<const footpath::Result>>();
 

@@ -111,7 +111,7 @@ double MtiEmulator::nextEventAt() const
     case State::Booting:
     case State::WakingUp: return deadline_s_;
     case State::Measurement:
-        return streamStart_s_ + static_cast<double>(streamMessages_) / (messageRate() * config_.speed);
+        return segmentStart_s_ + static_cast<double>(segmentMessages_) / segmentRate_;
     default: return std::numeric_limits<double>::infinity();
     }
 }
@@ -208,8 +208,10 @@ void MtiEmulator::startReset(double now_s, Bytes& out)
 void MtiEmulator::startMeasurement(double now_s, Bytes&)
 {
     state_ = State::Measurement;
-    streamStart_s_ = now_s;
     streamMessages_ = 0;
+    segmentStart_s_ = now_s;
+    segmentMessages_ = 0;
+    segmentRate_ = sendRate();
 }
 
 // ---- output configuration -----------------------------------------------------------------
@@ -299,11 +301,36 @@ XbusConfiguration MtiEmulator::configuration() const
 
 // ---- streaming ----------------------------------------------------------------------------
 
+bool MtiEmulator::inBurst() const
+{
+    const MtiFaults& f = config_.faults;
+    return f.burstLength_s > 0.0 && deviceTime_s_ >= f.burstAt_s - 1e-9
+           && deviceTime_s_ < f.burstAt_s + f.burstLength_s - 1e-9;
+}
+
+double MtiEmulator::sendRate() const
+{
+    return messageRate() * config_.speed * (inBurst() ? config_.faults.burstFactor : 1.0);
+}
+
+/// A burst starting or ending: the next message leaves when it would have at the old rate, the
+/// ones after it at the new rate.
+void MtiEmulator::rescheduleIfRateChanged()
+{
+    const double rate = sendRate();
+    if (rate == segmentRate_)
+        return;
+    segmentStart_s_ += static_cast<double>(segmentMessages_) / segmentRate_;
+    segmentMessages_ = 0;
+    segmentRate_ = rate;
+}
+
 void MtiEmulator::streamDue(double now_s, Bytes& out)
 {
-    const double rate = messageRate() * config_.speed;
-    const auto due = static_cast<std::uint64_t>(std::floor((now_s - streamStart_s_) * rate)) + 1;
-    while (state_ == State::Measurement && streamMessages_ < due) {
+    // Message k of the segment is due at segmentStart + k / rate, compared as floor((now - start)
+    // * rate) >= k so that times on the rate's grid count exactly.
+    while (state_ == State::Measurement
+           && std::floor((now_s - segmentStart_s_) * segmentRate_) >= static_cast<double>(segmentMessages_)) {
         const double disconnectAfter = config_.faults.disconnectAfter_s;
         if (disconnectAfter > 0.0 && deviceTime_s_ >= disconnectAfter - 1e-9) {
             state_ = State::Disconnected;
@@ -314,6 +341,7 @@ void MtiEmulator::streamDue(double now_s, Bytes& out)
             break;
         }
         emitDataMessage(out);
+        rescheduleIfRateChanged();
     }
 }
 
@@ -325,11 +353,14 @@ void MtiEmulator::emitDataMessage(Bytes& out)
     emitWithFaults(encodeFrame(xbusMessage(XbusMid::MtData2, payload)), record, out);
     if (observer_)
         observer_(record);
+    ++injected_.dataMessages;
+    injected_.burstMessages += inBurst();
     const std::uint16_t rate = messageRate();
     ++packetCounter_;
     sampleTimeFine_ += kSampleTimeFineTicksPerSecond / rate;
     deviceTime_s_ += 1.0 / rate;
     ++streamMessages_;
+    ++segmentMessages_;
     ++dataMessages_;
 }
 
@@ -342,9 +373,16 @@ void MtiEmulator::emitWithFaults(Bytes frame, DataRecord& record, Bytes& out)
     const bool drop = chance(random_) < config_.faults.dropRate;
     const bool corrupt = chance(random_) < config_.faults.corruptRate;
     const std::uint32_t junkLength = 1 + random_() % kJunkMaxBytes;
-    const std::size_t corruptAt = 1 + random_() % (frame.size() - 1);  // after the preamble
+    // BID, MID, payload or checksum, never the preamble (the receiver would see junk, not a
+    // damaged frame) nor the length: after a damaged length no receiver can tell where the frame
+    // ended, so nobody could count damaged frames exactly (tst_xbusframe covers that resync).
+    const std::size_t headerSize = frame.at(3) == kXbusExtendedLength ? 6 : 4;
+    const std::size_t pick = random_() % (2 + frame.size() - headerSize);
+    const std::size_t corruptAt = pick < 2 ? 1 + pick : headerSize + pick - 2;
     const auto corruptMask = static_cast<std::uint8_t>(1 + random_() % 255);
     if (junk) {
+        injected_.junkBytes += junkLength;
+        ++injected_.junkRuns;
         for (std::uint32_t i = 0; i < junkLength; ++i) {
             // Junk never contains the preamble: a false frame start in junk could, by a 1 in 256
             // checksum accident, swallow the next real frame and make runs unrepeatable to judge.
@@ -354,11 +392,14 @@ void MtiEmulator::emitWithFaults(Bytes frame, DataRecord& record, Bytes& out)
     }
     if (drop) {
         record.fate = DataRecord::Fate::Dropped;
+        ++injected_.dropped;
         return;
     }
     if (corrupt) {
         frame[corruptAt] ^= corruptMask;  // one altered byte always breaks the 8-bit checksum
         record.fate = DataRecord::Fate::Corrupted;
+        ++injected_.corrupted;
+        injected_.corruptedBytes += frame.size();
     }
     out.insert(out.end(), frame.begin(), frame.end());
 }

@@ -22,6 +22,23 @@ struct MtiFaults {
     double junkRate = 0.0;     ///< probability of 1..16 junk bytes before a data message
     double disconnectAfter_s = 0.0;  ///< device seconds of streaming after which the port vanishes; 0: never
     std::uint32_t seed = 1;
+    /// From device time burstAt_s on, for burstLength_s of device time, messages leave burstFactor
+    /// times faster than the rate (a device emptying its buffer); their time stamps keep the rate.
+    double burstAt_s = 0.0;
+    double burstLength_s = 0.0;  ///< 0: no burst
+    double burstFactor = 10.0;
+};
+
+/// What the emulator injected into its data stream so far: the truth a host's counters are
+/// compared with.
+struct MtiInjected {
+    std::uint64_t dataMessages = 0;    ///< data messages made, dropped ones included
+    std::uint64_t dropped = 0;
+    std::uint64_t corrupted = 0;
+    std::uint64_t corruptedBytes = 0;  ///< bytes of the corrupted frames
+    std::uint64_t junkBytes = 0;
+    std::uint64_t junkRuns = 0;
+    std::uint64_t burstMessages = 0;   ///< data messages sent at the burst rate
 };
 
 /// Who the emulated device says it is, and how it behaves (docs xbus-protocol.md §4.6).
@@ -86,6 +103,7 @@ public:
     const std::vector<OutputConfigEntry>& outputConfiguration() const { return outputConfiguration_; }
     std::uint8_t baudCode() const { return baudCode_; }
     std::uint64_t dataMessagesSent() const { return dataMessages_; }  ///< including dropped ones
+    const MtiInjected& injected() const { return injected_; }
     double streamedDeviceTime_s() const { return deviceTime_s_; }
 
     /// The Configuration message (0x0D) this device sends before streaming after power-up.
@@ -109,6 +127,9 @@ private:
     const ImuSample* playbackSample() const;
     void emitWithFaults(Bytes frame, DataRecord& record, Bytes& out);
     std::uint16_t messageRate() const;
+    bool inBurst() const;
+    double sendRate() const;  ///< messages per wall second for the next message
+    void rescheduleIfRateChanged();
 
     Recording playback_;
     MtiEmulatorConfig config_;
@@ -124,12 +145,15 @@ private:
     std::vector<OutputConfigEntry> outputConfiguration_;
     std::uint8_t baudCode_ = 0x02;  ///< 115200
 
-    double streamStart_s_ = 0.0;        ///< wall time of the current GoToMeasurement
-    std::uint64_t streamMessages_ = 0;  ///< data messages since streamStart_s_
+    std::uint64_t streamMessages_ = 0;  ///< data messages since the current GoToMeasurement
+    double segmentStart_s_ = 0.0;       ///< wall time since which messages leave at segmentRate_
+    std::uint64_t segmentMessages_ = 0; ///< data messages since segmentStart_s_
+    double segmentRate_ = 0.0;          ///< messages per wall second (a burst changes it)
     std::uint64_t dataMessages_ = 0;    ///< since power-up, dropped ones included
     std::uint16_t packetCounter_ = 0;   ///< of the next data message
     std::uint32_t sampleTimeFine_ = 0;  ///< of the next data message
     double deviceTime_s_ = 0.0;         ///< streamed device time: the playback position
+    MtiInjected injected_;
 };
 
 }  // namespace footpath

@@ -88,6 +88,12 @@ void addOptions(QCommandLineParser& parser)
          QStringLiteral("P")},
         {QStringLiteral("disconnect-after"), QStringLiteral("vanish after S device seconds of streaming"),
          QStringLiteral("S")},
+        {QStringLiteral("burst-at"), QStringLiteral("from S device seconds on, send --burst-factor times faster"),
+         QStringLiteral("S")},
+        {QStringLiteral("burst-for"), QStringLiteral("length of the burst in device seconds (default 1 if --burst-at)"),
+         QStringLiteral("S")},
+        {QStringLiteral("burst-factor"), QStringLiteral("how much faster a burst sends (default 10)"),
+         QStringLiteral("N")},
         {QStringLiteral("replug-after"),
          QStringLiteral("after vanishing, come back on the same --link after S wall seconds, like a sensor plugged in "
                         "again (try the live panel's reconnect offer)"),
@@ -121,6 +127,11 @@ std::string readFaults(const QCommandLineParser& parser, MtiEmulatorConfig& conf
     faults.disconnectAfter_s = numberOption(parser, QStringLiteral("disconnect-after"), 0, 1e9, problem).value_or(0.0);
     faults.seed = static_cast<std::uint32_t>(numberOption(parser, QStringLiteral("seed"), 0, 4294967295.0, problem)
                                                  .value_or(1.0));
+    const std::optional<double> burstAt = numberOption(parser, QStringLiteral("burst-at"), 0, 1e9, problem);
+    faults.burstAt_s = burstAt.value_or(0.0);
+    faults.burstLength_s =
+        numberOption(parser, QStringLiteral("burst-for"), 0, 1e9, problem).value_or(burstAt ? 1.0 : 0.0);
+    faults.burstFactor = numberOption(parser, QStringLiteral("burst-factor"), 1, 1000, problem).value_or(10.0);
     config.speed = numberOption(parser, QStringLiteral("speed"), 1e-3, 1e4, problem).value_or(1.0);
     config.loop = !parser.isSet(QStringLiteral("once"));
     return problem;
@@ -248,6 +259,9 @@ class Runner {
 public:
     Runner(Pty& pty, MtiEmulator& emulator) : pty_(pty), emulator_(emulator) {}
 
+    /// Bytes thrown away because the host did not read them in time (not counted as injected faults).
+    std::uint64_t unreadBytes() const { return unreadBytes_; }
+
     void run()
     {
         while (!g_stop && emulator_.state() != MtiEmulator::State::Disconnected)
@@ -306,8 +320,11 @@ private:
     void append(const MtiEmulator::Bytes& bytes)
     {
         pending_.insert(pending_.end(), bytes.begin(), bytes.end());
-        if (pending_.size() > kMaxPending)  // a host that stopped reading: like a device's full TX buffer
-            pending_.erase(pending_.begin(), pending_.end() - static_cast<std::ptrdiff_t>(kMaxPending));
+        if (pending_.size() > kMaxPending) {  // a host that stopped reading: like a device's full TX buffer
+            const std::size_t excess = pending_.size() - kMaxPending;
+            unreadBytes_ += excess;
+            pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(excess));
+        }
     }
 
     void writePending()
@@ -337,6 +354,7 @@ private:
     MtiEmulator& emulator_;
     bool connected_ = false;
     MtiEmulator::Bytes pending_;
+    std::uint64_t unreadBytes_ = 0;
 };
 
 const char* fateName(MtiEmulator::DataRecord::Fate fate)
@@ -383,6 +401,19 @@ void observeInto(std::FILE* log, MtiEmulator& emulator)
     });
 }
 
+/// One line of key=value pairs, for people and for the end-to-end tests that compare a host's
+/// counters with it.
+void sayInjected(const MtiInjected& injected, std::uint64_t unreadBytes)
+{
+    const auto pair = [](const char* key, std::uint64_t value) {
+        return " " + std::string(key) + "=" + std::to_string(value);
+    };
+    say("injected:" + pair("data_messages", injected.dataMessages) + pair("dropped", injected.dropped)
+        + pair("corrupted", injected.corrupted) + pair("corrupted_bytes", injected.corruptedBytes)
+        + pair("junk_bytes", injected.junkBytes) + pair("junk_runs", injected.junkRuns)
+        + pair("burst_messages", injected.burstMessages) + pair("unread_bytes", unreadBytes));
+}
+
 /// Plays until stopped, or until the port vanished and no replug is asked for. Each plug-in is
 /// a fresh device: a new pty behind the same link, the playback from its start.
 std::string serve(const Options& options, const Recording& playback, std::FILE* log)
@@ -407,7 +438,9 @@ std::string serve(const Options& options, const Recording& playback, std::FILE* 
             + (options.simulate ? std::string("a simulated walk") : options.recording.toStdString()) + " ("
             + std::to_string(playback.samples.size()) + " samples) at speed "
             + QString::number(options.emulator.speed).toStdString());
-        Runner(pty, emulator).run();
+        Runner runner(pty, emulator);
+        runner.run();
+        sayInjected(emulator.injected(), runner.unreadBytes());
         if (g_stop || options.replugAfter_s <= 0.0)
             return {};
     }

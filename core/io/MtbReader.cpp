@@ -371,8 +371,8 @@ std::string MtbParser::skippedBytesWarning() const
         places += ", ... (" + std::to_string(stats.skippedRuns) + " places)";
     std::string text = "skipped " + std::to_string(stats.bytesSkipped)
                        + " damaged byte(s) that form no valid Xbus message, at byte offset " + places;
-    if (stats.checksumFailures > 0)
-        text += "; " + std::to_string(stats.checksumFailures) + " checksum failure(s)";
+    if (stats.damagedFrames > 0)  // each damaged message once, as the live counters count them
+        text += "; " + std::to_string(stats.damagedFrames) + " checksum failure(s)";
     return text + "; reading resumed at the next valid message";
 }
 

@@ -60,6 +60,7 @@ void XbusFrameDecoder::reset()
     stats_ = {};
     openSkipRun_ = SIZE_MAX;
     skipRunEnd_ = UINT64_MAX;
+    damagedUntil_ = 0;
 }
 
 void XbusFrameDecoder::feed(const std::uint8_t* data, std::size_t size)
@@ -108,7 +109,8 @@ bool XbusFrameDecoder::next(XbusMessage& out)
         case Candidate::NeedMore:
             if (!finished_)
                 return false;
-            if (validFrameFollows(head_ + 1)) {  // this 0xFA was a false preamble
+            // A false preamble: a valid frame follows, or it lies inside a damaged frame.
+            if (headOffset_ < damagedUntil_ || validFrameFollows(head_ + 1)) {
                 dropBytes(1);
                 break;
             }
@@ -118,8 +120,7 @@ bool XbusFrameDecoder::next(XbusMessage& out)
             head_ = buffer_.size();
             return false;
         case Candidate::BadChecksum:
-            ++stats_.checksumFailures;
-            recordProblem(XbusStreamProblem::Kind::BadChecksum, headOffset_, extent.frameSize());
+            recordBadChecksum(extent);
             dropBytes(1);
             break;
         case Candidate::NotAFrame:
@@ -171,6 +172,8 @@ void XbusFrameDecoder::skipToPreamble()
 
 void XbusFrameDecoder::dropBytes(std::size_t count)
 {
+    if (damagedUntil_ > headOffset_)
+        stats_.damagedFrameBytes += std::min<std::uint64_t>(count, damagedUntil_ - headOffset_);
     recordSkipped(headOffset_, count);
     stats_.bytesSkipped += count;
     head_ += count;
@@ -184,9 +187,20 @@ void XbusFrameDecoder::takeFrame(const FrameExtent& extent, XbusMessage& out)
     out.mid = frame[2];
     out.payload.assign(frame + extent.headerSize, frame + extent.headerSize + extent.payloadSize);
     lastFrameOffset_ = headOffset_;
+    damagedUntil_ = std::min(damagedUntil_, headOffset_);  // a damaged length claimed this frame's bytes
     head_ += extent.frameSize();
     headOffset_ += extent.frameSize();
     ++stats_.framesDecoded;
+}
+
+void XbusFrameDecoder::recordBadChecksum(const FrameExtent& extent)
+{
+    ++stats_.checksumFailures;
+    recordProblem(XbusStreamProblem::Kind::BadChecksum, headOffset_, extent.frameSize());
+    if (headOffset_ >= damagedUntil_) {
+        ++stats_.damagedFrames;
+        damagedUntil_ = headOffset_ + extent.frameSize();
+    }
 }
 
 void XbusFrameDecoder::recordSkipped(std::uint64_t offset, std::uint64_t size)

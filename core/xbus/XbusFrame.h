@@ -59,7 +59,12 @@ struct XbusDecodeStats {
     std::uint64_t framesDecoded = 0;
     std::uint64_t bytesSkipped = 0;
     std::uint64_t skippedRuns = 0;  ///< separate stretches of skipped bytes
-    std::uint64_t checksumFailures = 0;
+    std::uint64_t checksumFailures = 0;  ///< candidates that failed, false preambles inside a damaged frame too
+    /// Frames that failed their checksum, each once: a bad candidate starting inside the claimed
+    /// extent of the previous one is a false preamble in its bytes, not another frame. Exact
+    /// unless the length byte itself was damaged (then nobody can tell where the frame ended).
+    std::uint64_t damagedFrames = 0;
+    std::uint64_t damagedFrameBytes = 0;  ///< skipped bytes inside those frames; the rest was junk
     std::uint64_t bytesDroppedOverflow = 0;
     std::uint64_t bytesTruncated = 0;  ///< bytes of an unfinished frame at the end of the stream
     std::uint64_t problemCount = 0;    ///< all problems, also those not recorded below
@@ -107,6 +112,7 @@ private:
     void compact();
     void recordProblem(XbusStreamProblem::Kind kind, std::uint64_t offset, std::uint64_t size);
     void recordSkipped(std::uint64_t offset, std::uint64_t size);
+    void recordBadChecksum(const FrameExtent& extent);
 
     std::size_t bufferLimit_;
     std::vector<std::uint8_t> buffer_;
@@ -117,6 +123,7 @@ private:
     XbusDecodeStats stats_;
     std::size_t openSkipRun_ = SIZE_MAX;     ///< index in firstProblems of the last skipped run
     std::uint64_t skipRunEnd_ = UINT64_MAX;  ///< offset just past the last skipped run
+    std::uint64_t damagedUntil_ = 0;         ///< offset just past the claimed extent of the last damaged frame
 };
 
 /// Bounds-checked big-endian reader over a payload: every read says whether the bytes were there,

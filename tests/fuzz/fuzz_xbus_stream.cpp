@@ -86,5 +86,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const XbusDecodeStats& stats = decoder.stats();
     if (framed + stats.bytesSkipped + stats.bytesDroppedOverflow + stats.bytesTruncated + decoder.pendingBytes() != fed)
         std::abort();
+    // Damaged frames are a subset of the failed candidates, their bytes a subset of the skipped ones.
+    if (stats.damagedFrames > stats.checksumFailures || stats.damagedFrameBytes > stats.bytesSkipped)
+        std::abort();
     return 0;
 }
