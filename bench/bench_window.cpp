@@ -25,6 +25,7 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QMap>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -59,14 +60,20 @@ public:
             if (!running)
                 resultArrived_ms_ = static_cast<double>(clock_.nsecsElapsed()) / 1e6;  // emitted just before resultChanged
         });
-        QObject::connect(&window, &MainWindow::resultShown, this, [this] { shown_ = true; });
+        QObject::connect(&window, &MainWindow::resultShown, this, [this] {
+            shown_ = true;
+            resultShown_ms_ = now_ms();
+        });
         for (const QString& name : recordedViews()) {
             auto* view = window.findChild<QWidget*>(name);
             auto* plot = view ? view->findChild<QCustomPlot*>() : nullptr;
             if (!plot)
                 throw std::runtime_error("no plot in the view " + name.toStdString());
             plots_.push_back(plot);
-            QObject::connect(plot, &QCustomPlot::afterReplot, this, [this, plot] { replotted_.insert(plot); });
+            QObject::connect(plot, &QCustomPlot::afterReplot, this, [this, plot, name] {
+                replotted_.insert(plot);
+                replot_ms_[name] += plot->replotTime();
+            });
         }
         window.installEventFilter(this);
     }
@@ -76,10 +83,15 @@ public:
         shown_ = false;
         paintedAfterReplots_ = false;
         replotted_.clear();
+        replot_ms_.clear();
         resultArrived_ms_ = -1.0;
+        resultShown_ms_ = -1.0;
     }
     double now_ms() const { return static_cast<double>(clock_.nsecsElapsed()) / 1e6; }
     double resultArrived_ms() const { return resultArrived_ms_; }
+    double resultShown_ms() const { return resultShown_ms_; }
+    /// Milliseconds each view's plot spent replotting since the last reset.
+    const QMap<QString, double>& replot_ms() const { return replot_ms_; }
     bool allReplotted() const { return shown_ && static_cast<std::size_t>(replotted_.size()) == plots_.size(); }
     bool done() const { return paintedAfterReplots_; }
 
@@ -101,6 +113,8 @@ private:
     bool shown_ = false;
     bool paintedAfterReplots_ = false;
     double resultArrived_ms_ = -1.0;
+    double resultShown_ms_ = -1.0;
+    QMap<QString, double> replot_ms_;
 };
 
 /// The window with the walk open, kept for all benchmarks (created on first use, destroyed before
@@ -166,7 +180,8 @@ void BM_SliderMove(benchmark::State& state)
     const int home = slider->value();
     const int away = home + std::max(1, (slider->maximum() - slider->minimum()) / 50);
     QCoreApplication::processEvents();  // the tab switch's own paint is not part of the move
-    double estimate_ms = 0.0, views_ms = 0.0;
+    double estimate_ms = 0.0, views_ms = 0.0, handOver_ms = 0.0;
+    QMap<QString, double> replot_ms;
     for (auto _ : state) {
         space.watch->reset();
         const double start_ms = space.watch->now_ms();
@@ -179,7 +194,15 @@ void BM_SliderMove(benchmark::State& state)
         state.SetIterationTime((end_ms - start_ms) / 1000.0);
         estimate_ms += space.watch->resultArrived_ms() - start_ms;
         views_ms += end_ms - space.watch->resultArrived_ms();
+        handOver_ms += space.watch->resultShown_ms() - space.watch->resultArrived_ms();
+        for (auto it = space.watch->replot_ms().begin(); it != space.watch->replot_ms().end(); ++it)
+            replot_ms[it.key()] += it.value();
     }
+    // Where the views' time goes: handing the result to every view, then each plot's replots.
+    state.counters["handover_ms"] = benchmark::Counter(handOver_ms, benchmark::Counter::kAvgIterations);
+    for (auto it = replot_ms.begin(); it != replot_ms.end(); ++it)
+        state.counters[("replot_" + it.key()).toStdString() + "_ms"] =
+            benchmark::Counter(it.value(), benchmark::Counter::kAvgIterations);
     state.counters["estimate_ms"] = benchmark::Counter(estimate_ms, benchmark::Counter::kAvgIterations);
     state.counters["views_ms"] = benchmark::Counter(views_ms, benchmark::Counter::kAvgIterations);
     state.counters["samples"] = static_cast<double>(thirtyMinuteWalk().samples.size());

@@ -1,6 +1,8 @@
 #include "TrajectoryView2D.h"
 
+#include "DeferredReplot.h"
 #include "MotionLanes.h"
+#include "PixelCurve.h"
 #include "PlotInteraction.h"
 #include "TimeAxisNavigation.h"
 #include "metrics/Evaluation.h"
@@ -255,14 +257,15 @@ std::vector<Eigen::Vector3d> alignReferenceToEstimate(const std::vector<Eigen::V
 }
 
 TrajectoryView2D::TrajectoryView2D(QWidget* parent)
-    : QWidget(parent), plot_(new QCustomPlot(this)), timeCursor_s_(std::numeric_limits<double>::quiet_NaN())
+    : QWidget(parent), plot_(new QCustomPlot(this)), replot_(new DeferredReplot(plot_)),
+      timeCursor_s_(std::numeric_limits<double>::quiet_NaN())
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(plot_);
 
     // Created in drawing order: the reference under the path, the markers on top.
-    reference_ = new QCPCurve(plot_->xAxis, plot_->yAxis);
+    reference_ = new PixelCurve(plot_->xAxis, plot_->yAxis);
     reference_->setName(tr("Reference"));
     reference_->setPen(QPen(QColor(150, 150, 150), 1.5, Qt::DashLine));
     reference_->removeFromLegend();
@@ -405,7 +408,7 @@ void TrajectoryView2D::clear()
     referencePositions_m_.clear();
     showReferenceCurve();
     showPathAndMarkers();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::showResult(const Result& result)
@@ -429,7 +432,7 @@ void TrajectoryView2D::followResult(std::shared_ptr<const Result> result)
     showPathAndMarkers();
     if (!viewMovedByUser_)
         fitViewToData();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::setReference(const std::vector<Eigen::Vector3d>& positions_m)
@@ -437,7 +440,7 @@ void TrajectoryView2D::setReference(const std::vector<Eigen::Vector3d>& position
     referencePositions_m_ = positions_m;
     showReferenceCurve();
     fitViewToData();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::showReferenceCurve()
@@ -459,7 +462,7 @@ void TrajectoryView2D::setPathLabel(const QString& label)
 {
     path_->setName(label.isEmpty() ? tr("Foot path") : label);
     wrapLegendToWidth();
-    plot_->replot();
+    replot_->request();
 }
 
 QString TrajectoryView2D::pathLabel() const
@@ -477,7 +480,7 @@ void TrajectoryView2D::setOverlays(const std::vector<PathOverlay>& overlays)
     overlayCurves_.clear();
     overlayPositions_m_.clear();
     for (const PathOverlay& overlay : overlays) {
-        auto* curve = new QCPCurve(plot_->xAxis, plot_->yAxis);
+        auto* curve = new PixelCurve(plot_->xAxis, plot_->yAxis);
         curve->setLayer(QStringLiteral("overlays"));
         curve->setName(overlay.label);
         curve->setPen(QPen(overlay.colour, 1.3));
@@ -497,7 +500,7 @@ void TrajectoryView2D::setOverlays(const std::vector<PathOverlay>& overlays)
     }
     overlayLegend_->setVisible(!overlayCurves_.empty());
     fitViewToData();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& positions_m)
@@ -505,7 +508,7 @@ void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& position
     if (!ghost_) {
         // Under everything else, so the current path, its markers and the reference stay on top.
         plot_->addLayer(QStringLiteral("ghost"), plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
-        ghost_ = new QCPCurve(plot_->xAxis, plot_->yAxis);
+        ghost_ = new PixelCurve(plot_->xAxis, plot_->yAxis);
         ghost_->setLayer(QStringLiteral("ghost"));
         ghost_->setName(tr("Before the last change"));
         ghost_->setPen(QPen(QColor(110, 110, 110, 90), 2.5));
@@ -522,7 +525,7 @@ void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& position
     else if (!plot_->legend->hasItemWithPlottable(ghost_))
         ghost_->addToLegend();
     wrapLegendToWidth();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::createOverlayLegend()
@@ -545,7 +548,7 @@ void TrajectoryView2D::setColouring(Colouring colouring)
 {
     colouring_ = colouring;
     updateColouring();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::setTimeCursor(double time_s)

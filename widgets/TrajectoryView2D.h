@@ -26,6 +26,7 @@ class QMouseEvent;
 namespace footpath {
 
 class ColouredPathPlottable;
+class DeferredReplot;
 class PlotInteraction;
 
 /// Index of the sample whose time is closest to time_s (0 for an empty or one-sample series).
@@ -121,6 +122,7 @@ private:
     bool nearestPathSampleToPixel(const QPointF& pixel, std::size_t& index) const;
 
     QCustomPlot* plot_;
+    DeferredReplot* replot_;  ///< the setters' replots: once per event-loop pass, none while hidden
     ColouredPathPlottable* path_;
     QCPCurve* reference_;
     QCPGraph* stances_;
