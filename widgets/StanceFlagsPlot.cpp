@@ -1,5 +1,6 @@
 #include "StanceFlagsPlot.h"
 
+#include "DeferredReplot.h"
 #include "MotionLanes.h"
 #include "PlotInteraction.h"
 #include "TimeAxisNavigation.h"
@@ -212,7 +213,7 @@ double plottedValue(float logValue, const QCPRange& decades)
 }  // namespace
 
 StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
-    : QWidget(parent), plot_(new QCustomPlot(this)), toolBar_(new QToolBar(tr("Detector"), this)),
+    : QWidget(parent), plot_(new QCustomPlot(this)), replot_(new DeferredReplot(plot_)), toolBar_(new QToolBar(tr("Detector"), this)),
       inputsAction_(toolBar_->addAction(tr("Show detector inputs")))
 {
     setFocusPolicy(Qt::StrongFocus);  // keys arrive here; the plot passes clicks' focus up
@@ -471,7 +472,7 @@ void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
     plotStatistic();
     arrangeRows();
     showAll();
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 void StanceFlagsPlot::setResult(std::shared_ptr<const Result> result)
@@ -480,7 +481,7 @@ void StanceFlagsPlot::setResult(std::shared_ptr<const Result> result)
     plotLanes();
     plotStatistic();
     arrangeRows();  // the warning lane comes or goes
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 void StanceFlagsPlot::setParameters(const Parameters& params)
@@ -499,7 +500,7 @@ void StanceFlagsPlot::setParameters(const Parameters& params)
                                     : tr("The inputs of the C1/C2/C3 detector; the chosen detector decides on its "
                                          "statistic, shown below the lanes"));
     arrangeRows();
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 void StanceFlagsPlot::plotLanes()
@@ -621,7 +622,7 @@ void StanceFlagsPlot::setInputsVisible(bool visible)
     inputsVisible_ = visible;
     inputsAction_->setChecked(visible);
     arrangeRows();
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 void StanceFlagsPlot::arrangeRows()

@@ -23,6 +23,8 @@ class QToolBar;
 
 namespace footpath {
 
+class DeferredReplot;
+
 class LegendStrip;
 class LinkedTimeRows;
 class MotionLanes;
@@ -155,6 +157,7 @@ private:
     void arrangeRows();
 
     QCustomPlot* plot_;
+    DeferredReplot* replot_;  ///< one replot per event-loop pass for the setters, none while hidden
     QToolBar* toolBar_;
     QAction* inputsAction_;
     std::array<RowParts, kRowCount> rows_;
