@@ -4,7 +4,7 @@
 
 namespace footpath {
 
-QVector<QPointF> pixelSimplified(const QVector<QPointF>& points)
+QVector<QPointF> pixelSimplified(const QVector<QPointF>& points, double tolerance_px)
 {
     QVector<QPointF> kept;
     kept.reserve(std::min<qsizetype>(points.size(), 4096));
@@ -13,7 +13,7 @@ QVector<QPointF> pixelSimplified(const QVector<QPointF>& points)
         const QPointF& point = points[k];
         const bool gap = std::isnan(point.x()) || std::isnan(point.y());
         const bool lastOfPiece = k + 1 == points.size() || std::isnan(points[k + 1].x()) || std::isnan(points[k + 1].y());
-        if (!gap && !afterGap && !lastOfPiece && (point - kept.back()).manhattanLength() < 1.0)
+        if (!gap && !afterGap && !lastOfPiece && (point - kept.back()).manhattanLength() < tolerance_px)
             continue;
         kept.append(point);
         afterGap = gap;
@@ -21,9 +21,16 @@ QVector<QPointF> pixelSimplified(const QVector<QPointF>& points)
     return kept;
 }
 
-void PixelCurve::drawCurveLine(QCPPainter* painter, const QVector<QPointF>& lines) const
+void PixelCurve::draw(QCPPainter* painter)
 {
-    QCPCurve::drawCurveLine(painter, pixelSimplified(lines));
+    QVector<QPointF> pixels;
+    pixels.reserve(mDataContainer->size());
+    for (const QCPCurveData& point : *mDataContainer)
+        pixels.append(coordsToPixels(point.key, point.value));
+    applyDefaultAntialiasingHint(painter);
+    painter->setPen(mPen);
+    painter->setBrush(Qt::NoBrush);
+    drawCurveLine(painter, pixelSimplified(pixels, tolerance_px_));
 }
 
 }  // namespace footpath

@@ -36,6 +36,7 @@ constexpr int kClickMaxMovement_px = 4;
 constexpr double kSpeedScaleQuantile = 0.99;
 
 const QColor kPathColour(40, 90, 170);
+constexpr double kGhostTolerance_px = 3.0;  // the ghost's faint 2.5 px line: finer detail would not show
 
 // Functions, not globals: a QCPScatterStyle holds a QPixmap, which needs the application first.
 QCPScatterStyle stanceDot()
@@ -508,7 +509,9 @@ void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& position
     if (!ghost_) {
         // Under everything else, so the current path, its markers and the reference stay on top.
         plot_->addLayer(QStringLiteral("ghost"), plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
-        ghost_ = new PixelCurve(plot_->xAxis, plot_->yAxis);
+        auto* ghost = new PixelCurve(plot_->xAxis, plot_->yAxis);
+        ghost->setTolerance(kGhostTolerance_px);
+        ghost_ = ghost;
         ghost_->setLayer(QStringLiteral("ghost"));
         ghost_->setName(tr("Before the last change"));
         ghost_->setPen(QPen(QColor(110, 110, 110, 90), 2.5));
