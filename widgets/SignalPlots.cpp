@@ -1,5 +1,6 @@
 #include "SignalPlots.h"
 
+#include "DecimatedGraph.h"
 #include "DeferredReplot.h"
 #include "PlotInteraction.h"
 #include "TimeAxisNavigation.h"
@@ -234,7 +235,7 @@ void SignalPlots::createGraphs()
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         const ChannelInfo& info = channelInfos()[c];
         const QCPAxisRect* rect = rows_[slot(info.row)].rect;
-        QCPGraph* graph = plot_->addGraph(timeAxis(rect), rect->axis(QCPAxis::atLeft));
+        QCPGraph* graph = new DecimatedGraph(timeAxis(rect), rect->axis(QCPAxis::atLeft));
         graph->setName(tr(info.name));
         graph->setPen(QPen(info.colour, info.width, info.style));
         graph->setSelectable(QCP::stNone);

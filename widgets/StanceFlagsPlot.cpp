@@ -1,5 +1,6 @@
 #include "StanceFlagsPlot.h"
 
+#include "DecimatedGraph.h"
 #include "DeferredReplot.h"
 #include "MotionLanes.h"
 #include "PlotInteraction.h"
@@ -398,7 +399,7 @@ void StanceFlagsPlot::createStatisticRow()
     axis->setNumberPrecision(0);
     statisticStance_ = new TimeBands(rect, kStanceBrush);
     statisticStance_->setLayer(kStanceLayer);
-    statistic_ = plot_->addGraph(timeAxis(rect), axis);
+    statistic_ = new DecimatedGraph(timeAxis(rect), axis);
     statistic_->setPen(QPen(QColor(20, 20, 20), 1.0));
     statistic_->setSelectable(QCP::stNone);
     statisticThreshold_ = plot_->addGraph(timeAxis(rect), axis);
@@ -416,7 +417,7 @@ void StanceFlagsPlot::createInputRows()
     for (std::size_t i = 0; i < kInputCount; ++i) {
         QCPAxisRect* rect = rows_[rowOf(static_cast<Input>(i))].rect;
         valueAxis(rect)->setLabel(tr(kInputInfos[i].axisLabel));
-        inputs_[i] = plot_->addGraph(timeAxis(rect), valueAxis(rect));
+        inputs_[i] = new DecimatedGraph(timeAxis(rect), valueAxis(rect));
         inputs_[i]->setName(tr(kInputInfos[i].name));
         inputs_[i]->setPen(QPen(QColor(20, 20, 20), 1.0));
         inputs_[i]->setSelectable(QCP::stNone);

@@ -1,5 +1,6 @@
 #include "StatePlots.h"
 
+#include "DecimatedGraph.h"
 #include "DeferredReplot.h"
 #include "PlotInteraction.h"
 #include "TimeAxisNavigation.h"
@@ -208,7 +209,7 @@ void StatePlots::createRow(std::size_t r)
         }
         component.upper->setBrush(fill);
         component.upper->setChannelFillGraph(component.lower);
-        component.curve = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
+        component.curve = new DecimatedGraph(timeAxis(row.rect), valueAxis(row.rect));
         component.curve->setName(tr(info.names[static_cast<std::size_t>(c)]));
         component.curve->setPen(info.components == 1 ? QPen(QColor(0, 110, 120), 1.2) : pen);
         component.curve->setSelectable(QCP::stNone);
@@ -288,14 +289,12 @@ void StatePlots::plotRow(std::size_t r)
         }
         const bool angle = which == Row::Attitude && n > 0;
         const double centre = angle ? circularMean_deg(*result_, c) : 0.0;
-        bool wrapped = false;
         for (std::size_t k = 0; k < n; ++k) {
             const double raw = stateValue(*result_, which, k, c);
             const double value = angle && std::abs(raw - centre) > 180.0 ? nearCentre_deg(raw, centre) : raw;
             const double time_s = result_->time_s[k];
             if (!curve.isEmpty() && wraps(which, curve.back().value, value)) {
                 curve.append(QCPGraphData(0.5 * (curve.back().key + time_s), gap));  // QCustomPlot leaves a gap at NaN
-                wrapped = true;
             }
             curve.append(QCPGraphData(time_s, value));
             if (!bands || (k % stride != 0 && k + 1 != n))
@@ -311,9 +310,6 @@ void StatePlots::plotRow(std::size_t r)
             upper.append(QCPGraphData(time_s, value + s));
             sigma.append(QCPGraphData(time_s, s));
         }
-        // Adaptive sampling joins a pixel column's lowest and highest value across a gap: a wrap
-        // would be drawn as a line through the whole row.
-        component.curve->setAdaptiveSampling(!wrapped);
         component.curve->data()->set(curve, true);
         component.lower->data()->set(lower, true);
         component.upper->data()->set(upper, true);
