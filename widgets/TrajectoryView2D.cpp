@@ -117,12 +117,26 @@ public:
     void setPoints(const std::vector<Eigen::Vector3d>& positions_m)
     {
         points_m_.clear();
+        bounds_ = QRectF();
+        extendPoints(positions_m);
+    }
+
+    /// The points of positions_m after those already held (a path that grew at its end).
+    void extendPoints(const std::vector<Eigen::Vector3d>& positions_m)
+    {
+        const std::size_t held = std::min(points_m_.size(), positions_m.size());
+        points_m_.resize(held);
         points_m_.reserve(positions_m.size());
-        for (const Eigen::Vector3d& p : positions_m)
-            points_m_.emplace_back(p.x(), p.y());
+        for (std::size_t k = held; k < positions_m.size(); ++k) {
+            const QPointF point(positions_m[k].x(), positions_m[k].y());
+            // By hand: QRectF::united() ignores the zero-size rectangle of a single point.
+            bounds_ = points_m_.empty() ? QRectF(point, point)
+                                        : QRectF(QPointF(std::min(bounds_.left(), point.x()), std::min(bounds_.top(), point.y())),
+                                                 QPointF(std::max(bounds_.right(), point.x()), std::max(bounds_.bottom(), point.y())));
+            points_m_.push_back(point);
+        }
         levels_.clear();
         levelColours_.clear();
-        bounds_ = horizontalBounds(positions_m).value_or(QRectF());
     }
 
     /// One value per point mapped onto gradient over range; empty values: the pen colour throughout.
@@ -429,8 +443,9 @@ void TrajectoryView2D::followResult(std::shared_ptr<const Result> result)
         clear();
         return;
     }
+    const bool grown = result == result_;  // the same path object, samples appended since (live input)
     result_ = std::move(result);
-    showPathAndMarkers();
+    showPathAndMarkers(grown);
     if (!viewMovedByUser_)
         fitViewToData();
     replot_->request();
@@ -561,11 +576,14 @@ void TrajectoryView2D::setTimeCursor(double time_s)
     cursorLayer_->replot();
 }
 
-void TrajectoryView2D::showPathAndMarkers()
+void TrajectoryView2D::showPathAndMarkers(bool grown)
 {
     const std::vector<Eigen::Vector3d> none;
     const std::vector<Eigen::Vector3d>& positions = result_ ? result_->position_m : none;
-    path_->setPoints(positions);
+    if (grown)
+        path_->extendPoints(positions);
+    else
+        path_->setPoints(positions);
     for (QCPGraph* graph : {stances_, start_, end_})
         graph->data()->clear();
     if (result_) {

@@ -55,7 +55,8 @@ public:
 
     void setResult(std::shared_ptr<const Result> result);
     /// For a path that grows (live input): refits the view unless the user has panned or zoomed
-    /// since the last fit; a double-click fits and follows again.
+    /// since the last fit; a double-click fits and follows again. Given the result it already
+    /// shows, grown in place by appended samples, it converts only the new samples.
     void followResult(std::shared_ptr<const Result> result);
     void showResult(const Result& result);  ///< copies; prefer setResult with the session's pointer
     void clear();  ///< removes path, markers and reference; the axes keep their range
@@ -107,7 +108,7 @@ private:
     void createColourScale();
     void showColourScale(bool show);
     void showReferenceCurve();
-    void showPathAndMarkers();
+    void showPathAndMarkers(bool grown = false);  ///< grown: result_ is the shown path with samples appended
     void updateColouring();
     bool showMotionColouring();
     void createOverlayLegend();
