@@ -546,18 +546,20 @@ void StanceFlagsPlot::plotStatistic()
     const double highest = std::max(std::ceil(span->upper + kStatisticHeadroom_dec), lowest + kMinimumStatisticSpan_dec);
     const QCPRange decades(lowest, highest);
     const std::vector<double>& times = result_->time_s;
-    QVector<double> keys, statistic, thresholdKeys, threshold;
+    // Filled as QCPGraphData and handed over whole: the container shares the vector.
+    QVector<QCPGraphData> statistic;
+    QVector<double> thresholdKeys, threshold;
     const std::size_t n = std::min({times.size(), flags.logStatistic.size(), flags.logThreshold.size()});
+    statistic.reserve(static_cast<qsizetype>(n));
     for (std::size_t k = 0; k < n; ++k) {
-        keys << times[k];
-        statistic << plottedValue(flags.logStatistic[k], decades);
+        statistic.append(QCPGraphData(times[k], plottedValue(flags.logStatistic[k], decades)));
         // A fixed threshold is two points; an adaptive one a point wherever it moves.
         if (k == 0 || k + 1 == n || flags.logThreshold[k] != flags.logThreshold[k - 1]) {
             thresholdKeys << times[k];
             threshold << plottedValue(flags.logThreshold[k], decades);
         }
     }
-    statistic_->setData(keys, statistic, true);
+    statistic_->data()->set(statistic, true);
     statisticThreshold_->setData(thresholdKeys, threshold, true);
     valueAxis(statisticRect())->setRange(std::pow(10.0, lowest), std::pow(10.0, highest));
 }

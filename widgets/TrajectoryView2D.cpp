@@ -453,6 +453,8 @@ void TrajectoryView2D::followResult(std::shared_ptr<const Result> result)
 
 void TrajectoryView2D::setReference(const std::vector<Eigen::Vector3d>& positions_m)
 {
+    if (positions_m.empty() && referencePositions_m_.empty())
+        return;  // still none: nothing to fit or draw anew (a walk without reference, after each estimate)
     referencePositions_m_ = positions_m;
     showReferenceCurve();
     fitViewToData();
@@ -531,13 +533,11 @@ void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& position
         ghost_->setName(tr("Before the last change"));
         ghost_->setPen(QPen(QColor(110, 110, 110, 90), 2.5));
     }
-    QVector<double> t, x, y;
-    for (const Eigen::Vector3d& p : positions_m) {
-        t << static_cast<double>(t.size());
-        x << p.x();
-        y << p.y();
-    }
-    ghost_->setData(t, x, y, true);
+    QVector<QCPCurveData> points;  // handed over whole: the curve shares it instead of copying
+    points.reserve(static_cast<qsizetype>(positions_m.size()));
+    for (const Eigen::Vector3d& p : positions_m)
+        points.append(QCPCurveData(static_cast<double>(points.size()), p.x(), p.y()));
+    ghost_->data()->set(points, true);
     if (positions_m.empty())
         ghost_->removeFromLegend();
     else if (!plot_->legend->hasItemWithPlottable(ghost_))
