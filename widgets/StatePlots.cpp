@@ -290,6 +290,8 @@ void StatePlots::plotRow(std::size_t r)
         const bool angle = which == Row::Attitude && n > 0;
         const double centre = angle ? circularMean_deg(*result_, c) : 0.0;
         for (std::size_t k = 0; k < n; ++k) {
+            if (constantBias && k != 0 && k + 1 != n)
+                continue;  // a flat line (the row is collapsed): its two ends draw the same
             const double raw = stateValue(*result_, which, k, c);
             const double value = angle && std::abs(raw - centre) > 180.0 ? nearCentre_deg(raw, centre) : raw;
             const double time_s = result_->time_s[k];
