@@ -230,7 +230,8 @@ public:
 
     int rowCount(const QModelIndex& parent = {}) const override
     {
-        return parent.isValid() || !result_ ? 0 : static_cast<int>(result_->steps.size());
+        // The steps at the last setResult: a live path grows in place between refreshes.
+        return parent.isValid() || !result_ ? 0 : static_cast<int>(stepWarnings_.size());
     }
     int columnCount(const QModelIndex& parent = {}) const override { return parent.isValid() ? 0 : ColumnCount; }
 

@@ -69,7 +69,8 @@ public:
     /// The causal estimate so far (null before the first connection).
     const StreamingEstimator* estimator() const { return estimator_.get(); }
     /// What the trajectory views show now, with the plausibility warnings so far (null until the
-    /// first path was drawn).
+    /// first path was drawn). The same object grows at each refresh (trajectoryUpdated) until the
+    /// estimate restarts (new parameters or session).
     std::shared_ptr<const Result> lastResult() const { return lastResult_; }
     /// How far the estimate trails the newest sample: the detector's look-ahead.
     double latency_s() const;
