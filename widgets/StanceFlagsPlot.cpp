@@ -465,6 +465,8 @@ void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
     const QVector<double> keys = toQVector(times_s_);
     inputs_[slot(Input::AccNorm)]->setData(keys, toQVector(accNorm_), true);
     inputs_[slot(Input::GyrNorm)]->setData(keys, toQVector(gyrNorm), true);
+    measureInput(Input::AccNorm);
+    measureInput(Input::GyrNorm);
     plotAccStdDev();
     plotThresholds();
     rescaleInputAxes();
@@ -583,6 +585,13 @@ void StanceFlagsPlot::plotAccStdDev()
     // The detector's own function, so the curve is exactly what C2 compared.
     const std::vector<double> accStdDev = centredStdDev(times_s_, accNorm_, params_.window_half_s);
     inputs_[slot(Input::AccStdDev)]->setData(toQVector(times_s_), toQVector(accStdDev), true);
+    measureInput(Input::AccStdDev);
+}
+
+void StanceFlagsPlot::measureInput(Input input)
+{
+    const QCPGraph* graph = inputs_[slot(input)];
+    inputBulk_[slot(input)] = InputBulk{quantileOf(graph, 1.0 - kDataShare), quantileOf(graph, kDataShare)};
 }
 
 void StanceFlagsPlot::plotThresholds()
@@ -606,16 +615,16 @@ void StanceFlagsPlot::rescaleInputAxes()
     // top, which reads as "far above" all the same, rather than squashing the rest into a line.
     const double band = std::max(params_.acc_max_mps2 - params_.acc_min_mps2, kMinimumAccBand_mps2);
     const QCPGraph* accNorm = inputs_[slot(Input::AccNorm)];
-    const double accLow = accNorm->data()->isEmpty() ? params_.acc_min_mps2 : quantileOf(accNorm, 1.0 - kDataShare);
+    const double accLow = accNorm->data()->isEmpty() ? params_.acc_min_mps2 : inputBulk_[slot(Input::AccNorm)].low;
     valueAxis(inputRect(Input::AccNorm))
         ->setRange(std::max(0.0, std::min(params_.acc_min_mps2 - kBandHeadroom * band, accLow)),
-                   std::max(params_.acc_max_mps2 + kBandHeadroom * band, quantileOf(accNorm, kDataShare) * kValueMargin));
+                   std::max(params_.acc_max_mps2 + kBandHeadroom * band, inputBulk_[slot(Input::AccNorm)].high * kValueMargin));
     valueAxis(inputRect(Input::AccStdDev))
         ->setRange(0.0, std::max(kThresholdHeadroom * params_.acc_std_max_mps2,
-                                 quantileOf(inputs_[slot(Input::AccStdDev)], kDataShare) * kValueMargin));
+                                 inputBulk_[slot(Input::AccStdDev)].high * kValueMargin));
     valueAxis(inputRect(Input::GyrNorm))
         ->setRange(0.0, std::max(kThresholdHeadroom * params_.gyr_max_radps,
-                                 quantileOf(inputs_[slot(Input::GyrNorm)], kDataShare) * kValueMargin));
+                                 inputBulk_[slot(Input::GyrNorm)].high * kValueMargin));
 }
 
 void StanceFlagsPlot::setInputsVisible(bool visible)
