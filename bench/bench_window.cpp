@@ -15,18 +15,23 @@
 // front: 0 the signals, 1 the stance detector, 2 the states.
 //
 //   build/bench/bench_window --benchmark_filter=SliderMove
+//
+// BM_LivePathRefresh: the live path views' refresh near the end of the same walk.
 #include "SimulatedWalks.h"
 
 #include "AnalysisSession.h"
 #include "AppSettings.h"
+#include "LiveViews.h"
 #include "MainWindow.h"
 #include "Recorder.h"
+#include "nav/StreamingEstimator.h"
 
 #include <benchmark/benchmark.h>
 
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QEventLoop>
+#include <QHBoxLayout>
 #include <QTimer>
 #include <QMap>
 #include <QSlider>
@@ -223,6 +228,43 @@ void BM_SliderMove(benchmark::State& state)
     state.counters["samples"] = static_cast<double>(thirtyMinuteWalk().samples.size());
 }
 BENCHMARK(BM_SliderMove)->Arg(0)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);
+
+/// A live session's path refresh near the end of the 30-minute walk: one more second estimated,
+/// then the path views updated and painted (LiveViews::showPath, forced, and the event loop until
+/// idle). The views are shown at 1600 x 1000 with the 2D path in front.
+///
+///   build/bench/bench_window --benchmark_filter=LivePathRefresh
+void BM_LivePathRefresh(benchmark::State& state)
+{
+    const std::vector<ImuSample>& samples = thirtyMinuteWalk().samples;
+    Parameters params;
+    params.estimator = static_cast<int>(EstimatorKind::Ekf);  // live runs the filter
+    StreamingEstimator estimator(params);
+    const std::size_t oneSecond = 100, start = samples.size() - 60 * oneSecond;
+    std::size_t next = 0;
+    for (; next < start; ++next)
+        estimator.push(samples[next]);
+    QWidget window;
+    auto* layout = new QHBoxLayout(&window);
+    LiveViews views(&window);
+    layout->addWidget(views.trajectoryTabs());
+    layout->addWidget(views.signalTabs());
+    window.resize(1600, 1000);
+    window.show();
+    views.showPath(estimator.result(), {}, true);
+    QCoreApplication::processEvents();
+    for (auto _ : state) {
+        for (const std::size_t end = next + oneSecond; next < end && next < samples.size(); ++next)
+            estimator.push(samples[next]);
+        QElapsedTimer clock;
+        clock.start();
+        views.showPath(estimator.result(), {}, true);
+        QCoreApplication::processEvents();  // the deferred replot and the paint
+        state.SetIterationTime(static_cast<double>(clock.nsecsElapsed()) / 1e9);
+    }
+    state.counters["path_samples"] = static_cast<double>(estimator.result().time_s.size());
+}
+BENCHMARK(BM_LivePathRefresh)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(50);
 
 }  // namespace
 

@@ -139,6 +139,9 @@ public:
         levelColours_.clear();
     }
 
+    /// The smallest rectangle holding the points (metres); nullopt for none.
+    std::optional<QRectF> bounds() const { return points_m_.empty() ? std::nullopt : std::optional<QRectF>(bounds_); }
+
     /// One value per point mapped onto gradient over range; empty values: the pen colour throughout.
     /// The gradient is a copy because QCPColorGradient::color() updates a cache.
     void setValues(const std::vector<double>& values, const QCPRange& range, QCPColorGradient gradient)
@@ -679,8 +682,7 @@ void TrajectoryView2D::updateTimeCursorMarker()
 void TrajectoryView2D::fitViewToData()
 {
     const std::optional<QRectF> bounds =
-        unite(unite(horizontalBounds(result_ ? result_->position_m : std::vector<Eigen::Vector3d>()),
-                    horizontalBounds(referencePositions_m_)),
+        unite(unite(path_->bounds(), horizontalBounds(referencePositions_m_)),
               horizontalBounds(overlayPositions_m_));
     if (!bounds)
         return;  // nothing to show: keep whatever the axes show
