@@ -282,7 +282,7 @@ void StatePlots::plotRow(std::size_t r)
         // Filled as QCPGraphData and handed over whole: the container shares the vector instead of
         // copying 180k pairs again.
         QVector<QCPGraphData> curve, lower, upper, sigma;
-        curve.reserve(static_cast<qsizetype>(n) + 64);
+        curve.reserve(constantBias ? 2 : static_cast<qsizetype>(n) + 64);
         if (bands) {
             for (QVector<QCPGraphData>* band : {&lower, &upper, &sigma})
                 band->reserve(static_cast<qsizetype>(n / stride) + 64);
