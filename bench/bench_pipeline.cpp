@@ -4,12 +4,12 @@
 // Targets (issue 14): at least 5 million samples per second offline on real walking data, 10 times the
 // dense loop. Run with --benchmark_repetitions=5 --benchmark_report_aggregates_only=true on a busy machine.
 #include "DenseReferenceFilter.h"
+#include "SimulatedWalks.h"
 #include "detect/StanceDetector.h"
 #include "io/Import.h"
 #include "nav/ErrorStateEkf.h"
 #include "nav/Pipeline.h"
 #include "nav/StreamingEstimator.h"
-#include "sim/WalkSimulator.h"
 
 #include <benchmark/benchmark.h>
 
@@ -19,26 +19,6 @@
 using namespace footpath;
 
 namespace {
-
-/// Laps of a 40 x 25 m rectangle until the walk lasts 30 minutes, with MTi-class sensor errors.
-const Recording& thirtyMinuteWalk()
-{
-    static const Recording recording = [] {
-        WalkSimulatorConfig config;
-        config.accNoiseStd_mps2 = 0.01;
-        config.gyrNoiseStd_radps = 0.0015;
-        config.accBias_mps2 = Eigen::Vector3d(0.0075, -0.005, 0.01);
-        config.gyrBias_radps = Eigen::Vector3d(0.0016, -0.0012, 0.002);
-        std::vector<Eigen::Vector3d> path{Eigen::Vector3d::Zero()};
-        const std::vector<Eigen::Vector3d> lap = closedRectanglePath(40.0, 25.0);
-        for (int i = 0; i < 20; ++i)  // about 93 s per lap
-            path.insert(path.end(), lap.begin() + 1, lap.end());
-        SimulatedWalk walk = simulateWalk(path, config);
-        walk.recording.samples.resize(std::min<std::size_t>(walk.recording.samples.size(), 30 * 60 * 100));
-        return walk.recording;
-    }();
-    return recording;
-}
 
 /// A pyshoe-vicon trial (200 Hz, 32 s of walking) played again after itself until it lasts a
 /// minute; empty when the shared recordings are not there.

@@ -36,6 +36,7 @@ private slots:
     void latencyFollowsParameters();
     void continuationPathsCountUp();
     void receivesRecordsAndEstimatesCausally();
+    void parameterChangeMidStreamReestimatesOffTheGuiThread();
     void recordsFromFirstSample();
     void offersReconnectWhenPortVanishes();
     void viewsSayNotConnected();
@@ -214,6 +215,43 @@ void TestLivePanel::receivesRecordsAndEstimatesCausally()
     QVERIFY(live.position_m == offline.result.position_m);
     QVERIFY(live.flags.stance == offline.result.flags.stance);
     QCOMPARE(live.steps.size(), offline.result.steps.size());
+    QVERIFY(panel.lastResult() && panel.lastResult()->position_m == offline.result.position_m);
+}
+
+void TestLivePanel::parameterChangeMidStreamReestimatesOffTheGuiThread()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString link = dir.filePath(QStringLiteral("ttyMTi3"));
+    Emulator emulator;
+    const QString problem = emulator.start(link, dir.filePath(QStringLiteral("sent.csv")), kFaults + QStringList{QStringLiteral("--once")});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+
+    LivePanel panel;
+    QSignalSpy ended(panel.session(), &DeviceSession::ended);
+    panel.connectTo(link);
+    QTRY_VERIFY_WITH_TIMEOUT(panel.sampleCount() >= 1500 && panel.lastResult(), 30000);
+    const StreamingEstimator* before = panel.estimator();
+    Parameters changed;
+    changed.zv_adapt_fraction = 0.35;
+    panel.setParameters(changed);
+    QVERIFY(panel.isReestimating());  // started, not run inside setParameters
+    QCOMPARE(panel.estimator(), before);  // the old estimate goes on meanwhile
+    QTRY_VERIFY_WITH_TIMEOUT(!panel.isReestimating(), 30000);
+    QVERIFY(panel.estimator() != before);
+    QCOMPARE(panel.estimator()->parameters(), changed);
+
+    panel.disconnectDevice();
+    QTRY_VERIFY_WITH_TIMEOUT(ended.count() == 1, 15000);
+    emulator.stop();
+    // The re-estimate took over and caught up: at the end it is the offline analysis of every
+    // received sample with the new parameters, and so is the path the views show.
+    Parameters filterOnly = changed;
+    filterOnly.estimator = static_cast<int>(EstimatorKind::Ekf);
+    const PipelineOutput offline = runPipeline(asRecording(panel.receivedSamples()), filterOnly);
+    QVERIFY(offline.error.empty());
+    QCOMPARE(panel.estimator()->result().time_s.size(), panel.receivedSamples().size());
+    QVERIFY(panel.estimator()->result().position_m == offline.result.position_m);
     QVERIFY(panel.lastResult() && panel.lastResult()->position_m == offline.result.position_m);
 }
 

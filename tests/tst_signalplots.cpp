@@ -1,4 +1,5 @@
 #include "SignalPlots.h"
+#include "DecimatedGraph.h"
 #include "LegendChecks.h"
 #include "WarningOverlay.h"
 #include "detect/StanceDetector.h"
@@ -476,6 +477,50 @@ private slots:
         const QString pdf = dir.filePath("signals.pdf");
         QVERIFY(plots.plot()->savePdf(pdf, 800, 600));
         QVERIFY(QFileInfo(pdf).size() > 1000);
+    }
+
+    void decimatedDrawingKeepsASpikeAndZoomingInDrawsEverySample()
+    {
+        // Half an hour at 100 Hz, flat but for one sample of 25 m/s²: zoomed out, a few points per
+        // pixel column are drawn and the spike is one of them; zoomed in to 2 s, every sample is.
+        constexpr std::size_t kSamples = 180000, kSpike = 123457;
+        constexpr double kSpikeValue = 25.0;
+        auto recording = std::make_shared<Recording>();
+        for (std::size_t k = 0; k < kSamples; ++k) {
+            ImuSample sample;
+            sample.time_s = 0.01 * static_cast<double>(k);
+            sample.acc_mps2 = Eigen::Vector3d(k == kSpike ? kSpikeValue : 0.1, 0.0, 9.81);
+            sample.gyr_radps = Eigen::Vector3d::Zero();
+            recording->samples.push_back(sample);
+        }
+        SignalPlots plots;
+        plots.setRecording(recording);
+        QVERIFY(showLaidOut(plots));
+        const auto* accX = dynamic_cast<const DecimatedGraph*>(plots.graph(Channel::AccX));
+        QVERIFY(accX);
+        const double spike_s = recording->samples[kSpike].time_s;
+
+        const QVector<QCPGraphData> zoomedOut = accX->drawnData();
+        const int columns = plots.axisRect(Row::Acceleration)->width();
+        QVERIFY2(zoomedOut.size() <= 4 * columns + 8, qPrintable(QString::number(zoomedOut.size())));
+        const auto peak = std::max_element(zoomedOut.begin(), zoomedOut.end(),
+                                           [](const QCPGraphData& a, const QCPGraphData& b) { return a.value < b.value; });
+        QCOMPARE(peak->value, kSpikeValue);
+        const double secondsPerColumn = 1800.0 / columns;
+        QVERIFY2(std::abs(peak->key - spike_s) <= 2.0 * secondsPerColumn, qPrintable(QString::number(peak->key)));
+
+        plots.setTimeRange(spike_s - 1.0, spike_s + 1.0);
+        plots.plot()->replot();
+        const QVector<QCPGraphData> zoomedIn = accX->drawnData();
+        std::size_t inRange = 0;
+        for (std::size_t k = kSpike - 100; k <= kSpike + 100; ++k, ++inRange) {
+            const ImuSample& sample = recording->samples[k];
+            const bool drawn = std::any_of(zoomedIn.begin(), zoomedIn.end(), [&sample](const QCPGraphData& point) {
+                return point.key == sample.time_s && point.value == sample.acc_mps2.x();
+            });
+            QVERIFY2(drawn, qPrintable(QString::number(sample.time_s)));
+        }
+        QVERIFY(static_cast<std::size_t>(zoomedIn.size()) >= inRange);
     }
 
     void emptyRecordingDoesNotCrash()

@@ -8,6 +8,7 @@
 #include <QBarSet>
 #include <QChart>
 #include <QChartView>
+#include <QTabWidget>
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineSeries>
@@ -257,6 +258,29 @@ private slots:
         QCOMPARE(std::size_t(gaitStance->count()), strides.size());
         QCOMPARE(gaitStance->at(0).y(), strides.front().stancePct);
         QCOMPARE(clearance->at(clearance->count() - 1).y(), strides.back().clearance_m);
+    }
+
+    void chartsBehindTheStepTableAreFilledWhenTheirTabIsShown()
+    {
+        // On screen with the step table in front, a new result leaves the charts for later; the
+        // tab brought to the front shows the new result's steps, not the old one's.
+        SummaryPanel panel;
+        panel.resize(1000, 400);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        auto* tabs = panel.findChild<QTabWidget*>(QStringLiteral("summaryTabs"));
+        QVERIFY(tabs);
+        QCOMPARE(tabs->currentIndex(), 0);
+        auto firstSteps = std::make_shared<Result>(*straightWalk().result);
+        firstSteps->steps.resize(3);
+        panel.setResult(firstSteps);
+        panel.setResult(straightWalk().result);
+        QXYSeries* before = lineSeries(panel, "strideLengthChart");
+        QVERIFY(!before || static_cast<std::size_t>(before->count()) <= 2);  // not filled for either yet, or the first
+        tabs->setCurrentIndex(1);
+        QXYSeries* strideLengths = lineSeries(panel, "strideLengthChart");
+        QVERIFY(strideLengths);
+        QCOMPARE(static_cast<std::size_t>(strideLengths->count()), computeGaitStatistics(*straightWalk().result).strides);
     }
 
     void histogramsUseNiceBinsAndCountEveryValue()

@@ -1,5 +1,7 @@
 #include "SignalPlots.h"
 
+#include "DecimatedGraph.h"
+#include "DeferredReplot.h"
 #include "PlotInteraction.h"
 #include "TimeAxisNavigation.h"
 #include "TimeBands.h"
@@ -112,7 +114,7 @@ QCPAxis* unitAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atRight)
 }  // namespace
 
 SignalPlots::SignalPlots(QWidget* parent)
-    : QWidget(parent), plot_(new QCustomPlot(this)), toolBar_(new QToolBar(tr("Channels"), this))
+    : QWidget(parent), plot_(new QCustomPlot(this)), replot_(new DeferredReplot(plot_)), toolBar_(new QToolBar(tr("Channels"), this))
 {
     channelVisible_.fill(true);
     setFocusPolicy(Qt::StrongFocus);  // keys arrive here; the plot passes clicks' focus up
@@ -233,7 +235,7 @@ void SignalPlots::createGraphs()
     for (std::size_t c = 0; c < kChannelCount; ++c) {
         const ChannelInfo& info = channelInfos()[c];
         const QCPAxisRect* rect = rows_[slot(info.row)].rect;
-        QCPGraph* graph = plot_->addGraph(timeAxis(rect), rect->axis(QCPAxis::atLeft));
+        QCPGraph* graph = new DecimatedGraph(timeAxis(rect), rect->axis(QCPAxis::atLeft));
         graph->setName(tr(info.name));
         graph->setPen(QPen(info.colour, info.width, info.style));
         graph->setSelectable(QCP::stNone);
@@ -298,7 +300,7 @@ void SignalPlots::setRecording(std::shared_ptr<const Recording> recording)
     arrangeRows();
     rescaleValueAxes();
     showAll();
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 void SignalPlots::plotSignals(const Recording& recording)
@@ -327,7 +329,7 @@ void SignalPlots::setResult(std::shared_ptr<const Result> result)
     plotStanceShading();
     plotGaitEvents();
     arrangeRows();  // the legend gains or loses its stance entry, the warning lane comes or goes
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 void SignalPlots::plotStanceShading()
@@ -424,7 +426,7 @@ void SignalPlots::setChannelVisible(Channel channel, bool visible)
     channelBoxes_[c]->setChecked(visible);
     arrangeRows();
     rescaleValueAxes();
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 bool SignalPlots::isChannelVisible(Channel channel) const { return channelVisible_[slot(channel)]; }

@@ -24,6 +24,8 @@ class QToolBar;
 
 namespace footpath {
 
+class DeferredReplot;
+
 class LegendStrip;
 class LinkedTimeRows;
 class PlotInteraction;
@@ -125,6 +127,7 @@ private:
     std::vector<RowParts*> allRows();  ///< the warning lane and the signal rows
 
     QCustomPlot* plot_;
+    DeferredReplot* replot_;  ///< one replot per event-loop pass for the setters, none while hidden
     QToolBar* toolBar_;
     std::array<RowParts, kRowCount> rows_;
     std::array<QCPGraph*, kChannelCount> graphs_{};

@@ -1,5 +1,7 @@
 #include "StanceFlagsPlot.h"
 
+#include "DecimatedGraph.h"
+#include "DeferredReplot.h"
 #include "MotionLanes.h"
 #include "PlotInteraction.h"
 #include "TimeAxisNavigation.h"
@@ -212,7 +214,7 @@ double plottedValue(float logValue, const QCPRange& decades)
 }  // namespace
 
 StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
-    : QWidget(parent), plot_(new QCustomPlot(this)), toolBar_(new QToolBar(tr("Detector"), this)),
+    : QWidget(parent), plot_(new QCustomPlot(this)), replot_(new DeferredReplot(plot_)), toolBar_(new QToolBar(tr("Detector"), this)),
       inputsAction_(toolBar_->addAction(tr("Show detector inputs")))
 {
     setFocusPolicy(Qt::StrongFocus);  // keys arrive here; the plot passes clicks' focus up
@@ -397,7 +399,7 @@ void StanceFlagsPlot::createStatisticRow()
     axis->setNumberPrecision(0);
     statisticStance_ = new TimeBands(rect, kStanceBrush);
     statisticStance_->setLayer(kStanceLayer);
-    statistic_ = plot_->addGraph(timeAxis(rect), axis);
+    statistic_ = new DecimatedGraph(timeAxis(rect), axis);
     statistic_->setPen(QPen(QColor(20, 20, 20), 1.0));
     statistic_->setSelectable(QCP::stNone);
     statisticThreshold_ = plot_->addGraph(timeAxis(rect), axis);
@@ -415,7 +417,7 @@ void StanceFlagsPlot::createInputRows()
     for (std::size_t i = 0; i < kInputCount; ++i) {
         QCPAxisRect* rect = rows_[rowOf(static_cast<Input>(i))].rect;
         valueAxis(rect)->setLabel(tr(kInputInfos[i].axisLabel));
-        inputs_[i] = plot_->addGraph(timeAxis(rect), valueAxis(rect));
+        inputs_[i] = new DecimatedGraph(timeAxis(rect), valueAxis(rect));
         inputs_[i]->setName(tr(kInputInfos[i].name));
         inputs_[i]->setPen(QPen(QColor(20, 20, 20), 1.0));
         inputs_[i]->setSelectable(QCP::stNone);
@@ -463,6 +465,8 @@ void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
     const QVector<double> keys = toQVector(times_s_);
     inputs_[slot(Input::AccNorm)]->setData(keys, toQVector(accNorm_), true);
     inputs_[slot(Input::GyrNorm)]->setData(keys, toQVector(gyrNorm), true);
+    measureInput(Input::AccNorm);
+    measureInput(Input::GyrNorm);
     plotAccStdDev();
     plotThresholds();
     rescaleInputAxes();
@@ -471,7 +475,7 @@ void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
     plotStatistic();
     arrangeRows();
     showAll();
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 void StanceFlagsPlot::setResult(std::shared_ptr<const Result> result)
@@ -480,7 +484,7 @@ void StanceFlagsPlot::setResult(std::shared_ptr<const Result> result)
     plotLanes();
     plotStatistic();
     arrangeRows();  // the warning lane comes or goes
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 void StanceFlagsPlot::setParameters(const Parameters& params)
@@ -499,7 +503,7 @@ void StanceFlagsPlot::setParameters(const Parameters& params)
                                     : tr("The inputs of the C1/C2/C3 detector; the chosen detector decides on its "
                                          "statistic, shown below the lanes"));
     arrangeRows();
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 void StanceFlagsPlot::plotLanes()
@@ -544,18 +548,20 @@ void StanceFlagsPlot::plotStatistic()
     const double highest = std::max(std::ceil(span->upper + kStatisticHeadroom_dec), lowest + kMinimumStatisticSpan_dec);
     const QCPRange decades(lowest, highest);
     const std::vector<double>& times = result_->time_s;
-    QVector<double> keys, statistic, thresholdKeys, threshold;
+    // Filled as QCPGraphData and handed over whole: the container shares the vector.
+    QVector<QCPGraphData> statistic;
+    QVector<double> thresholdKeys, threshold;
     const std::size_t n = std::min({times.size(), flags.logStatistic.size(), flags.logThreshold.size()});
+    statistic.reserve(static_cast<qsizetype>(n));
     for (std::size_t k = 0; k < n; ++k) {
-        keys << times[k];
-        statistic << plottedValue(flags.logStatistic[k], decades);
+        statistic.append(QCPGraphData(times[k], plottedValue(flags.logStatistic[k], decades)));
         // A fixed threshold is two points; an adaptive one a point wherever it moves.
         if (k == 0 || k + 1 == n || flags.logThreshold[k] != flags.logThreshold[k - 1]) {
             thresholdKeys << times[k];
             threshold << plottedValue(flags.logThreshold[k], decades);
         }
     }
-    statistic_->setData(keys, statistic, true);
+    statistic_->data()->set(statistic, true);
     statisticThreshold_->setData(thresholdKeys, threshold, true);
     valueAxis(statisticRect())->setRange(std::pow(10.0, lowest), std::pow(10.0, highest));
 }
@@ -579,6 +585,13 @@ void StanceFlagsPlot::plotAccStdDev()
     // The detector's own function, so the curve is exactly what C2 compared.
     const std::vector<double> accStdDev = centredStdDev(times_s_, accNorm_, params_.window_half_s);
     inputs_[slot(Input::AccStdDev)]->setData(toQVector(times_s_), toQVector(accStdDev), true);
+    measureInput(Input::AccStdDev);
+}
+
+void StanceFlagsPlot::measureInput(Input input)
+{
+    const QCPGraph* graph = inputs_[slot(input)];
+    inputBulk_[slot(input)] = InputBulk{quantileOf(graph, 1.0 - kDataShare), quantileOf(graph, kDataShare)};
 }
 
 void StanceFlagsPlot::plotThresholds()
@@ -602,16 +615,16 @@ void StanceFlagsPlot::rescaleInputAxes()
     // top, which reads as "far above" all the same, rather than squashing the rest into a line.
     const double band = std::max(params_.acc_max_mps2 - params_.acc_min_mps2, kMinimumAccBand_mps2);
     const QCPGraph* accNorm = inputs_[slot(Input::AccNorm)];
-    const double accLow = accNorm->data()->isEmpty() ? params_.acc_min_mps2 : quantileOf(accNorm, 1.0 - kDataShare);
+    const double accLow = accNorm->data()->isEmpty() ? params_.acc_min_mps2 : inputBulk_[slot(Input::AccNorm)].low;
     valueAxis(inputRect(Input::AccNorm))
         ->setRange(std::max(0.0, std::min(params_.acc_min_mps2 - kBandHeadroom * band, accLow)),
-                   std::max(params_.acc_max_mps2 + kBandHeadroom * band, quantileOf(accNorm, kDataShare) * kValueMargin));
+                   std::max(params_.acc_max_mps2 + kBandHeadroom * band, inputBulk_[slot(Input::AccNorm)].high * kValueMargin));
     valueAxis(inputRect(Input::AccStdDev))
         ->setRange(0.0, std::max(kThresholdHeadroom * params_.acc_std_max_mps2,
-                                 quantileOf(inputs_[slot(Input::AccStdDev)], kDataShare) * kValueMargin));
+                                 inputBulk_[slot(Input::AccStdDev)].high * kValueMargin));
     valueAxis(inputRect(Input::GyrNorm))
         ->setRange(0.0, std::max(kThresholdHeadroom * params_.gyr_max_radps,
-                                 quantileOf(inputs_[slot(Input::GyrNorm)], kDataShare) * kValueMargin));
+                                 inputBulk_[slot(Input::GyrNorm)].high * kValueMargin));
 }
 
 void StanceFlagsPlot::setInputsVisible(bool visible)
@@ -621,7 +634,7 @@ void StanceFlagsPlot::setInputsVisible(bool visible)
     inputsVisible_ = visible;
     inputsAction_->setChecked(visible);
     arrangeRows();
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
 }
 
 void StanceFlagsPlot::arrangeRows()

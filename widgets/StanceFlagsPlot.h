@@ -23,6 +23,8 @@ class QToolBar;
 
 namespace footpath {
 
+class DeferredReplot;
+
 class LegendStrip;
 class LinkedTimeRows;
 class MotionLanes;
@@ -150,17 +152,26 @@ private:
     void rescaleStatisticAxis();
     void nameStatistic();
     void plotAccStdDev();
+    void measureInput(Input input);
     void plotThresholds();
     void rescaleInputAxes();
     void arrangeRows();
 
     QCustomPlot* plot_;
+    DeferredReplot* replot_;  ///< one replot per event-loop pass for the setters, none while hidden
     QToolBar* toolBar_;
     QAction* inputsAction_;
     std::array<RowParts, kRowCount> rows_;
     std::array<QCPGraph*, kLaneCount> lanes_{};
     std::array<TimeBands*, kLaneCount> laneFills_{};  ///< under each lane's outline while its flag is set
     std::array<QCPGraph*, kInputCount> inputs_{};
+    /// Each input row's (1 - kDataShare) and kDataShare quantiles, taken when its data is set: a
+    /// parameter change rescales the rows without sorting a long walk's samples again.
+    struct InputBulk {
+        double low = 0.0;
+        double high = 0.0;
+    };
+    std::array<InputBulk, kInputCount> inputBulk_{};
     std::array<QCPGraph*, kThresholdCount> thresholds_{};
     QCPGraph* statistic_ = nullptr;
     QCPGraph* statisticThreshold_ = nullptr;

@@ -1,5 +1,7 @@
 #include "StatePlots.h"
 
+#include "DecimatedGraph.h"
+#include "DeferredReplot.h"
 #include "PlotInteraction.h"
 #include "TimeAxisNavigation.h"
 #include "TimeBands.h"
@@ -102,12 +104,17 @@ bool wraps(Row row, double a, double b)
 }
 
 /// The circular mean of an attitude component, in degrees: the value its curve is drawn around.
+/// Taken over at most about 20,000 evenly spread samples: it only places the curve, and the sines
+/// and cosines of every sample of a long walk cost more than the rest of the row.
 double circularMean_deg(const Result& result, int component)
 {
+    constexpr std::size_t kMaxSamples = 20000;
+    const std::vector<Eigen::Vector3d>& angles = result.rollPitchYaw_rad;
+    const std::size_t stride = std::max<std::size_t>(1, angles.size() / kMaxSamples);
     double sine = 0.0, cosine = 0.0;
-    for (const Eigen::Vector3d& angles : result.rollPitchYaw_rad) {
-        sine += std::sin(angles[component]);
-        cosine += std::cos(angles[component]);
+    for (std::size_t k = 0; k < angles.size(); k += stride) {
+        sine += std::sin(angles[k][component]);
+        cosine += std::cos(angles[k][component]);
     }
     return sine == 0.0 && cosine == 0.0 ? 0.0 : std::atan2(sine, cosine) * kDegreesPerRadian;
 }
@@ -131,7 +138,7 @@ bool isConstant(const Result& result, Row row)
 
 }  // namespace
 
-StatePlots::StatePlots(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this))
+StatePlots::StatePlots(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this)), replot_(new DeferredReplot(plot_))
 {
     setFocusPolicy(Qt::StrongFocus);
     auto* layout = new QVBoxLayout(this);
@@ -202,7 +209,7 @@ void StatePlots::createRow(std::size_t r)
         }
         component.upper->setBrush(fill);
         component.upper->setChannelFillGraph(component.lower);
-        component.curve = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
+        component.curve = new DecimatedGraph(timeAxis(row.rect), valueAxis(row.rect));
         component.curve->setName(tr(info.names[static_cast<std::size_t>(c)]));
         component.curve->setPen(info.components == 1 ? QPen(QColor(0, 110, 120), 1.2) : pen);
         component.curve->setSelectable(QCP::stNone);
@@ -230,14 +237,34 @@ void StatePlots::setResult(std::shared_ptr<const Result> result)
     result_ = std::move(result);
     const std::vector<QCPRange> stance =
         result_ ? flaggedSpans(result_->time_s, result_->flags.stance) : std::vector<QCPRange>();
-    for (std::size_t r = 0; r < kRowCount; ++r) {
-        rows_[r].stance->setSpans(stance);
-        plotRow(r);
-        rescaleRow(r);
-    }
-    refreshLegend();
+    for (RowParts& row : rows_)
+        row.stance->setSpans(stance);
+    rowsStale_ = true;
+    if (isVisible())
+        ensureRowsPlotted();
     showAll();
-    plot_->replot(QCustomPlot::rpQueuedReplot);
+    replot_->request();
+}
+
+void StatePlots::ensureRowsPlotted() const
+{
+    if (!rowsStale_)
+        return;
+    // The rows are a cache of result_: filling them while hidden would cost a parameter change
+    // tens of milliseconds for a tab nobody looks at, so they are filled when shown or asked for.
+    auto* self = const_cast<StatePlots*>(this);
+    self->rowsStale_ = false;
+    for (std::size_t r = 0; r < kRowCount; ++r) {
+        self->plotRow(r);
+        self->rescaleRow(r);
+    }
+    self->refreshLegend();
+}
+
+void StatePlots::showEvent(QShowEvent* event)
+{
+    ensureRowsPlotted();
+    QWidget::showEvent(event);
 }
 
 void StatePlots::plotRow(std::size_t r)
@@ -252,41 +279,43 @@ void StatePlots::plotRow(std::size_t r)
     const double gap = std::numeric_limits<double>::quiet_NaN();
     for (int c = 0; c < row.componentCount; ++c) {
         Component& component = row.components[static_cast<std::size_t>(c)];
-        QVector<double> keys, values, bandKeys, lower, upper, sigma;
+        // Filled as QCPGraphData and handed over whole: the container shares the vector instead of
+        // copying 180k pairs again.
+        QVector<QCPGraphData> curve, lower, upper, sigma;
+        curve.reserve(constantBias ? 2 : static_cast<qsizetype>(n) + 64);
+        if (bands) {
+            for (QVector<QCPGraphData>* band : {&lower, &upper, &sigma})
+                band->reserve(static_cast<qsizetype>(n / stride) + 64);
+        }
         const bool angle = which == Row::Attitude && n > 0;
         const double centre = angle ? circularMean_deg(*result_, c) : 0.0;
-        bool wrapped = false;
         for (std::size_t k = 0; k < n; ++k) {
+            if (constantBias && k != 0 && k + 1 != n)
+                continue;  // a flat line (the row is collapsed): its two ends draw the same
             const double raw = stateValue(*result_, which, k, c);
-            const double value = angle ? nearCentre_deg(raw, centre) : raw;
-            if (!values.isEmpty() && wraps(which, values.back(), value)) {
-                keys << 0.5 * (keys.back() + result_->time_s[k]);
-                values << gap;  // QCustomPlot leaves a gap at NaN
-                wrapped = true;
+            const double value = angle && std::abs(raw - centre) > 180.0 ? nearCentre_deg(raw, centre) : raw;
+            const double time_s = result_->time_s[k];
+            if (!curve.isEmpty() && wraps(which, curve.back().value, value)) {
+                curve.append(QCPGraphData(0.5 * (curve.back().key + time_s), gap));  // QCustomPlot leaves a gap at NaN
             }
-            keys << result_->time_s[k];
-            values << value;
+            curve.append(QCPGraphData(time_s, value));
             if (!bands || (k % stride != 0 && k + 1 != n))
                 continue;
             const double s = stateSigma(*result_, which, k, c);
-            if (!lower.isEmpty() && wraps(which, lower.back() + sigma.back(), value)) {
-                bandKeys << 0.5 * (bandKeys.back() + result_->time_s[k]);
-                lower << gap;
-                upper << gap;
-                sigma << sigma.back();
+            if (!lower.isEmpty() && wraps(which, lower.back().value + sigma.back().value, value)) {
+                const double between_s = 0.5 * (lower.back().key + time_s);
+                lower.append(QCPGraphData(between_s, gap));
+                upper.append(QCPGraphData(between_s, gap));
+                sigma.append(QCPGraphData(between_s, sigma.back().value));
             }
-            bandKeys << result_->time_s[k];
-            lower << value - s;
-            upper << value + s;
-            sigma << s;
+            lower.append(QCPGraphData(time_s, value - s));
+            upper.append(QCPGraphData(time_s, value + s));
+            sigma.append(QCPGraphData(time_s, s));
         }
-        // Adaptive sampling joins a pixel column's lowest and highest value across a gap: a wrap
-        // would be drawn as a line through the whole row.
-        component.curve->setAdaptiveSampling(!wrapped);
-        component.curve->setData(keys, values, true);
-        component.lower->setData(bandKeys, lower, true);
-        component.upper->setData(bandKeys, upper, true);
-        component.sigma->setData(bandKeys, sigma, true);
+        component.curve->data()->set(curve, true);
+        component.lower->data()->set(lower, true);
+        component.upper->data()->set(upper, true);
+        component.sigma->data()->set(sigma, true);
     }
     QString note;
     if (constantBias)
@@ -353,26 +382,45 @@ void StatePlots::rescaleRow(std::size_t r)
 }
 
 QCPRange StatePlots::timeRange() const { return timeRows_->range(); }
-QCPAxisRect* StatePlots::axisRect(Row row) const { return rows_[slot(row)].rect; }
-QCPLegend* StatePlots::legend() const { return legend_->legend(); }
+QCPAxisRect* StatePlots::axisRect(Row row) const
+{
+    ensureRowsPlotted();  // its value range
+    return rows_[slot(row)].rect;
+}
+
+QCPLegend* StatePlots::legend() const
+{
+    ensureRowsPlotted();
+    return legend_->legend();
+}
+
+QCustomPlot* StatePlots::plot() const
+{
+    ensureRowsPlotted();
+    return plot_;
+}
 
 QCPGraph* StatePlots::graph(Row row, int component) const
 {
+    ensureRowsPlotted();
     return component < rows_[slot(row)].componentCount ? rows_[slot(row)].components[static_cast<std::size_t>(component)].curve : nullptr;
 }
 
 QCPGraph* StatePlots::bandLower(Row row, int component) const
 {
+    ensureRowsPlotted();
     return component < rows_[slot(row)].componentCount ? rows_[slot(row)].components[static_cast<std::size_t>(component)].lower : nullptr;
 }
 
 QCPGraph* StatePlots::bandUpper(Row row, int component) const
 {
+    ensureRowsPlotted();
     return component < rows_[slot(row)].componentCount ? rows_[slot(row)].components[static_cast<std::size_t>(component)].upper : nullptr;
 }
 
 QString StatePlots::rowNote(Row row) const
 {
+    ensureRowsPlotted();
     const QCPItemText* note = rows_[slot(row)].note;
     return note->visible() ? note->text() : QString();
 }
@@ -410,6 +458,7 @@ void StatePlots::keyPressEvent(QKeyEvent* event)
 
 void StatePlots::renderTo(QPainter& painter, const QRect& target)
 {
+    ensureRowsPlotted();
     renderPlotTo(plot_, painter, target);
 }
 

@@ -19,6 +19,8 @@ class QPainter;
 
 namespace footpath {
 
+class DeferredReplot;
+
 class LegendStrip;
 class LinkedTimeRows;
 class PlotInteraction;
@@ -54,7 +56,7 @@ public:
 
     double timeCursor() const { return timeCursor_s_; }
     QCPRange timeRange() const;
-    QCustomPlot* plot() const { return plot_; }
+    QCustomPlot* plot() const;
     QCPAxisRect* axisRect(Row row) const;
     /// The legend above the rows (x, y and z once for velocity and the biases; ±1σ with bands).
     QCPLegend* legend() const;
@@ -74,6 +76,7 @@ signals:
 
 protected:
     void keyPressEvent(QKeyEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     struct Component {
@@ -93,12 +96,16 @@ private:
     };
 
     void createRow(std::size_t r);
+    /// Fills the rows from result_ if a result came since they were last filled.
+    void ensureRowsPlotted() const;
     void plotRow(std::size_t r);
     void rescaleRow(std::size_t r);
     void showCollapsed(std::size_t r, bool collapsed);
     void refreshLegend();
 
     QCustomPlot* plot_;
+    DeferredReplot* replot_;
+    bool rowsStale_ = false;  ///< result_ changed while hidden: the rows show an older one  ///< one replot per event-loop pass for the setters, none while hidden
     std::array<RowParts, kRowCount> rows_;
     LegendStrip* legend_ = nullptr;  ///< one for all rows, above them
     QCPGraph* bandLegendEntry_ = nullptr;  ///< draws nothing; names the bands

@@ -230,7 +230,8 @@ public:
 
     int rowCount(const QModelIndex& parent = {}) const override
     {
-        return parent.isValid() || !result_ ? 0 : static_cast<int>(result_->steps.size());
+        // The steps at the last setResult: a live path grows in place between refreshes.
+        return parent.isValid() || !result_ ? 0 : static_cast<int>(stepWarnings_.size());
     }
     int columnCount(const QModelIndex& parent = {}) const override { return parent.isValid() ? 0 : ColumnCount; }
 
@@ -401,11 +402,17 @@ SummaryPanel::SummaryPanel(QWidget* parent) : QWidget(parent)
     stanceDurationHistogram_->installEventFilter(this);
 
     auto* tabs = new QTabWidget;
+    tabs_ = tabs;
     tabs->setObjectName(QStringLiteral("summaryTabs"));
     tabs->addTab(createTable(), tr("Steps"));
     tabs->addTab(createChartPair(strideLengthChart_, stanceDurationChart_), tr("Per step"));
     tabs->addTab(createChartPair(strideLengthHistogram_, stanceDurationHistogram_), tr("Distributions"));
     tabs->addTab(createChartPair(gaitStanceChart_, clearanceChart_), tr("Gait"));
+
+    connect(tabs, &QTabWidget::currentChanged, this, [this] {
+        if (chartsStale_)
+            showCharts();
+    });
 
     auto* splitter = new QSplitter(Qt::Horizontal);
     splitter->addWidget(createFigures());
@@ -764,7 +771,11 @@ void SummaryPanel::refresh()
     showReferenceFigures();
     showWarnings();
     showMotionAndNotes();
-    showCharts();
+    // On screen with the step table in front, the charts wait for their tab: Qt Charts take tens
+    // of milliseconds for a long walk's thousand steps, on every parameter change.
+    chartsStale_ = isVisible() && tabs_->currentIndex() == 0;
+    if (!chartsStale_)
+        showCharts();
 }
 
 void SummaryPanel::showWarnings()
@@ -1023,6 +1034,7 @@ void setDataRange(QValueAxis* axis, const std::vector<double>& values)
 
 void SummaryPanel::showCharts()
 {
+    chartsStale_ = false;
     const GaitStatistics& s = statistics_;
     // Strides start at the second stance (step 2 in the table); stance durations at the first.
     showPerStepChart(strideLengthChart_, tr("Stride length per step"), tr("Stride length (m)"), 2, s.strideLengths_m);
@@ -1053,8 +1065,11 @@ void SummaryPanel::showPerStepChart(QChartView* view, const QString& title, cons
         return;
     auto* series = new QLineSeries;
     series->setPointsVisible(true);
+    QList<QPointF> points;  // handed over at once: append() signals each of a long walk's thousand steps
+    points.reserve(static_cast<qsizetype>(values.size()));
     for (std::size_t i = 0; i < values.size(); ++i)
-        series->append(static_cast<double>(firstStep + i), values[i]);
+        points.append(QPointF(static_cast<double>(firstStep + i), values[i]));
+    series->replace(points);
     chart->addSeries(series);
     QValueAxis* x = addValueAxis(chart, Qt::AlignBottom, xTitle.isEmpty() ? tr("Step") : xTitle);
     QValueAxis* y = addValueAxis(chart, Qt::AlignLeft, yTitle);

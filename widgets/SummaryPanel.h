@@ -17,6 +17,7 @@
 #include <vector>
 
 class QChartView;
+class QTabWidget;
 class QGroupBox;
 class QLabel;
 class QTableView;
@@ -187,6 +188,8 @@ private:
     QLabel* referenceNotes_ = nullptr;
     StepTableModel* stepModel_ = nullptr;
     QTableView* table_ = nullptr;
+    QTabWidget* tabs_ = nullptr;  ///< the step table, then the charts' tabs
+    bool chartsStale_ = false;     ///< the charts show an older result: filled when their tab comes to the front
     QChartView* strideLengthChart_ = nullptr;
     QChartView* stanceDurationChart_ = nullptr;
     QChartView* strideLengthHistogram_ = nullptr;

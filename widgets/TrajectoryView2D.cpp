@@ -1,6 +1,8 @@
 #include "TrajectoryView2D.h"
 
+#include "DeferredReplot.h"
 #include "MotionLanes.h"
+#include "PixelCurve.h"
 #include "PlotInteraction.h"
 #include "TimeAxisNavigation.h"
 #include "metrics/Evaluation.h"
@@ -34,6 +36,7 @@ constexpr int kClickMaxMovement_px = 4;
 constexpr double kSpeedScaleQuantile = 0.99;
 
 const QColor kPathColour(40, 90, 170);
+constexpr double kGhostTolerance_px = 3.0;  // the ghost's faint 2.5 px line: finer detail would not show
 
 // Functions, not globals: a QCPScatterStyle holds a QPixmap, which needs the application first.
 QCPScatterStyle stanceDot()
@@ -114,13 +117,30 @@ public:
     void setPoints(const std::vector<Eigen::Vector3d>& positions_m)
     {
         points_m_.clear();
+        bounds_ = QRectF();
+        extendPoints(positions_m);
+    }
+
+    /// The points of positions_m after those already held (a path that grew at its end).
+    void extendPoints(const std::vector<Eigen::Vector3d>& positions_m)
+    {
+        const std::size_t held = std::min(points_m_.size(), positions_m.size());
+        points_m_.resize(held);
         points_m_.reserve(positions_m.size());
-        for (const Eigen::Vector3d& p : positions_m)
-            points_m_.emplace_back(p.x(), p.y());
+        for (std::size_t k = held; k < positions_m.size(); ++k) {
+            const QPointF point(positions_m[k].x(), positions_m[k].y());
+            // By hand: QRectF::united() ignores the zero-size rectangle of a single point.
+            bounds_ = points_m_.empty() ? QRectF(point, point)
+                                        : QRectF(QPointF(std::min(bounds_.left(), point.x()), std::min(bounds_.top(), point.y())),
+                                                 QPointF(std::max(bounds_.right(), point.x()), std::max(bounds_.bottom(), point.y())));
+            points_m_.push_back(point);
+        }
         levels_.clear();
         levelColours_.clear();
-        bounds_ = horizontalBounds(positions_m).value_or(QRectF());
     }
+
+    /// The smallest rectangle holding the points (metres); nullopt for none.
+    std::optional<QRectF> bounds() const { return points_m_.empty() ? std::nullopt : std::optional<QRectF>(bounds_); }
 
     /// One value per point mapped onto gradient over range; empty values: the pen colour throughout.
     /// The gradient is a copy because QCPColorGradient::color() updates a cache.
@@ -255,14 +275,15 @@ std::vector<Eigen::Vector3d> alignReferenceToEstimate(const std::vector<Eigen::V
 }
 
 TrajectoryView2D::TrajectoryView2D(QWidget* parent)
-    : QWidget(parent), plot_(new QCustomPlot(this)), timeCursor_s_(std::numeric_limits<double>::quiet_NaN())
+    : QWidget(parent), plot_(new QCustomPlot(this)), replot_(new DeferredReplot(plot_)),
+      timeCursor_s_(std::numeric_limits<double>::quiet_NaN())
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(plot_);
 
     // Created in drawing order: the reference under the path, the markers on top.
-    reference_ = new QCPCurve(plot_->xAxis, plot_->yAxis);
+    reference_ = new PixelCurve(plot_->xAxis, plot_->yAxis);
     reference_->setName(tr("Reference"));
     reference_->setPen(QPen(QColor(150, 150, 150), 1.5, Qt::DashLine));
     reference_->removeFromLegend();
@@ -405,7 +426,7 @@ void TrajectoryView2D::clear()
     referencePositions_m_.clear();
     showReferenceCurve();
     showPathAndMarkers();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::showResult(const Result& result)
@@ -425,19 +446,22 @@ void TrajectoryView2D::followResult(std::shared_ptr<const Result> result)
         clear();
         return;
     }
+    const bool grown = result == result_;  // the same path object, samples appended since (live input)
     result_ = std::move(result);
-    showPathAndMarkers();
+    showPathAndMarkers(grown);
     if (!viewMovedByUser_)
         fitViewToData();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::setReference(const std::vector<Eigen::Vector3d>& positions_m)
 {
+    if (positions_m.empty() && referencePositions_m_.empty())
+        return;  // still none: nothing to fit or draw anew (a walk without reference, after each estimate)
     referencePositions_m_ = positions_m;
     showReferenceCurve();
     fitViewToData();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::showReferenceCurve()
@@ -459,7 +483,7 @@ void TrajectoryView2D::setPathLabel(const QString& label)
 {
     path_->setName(label.isEmpty() ? tr("Foot path") : label);
     wrapLegendToWidth();
-    plot_->replot();
+    replot_->request();
 }
 
 QString TrajectoryView2D::pathLabel() const
@@ -477,7 +501,7 @@ void TrajectoryView2D::setOverlays(const std::vector<PathOverlay>& overlays)
     overlayCurves_.clear();
     overlayPositions_m_.clear();
     for (const PathOverlay& overlay : overlays) {
-        auto* curve = new QCPCurve(plot_->xAxis, plot_->yAxis);
+        auto* curve = new PixelCurve(plot_->xAxis, plot_->yAxis);
         curve->setLayer(QStringLiteral("overlays"));
         curve->setName(overlay.label);
         curve->setPen(QPen(overlay.colour, 1.3));
@@ -497,7 +521,7 @@ void TrajectoryView2D::setOverlays(const std::vector<PathOverlay>& overlays)
     }
     overlayLegend_->setVisible(!overlayCurves_.empty());
     fitViewToData();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& positions_m)
@@ -505,24 +529,24 @@ void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& position
     if (!ghost_) {
         // Under everything else, so the current path, its markers and the reference stay on top.
         plot_->addLayer(QStringLiteral("ghost"), plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
-        ghost_ = new QCPCurve(plot_->xAxis, plot_->yAxis);
+        auto* ghost = new PixelCurve(plot_->xAxis, plot_->yAxis);
+        ghost->setTolerance(kGhostTolerance_px);
+        ghost_ = ghost;
         ghost_->setLayer(QStringLiteral("ghost"));
         ghost_->setName(tr("Before the last change"));
         ghost_->setPen(QPen(QColor(110, 110, 110, 90), 2.5));
     }
-    QVector<double> t, x, y;
-    for (const Eigen::Vector3d& p : positions_m) {
-        t << static_cast<double>(t.size());
-        x << p.x();
-        y << p.y();
-    }
-    ghost_->setData(t, x, y, true);
+    QVector<QCPCurveData> points;  // handed over whole: the curve shares it instead of copying
+    points.reserve(static_cast<qsizetype>(positions_m.size()));
+    for (const Eigen::Vector3d& p : positions_m)
+        points.append(QCPCurveData(static_cast<double>(points.size()), p.x(), p.y()));
+    ghost_->data()->set(points, true);
     if (positions_m.empty())
         ghost_->removeFromLegend();
     else if (!plot_->legend->hasItemWithPlottable(ghost_))
         ghost_->addToLegend();
     wrapLegendToWidth();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::createOverlayLegend()
@@ -545,7 +569,7 @@ void TrajectoryView2D::setColouring(Colouring colouring)
 {
     colouring_ = colouring;
     updateColouring();
-    plot_->replot();
+    replot_->request();
 }
 
 void TrajectoryView2D::setTimeCursor(double time_s)
@@ -555,11 +579,14 @@ void TrajectoryView2D::setTimeCursor(double time_s)
     cursorLayer_->replot();
 }
 
-void TrajectoryView2D::showPathAndMarkers()
+void TrajectoryView2D::showPathAndMarkers(bool grown)
 {
     const std::vector<Eigen::Vector3d> none;
     const std::vector<Eigen::Vector3d>& positions = result_ ? result_->position_m : none;
-    path_->setPoints(positions);
+    if (grown)
+        path_->extendPoints(positions);
+    else
+        path_->setPoints(positions);
     for (QCPGraph* graph : {stances_, start_, end_})
         graph->data()->clear();
     if (result_) {
@@ -655,8 +682,7 @@ void TrajectoryView2D::updateTimeCursorMarker()
 void TrajectoryView2D::fitViewToData()
 {
     const std::optional<QRectF> bounds =
-        unite(unite(horizontalBounds(result_ ? result_->position_m : std::vector<Eigen::Vector3d>()),
-                    horizontalBounds(referencePositions_m_)),
+        unite(unite(path_->bounds(), horizontalBounds(referencePositions_m_)),
               horizontalBounds(overlayPositions_m_));
     if (!bounds)
         return;  // nothing to show: keep whatever the axes show

@@ -26,6 +26,7 @@ class QMouseEvent;
 namespace footpath {
 
 class ColouredPathPlottable;
+class DeferredReplot;
 class PlotInteraction;
 
 /// Index of the sample whose time is closest to time_s (0 for an empty or one-sample series).
@@ -54,7 +55,8 @@ public:
 
     void setResult(std::shared_ptr<const Result> result);
     /// For a path that grows (live input): refits the view unless the user has panned or zoomed
-    /// since the last fit; a double-click fits and follows again.
+    /// since the last fit; a double-click fits and follows again. Given the result it already
+    /// shows, grown in place by appended samples, it converts only the new samples.
     void followResult(std::shared_ptr<const Result> result);
     void showResult(const Result& result);  ///< copies; prefer setResult with the session's pointer
     void clear();  ///< removes path, markers and reference; the axes keep their range
@@ -106,7 +108,7 @@ private:
     void createColourScale();
     void showColourScale(bool show);
     void showReferenceCurve();
-    void showPathAndMarkers();
+    void showPathAndMarkers(bool grown = false);  ///< grown: result_ is the shown path with samples appended
     void updateColouring();
     bool showMotionColouring();
     void createOverlayLegend();
@@ -121,6 +123,7 @@ private:
     bool nearestPathSampleToPixel(const QPointF& pixel, std::size_t& index) const;
 
     QCustomPlot* plot_;
+    DeferredReplot* replot_;  ///< the setters' replots: once per event-loop pass, none while hidden
     ColouredPathPlottable* path_;
     QCPCurve* reference_;
     QCPGraph* stances_;

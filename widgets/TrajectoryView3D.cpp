@@ -267,6 +267,8 @@ void TrajectoryView3D::drawGhost(QPainter& painter, const ViewTransform& view) c
 
 void TrajectoryView3D::setReference(const std::vector<Eigen::Vector3d>& positions_m)
 {
+    if (positions_m.empty() && reference_m_.empty())
+        return;  // still none: no need to rebuild the scene (a walk without reference, after each estimate)
     reference_m_ = positions_m;
     rebuildScene();
     resetView();

@@ -1,5 +1,6 @@
 #include "LivePanel.h"
 
+#include "LiveReestimator.h"
 #include "LiveViews.h"
 #include "PortDiscovery.h"
 #include "ReconnectOffer.h"
@@ -120,8 +121,9 @@ QString continuationPath(const QString& mtbPath)
 }
 
 LivePanel::LivePanel(QWidget* parent)
-    : QWidget(parent), session_(new DeviceSession(serialDevicePortFactory(), this))
+    : QWidget(parent), session_(new DeviceSession(serialDevicePortFactory(), this)), reestimator_(new LiveReestimator(this))
 {
+    connect(reestimator_, &LiveReestimator::finished, this, &LivePanel::adoptReestimate);
     buildUi();
     wireSession();
     refreshPorts();
@@ -463,17 +465,43 @@ void LivePanel::setParameters(const Parameters& params)
     views_->setParameters(params_);
     if (!estimator_)
         return;
-    restartEstimate();
+    if (received_.empty() || !StreamingEstimator(params_).error().empty()) {
+        restartEstimate();  // nothing to catch up with, or nothing will be estimated
+        refreshViews(true);
+        return;
+    }
+    // The old estimator goes on with the samples arriving meanwhile; the new one catches up with
+    // them when it arrives (adoptReestimate).
+    std::vector<ImuSample> samples;
+    samples.reserve(received_.size());
     for (const LiveSample& sample : received_)
-        estimator_->push(sample.imu);
-    if (session_->state() == SessionState::Idle)
-        estimator_->finish();
+        samples.push_back(sample.imu);
+    reestimateFinishes_ = session_->state() == SessionState::Idle;
+    reestimator_->start(std::move(samples), params_, reestimateFinishes_);
+    showEstimateFigures();
+}
+
+bool LivePanel::isReestimating() const
+{
+    return reestimator_->isRunning();
+}
+
+void LivePanel::adoptReestimate(std::shared_ptr<StreamingEstimator> estimator, std::size_t samples)
+{
+    estimator_ = std::move(estimator);
+    for (std::size_t k = samples; k < received_.size(); ++k)
+        estimator_->push(received_[k].imu);
+    if (session_->state() == SessionState::Idle && !reestimateFinishes_)
+        estimator_->finish();  // the session ended while it ran
+    views_->restartPath();
     refreshViews(true);
 }
 
 void LivePanel::restartEstimate()
 {
-    estimator_ = std::make_unique<StreamingEstimator>(params_);
+    reestimator_->cancel();  // a re-estimate of other samples or parameters must not take over
+    estimator_ = std::make_shared<StreamingEstimator>(params_);
+    views_->restartPath();
     if (!estimator_->error().empty())
         status_->setText(tr("No live estimate: %1").arg(QString::fromStdString(estimator_->error())));
     viewsDirty_ = true;
@@ -739,7 +767,9 @@ void LivePanel::showEstimateFigures()
         estimateState_->setText(session_->state() == SessionState::Idle ? tr("Not connected") : tr("Waiting for samples"));
         return;
     }
-    if (session_->state() == SessionState::Idle && estimator_->pendingSamples() == 0 && estimator_->aligned())
+    if (reestimator_->isRunning())
+        estimateState_->setText(tr("Re-estimating with the new parameters (the old estimate is shown meanwhile)"));
+    else if (session_->state() == SessionState::Idle && estimator_->pendingSamples() == 0 && estimator_->aligned())
         estimateState_->setText(tr("Complete: every sample estimated, as the offline analysis does"));
     else if (!estimator_->aligned())
         estimateState_->setText(tr("Aligning: keep the foot still for %1 s (a walk already under way is aligned at "

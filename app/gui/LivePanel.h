@@ -24,6 +24,7 @@ class QVBoxLayout;
 
 namespace footpath {
 
+class LiveReestimator;
 class LiveViews;
 class SummaryPanel;
 class ReconnectOffer;
@@ -48,8 +49,11 @@ public:
     /// streaming, the recording starts with the first sample of the next connection.
     void startRecordingTo(const QString& mtbPath);
     void stopRecording();
-    /// The estimator's parameters (the workspace's); re-estimates what was received so far.
+    /// The estimator's parameters (the workspace's); re-estimates what was received so far off
+    /// the GUI thread (the views keep the old estimate until the new one has caught up).
     void setParameters(const Parameters& params);
+    /// Whether a re-estimate after a parameter change is running.
+    bool isReestimating() const;
     /// Moves the live views out of the panel into the workspace's tab widgets.
     void moveViewsInto(QTabWidget* trajectoryTabs, QTabWidget* signalTabs);
     /// While a live view is the current tab of the workspace (after moveViewsInto), `summary`
@@ -66,7 +70,8 @@ public:
     /// The causal estimate so far (null before the first connection).
     const StreamingEstimator* estimator() const { return estimator_.get(); }
     /// What the trajectory views show now, with the plausibility warnings so far (null until the
-    /// first path was drawn).
+    /// first path was drawn). The same object grows at each refresh (trajectoryUpdated) until the
+    /// estimate restarts (new parameters or session).
     std::shared_ptr<const Result> lastResult() const { return lastResult_; }
     /// How far the estimate trails the newest sample: the detector's look-ahead.
     double latency_s() const;
@@ -116,6 +121,8 @@ private:
     void onEnded(SessionEnd how, const QString& message);
     void finishRecording(const QString& mtbPath);
     void restartEstimate();
+    /// The re-estimate for the current parameters arrived: it takes over from the old estimator.
+    void adoptReestimate(std::shared_ptr<StreamingEstimator> estimator, std::size_t samples);
     void refreshViews(bool force = false);
     void showEstimateFigures();
     void showLiveSummary();
@@ -163,7 +170,9 @@ private:
 
     Parameters params_;
     std::vector<LiveSample> received_;
-    std::unique_ptr<StreamingEstimator> estimator_;
+    std::shared_ptr<StreamingEstimator> estimator_;
+    LiveReestimator* reestimator_;
+    bool reestimateFinishes_ = false;  ///< the running re-estimate was asked to finish (the session had ended)
     bool viewsDirty_ = false;
     std::shared_ptr<const Result> lastResult_;
     QString summaryLine_;  ///< the live figures' one line (over the live path, in the status bar)

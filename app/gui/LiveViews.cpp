@@ -130,13 +130,23 @@ Result resultWindow(const Result& result, double from_s)
 Result pathOnly(const Result& result)
 {
     Result path;
-    path.time_s = result.time_s;
-    path.position_m = result.position_m;
-    path.velocity_mps = result.velocity_mps;
-    path.flags.stance = result.flags.stance;
-    path.steps = result.steps;
-    path.summary = result.summary;
+    appendPath(path, result);
     return path;
+}
+
+void appendPath(Result& path, const Result& result)
+{
+    const std::size_t from = path.time_s.size();
+    const auto appendTail = [from](auto& to, const auto& values) {
+        if (from < values.size())
+            to.insert(to.end(), values.begin() + static_cast<std::ptrdiff_t>(from), values.end());
+    };
+    appendTail(path.time_s, result.time_s);
+    appendTail(path.position_m, result.position_m);
+    appendTail(path.velocity_mps, result.velocity_mps);
+    appendTail(path.flags.stance, result.flags.stance);
+    path.steps = result.steps;  // a few per second of walk: cheap, and the tail's may be decided late
+    path.summary = result.summary;
 }
 
 LiveViews::LiveViews(QWidget* parent)
@@ -208,6 +218,7 @@ void LiveViews::clear()
     trajectory3D_->clear();
     signals_->setRecording(nullptr);
     flags_->setRecording(nullptr);
+    path_.reset();
     lastPathUpdateCost_ms_ = 0;
 }
 
@@ -246,14 +257,20 @@ std::shared_ptr<const Result> LiveViews::showPath(const Result& estimate, std::v
         return {};
     QElapsedTimer cost;
     cost.start();
-    Result shown = pathOnly(estimate);
-    shown.warnings = std::move(warnings);
-    auto path = std::make_shared<const Result>(std::move(shown));
-    trajectory2D_->followResult(path);
-    trajectory3D_->followResult(path);
+    if (!path_ || path_->time_s.size() > estimate.time_s.size())
+        path_ = std::make_shared<Result>();  // not a continuation of what is shown: start afresh
+    appendPath(*path_, estimate);
+    path_->warnings = std::move(warnings);
+    trajectory2D_->followResult(path_);
+    trajectory3D_->followResult(path_);
     lastPathUpdateCost_ms_ = cost.elapsed();
     sincePathUpdate_.restart();
-    return path;
+    return path_;
+}
+
+void LiveViews::restartPath()
+{
+    path_.reset();
 }
 
 }  // namespace footpath

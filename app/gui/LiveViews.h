@@ -59,12 +59,17 @@ public:
 
     /// Shows the last kWindow_s of `samples` and of `estimate`.
     void showSignals(const std::vector<LiveSample>& samples, const Result& estimate);
-    /// Shows the whole path of `estimate` in the trajectory views and returns the copy they
+    /// Shows the whole path of `estimate` in the trajectory views and returns the path they
     /// keep, carrying `warnings` (the plausibility checks of the estimate so far) for the summary.
-    /// Long walks make copying and drawing the path slow, so this skips (and returns null) until
-    /// five times the last update's duration has passed.
+    /// The kept path grows in place: only the samples estimated since the last call are appended
+    /// (a causal estimate never changes what it has estimated), so the pointer returned stays the
+    /// same until restartPath(). Drawing a long walk is still slow, so this skips (and returns
+    /// null) until five times the last update's duration has passed.
     std::shared_ptr<const Result> showPath(const Result& estimate, std::vector<PlausibilityWarning> warnings,
                                            bool force = false);
+    /// The estimate starts again (new parameters, new session): the next showPath() starts a new
+    /// path; holders of the old one keep it as it was.
+    void restartPath();
 
 private:
     TrajectoryView2D* trajectory2D_;
@@ -76,6 +81,7 @@ private:
     std::vector<QLabel*> noticeLabels_;  ///< one over each view
     std::vector<QLabel*> summaryLabels_;  ///< one in each path view
     QString notice_;
+    std::shared_ptr<Result> path_;  ///< what the trajectory views show, grown by showPath()
     QElapsedTimer sincePathUpdate_;
     qint64 lastPathUpdateCost_ms_ = 0;
 };
@@ -87,5 +93,9 @@ Result resultWindow(const Result& result, double from_s);
 /// What the trajectory views draw of `result`: times, positions, velocities, stance flags and
 /// steps; the other per-sample vectors stay empty.
 Result pathOnly(const Result& result);
+
+/// Brings `path` (a pathOnly() of an earlier state of `result`) up to `result`: its per-sample
+/// vectors get the samples after their end appended, its steps and summary are replaced.
+void appendPath(Result& path, const Result& result);
 
 }  // namespace footpath

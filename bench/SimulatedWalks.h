@@ -1,0 +1,33 @@
+#pragma once
+
+// Walks the benchmarks share, simulated once per process.
+#include "Recording.h"
+#include "sim/WalkSimulator.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace footpath {
+
+/// Laps of a 40 x 25 m rectangle until the walk lasts 30 minutes (180,000 samples at 100 Hz), with
+/// MTi-class sensor errors.
+inline const Recording& thirtyMinuteWalk()
+{
+    static const Recording recording = [] {
+        WalkSimulatorConfig config;
+        config.accNoiseStd_mps2 = 0.01;
+        config.gyrNoiseStd_radps = 0.0015;
+        config.accBias_mps2 = Eigen::Vector3d(0.0075, -0.005, 0.01);
+        config.gyrBias_radps = Eigen::Vector3d(0.0016, -0.0012, 0.002);
+        std::vector<Eigen::Vector3d> path{Eigen::Vector3d::Zero()};
+        const std::vector<Eigen::Vector3d> lap = closedRectanglePath(40.0, 25.0);
+        for (int i = 0; i < 20; ++i)  // about 93 s per lap
+            path.insert(path.end(), lap.begin() + 1, lap.end());
+        SimulatedWalk walk = simulateWalk(path, config);
+        walk.recording.samples.resize(std::min<std::size_t>(walk.recording.samples.size(), 30 * 60 * 100));
+        return walk.recording;
+    }();
+    return recording;
+}
+
+}  // namespace footpath

@@ -1,0 +1,36 @@
+#include "PixelCurve.h"
+
+#include <cmath>
+
+namespace footpath {
+
+QVector<QPointF> pixelSimplified(const QVector<QPointF>& points, double tolerance_px)
+{
+    QVector<QPointF> kept;
+    kept.reserve(std::min<qsizetype>(points.size(), 4096));
+    bool afterGap = true;  // the first point, and the first after a gap, start a new piece
+    for (qsizetype k = 0; k < points.size(); ++k) {
+        const QPointF& point = points[k];
+        const bool gap = std::isnan(point.x()) || std::isnan(point.y());
+        const bool lastOfPiece = k + 1 == points.size() || std::isnan(points[k + 1].x()) || std::isnan(points[k + 1].y());
+        if (!gap && !afterGap && !lastOfPiece && (point - kept.back()).manhattanLength() < tolerance_px)
+            continue;
+        kept.append(point);
+        afterGap = gap;
+    }
+    return kept;
+}
+
+void PixelCurve::draw(QCPPainter* painter)
+{
+    QVector<QPointF> pixels;
+    pixels.reserve(mDataContainer->size());
+    for (const QCPCurveData& point : *mDataContainer)
+        pixels.append(coordsToPixels(point.key, point.value));
+    applyDefaultAntialiasingHint(painter);
+    painter->setPen(mPen);
+    painter->setBrush(Qt::NoBrush);
+    drawCurveLine(painter, pixelSimplified(pixels, tolerance_px_));
+}
+
+}  // namespace footpath
