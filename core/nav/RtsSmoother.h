@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Result.h"
+#include "nav/BulkAllocator.h"
 #include "nav/ErrorStateEkf.h"
 #include "nav/Parameters.h"
 
@@ -97,12 +98,12 @@ private:
     /// One record of recordStride() doubles a sample, so the backward pass reads one block per
     /// sample: the packed covariance, the attitude (quaternion), the propagation's specific force,
     /// step and (15 states) attitude.
-    std::vector<double> records_;
+    std::vector<double, BulkAllocator<double>> records_;
     std::size_t samples_ = 0;
     /// Sample k's updates are updateData_[updateStart_[k], updateStart_[k + 1]), each record
     /// [rows, 1 if H selects states, H (indices or rows x N), K (N x rows), S^-1 z, S^-1, length].
     std::vector<std::size_t> updateStart_{0};
-    std::vector<double> updateData_;
+    std::vector<double, BulkAllocator<double>> updateData_;
     std::vector<int> rowsScratch_;  ///< storeUpdate's list of rows kept, reused
 };
 
