@@ -1059,6 +1059,18 @@
         <source>Live: %1 steps, %2 m, %3 s, end to start %4 m, warnings: %5</source>
         <translation>Live: %1 Schritte, %2 m, %3 s, Ende bis Start %4 m, Warnungen: %5</translation>
     </message>
+    <message>
+        <source>Samples the views could not keep up with (the window was busy for longer than the display queue holds). They are in the recording all the same.</source>
+        <translation>Messwerte, mit denen die Ansichten nicht Schritt halten konnten (das Fenster war länger beschäftigt, als die Anzeigewarteschlange fasst). Sie sind trotzdem in der Aufzeichnung.</translation>
+    </message>
+    <message>
+        <source>Not shown:</source>
+        <translation>Nicht angezeigt:</translation>
+    </message>
+    <message>
+        <source>Re-estimating with the new parameters (the old estimate is shown meanwhile)</source>
+        <translation>Neuschätzung mit den neuen Parametern (bis dahin wird die alte Schätzung angezeigt)</translation>
+    </message>
 </context>
 <context>
     <name>footpath::LiveViews</name>

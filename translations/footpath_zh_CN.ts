@@ -1058,6 +1058,18 @@
         <source>Live: %1 steps, %2 m, %3 s, end to start %4 m, warnings: %5</source>
         <translation>实时：%1 步，%2 m，%3 s，终点到起点 %4 m，警告：%5</translation>
     </message>
+    <message>
+        <source>Samples the views could not keep up with (the window was busy for longer than the display queue holds). They are in the recording all the same.</source>
+        <translation>视图未能及时显示的样本（窗口繁忙的时间超过了显示队列的容量）。它们仍完整保存在记录中。</translation>
+    </message>
+    <message>
+        <source>Not shown:</source>
+        <translation>未显示：</translation>
+    </message>
+    <message>
+        <source>Re-estimating with the new parameters (the old estimate is shown meanwhile)</source>
+        <translation>正在用新参数重新估计（期间显示旧的估计）</translation>
+    </message>
 </context>
 <context>
     <name>footpath::LiveViews</name>
