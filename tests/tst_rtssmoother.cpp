@@ -173,6 +173,27 @@ private slots:
         QVERIFY2(sigma < 1e-6, qPrintable(QString::number(sigma)));
     }
 
+    void smoothedVariancesStayFiniteOnALongWalk()
+    {
+        // Six laps of a 40 x 25 m rectangle (about 9 minutes at 100 Hz): the information matrix's
+        // antisymmetric rounding error grew to overflow within a minute of such a walk's end.
+        std::vector<Eigen::Vector3d> path{Eigen::Vector3d::Zero()};
+        const std::vector<Eigen::Vector3d> lap = closedRectanglePath(40.0, 25.0);
+        for (int i = 0; i < 6; ++i)
+            path.insert(path.end(), lap.begin() + 1, lap.end());
+        const SimulatedWalk walk = simulateWalk(path, mtiClassSensor(100.0, 3));
+        const Result smoothed = run(walk.recording, Parameters(), EstimatorKind::Smoother);
+        const Result filtered = run(walk.recording, Parameters(), EstimatorKind::Ekf);
+        QVERIFY(smoothed.errorStd.size() > 50000);
+        for (std::size_t k = 0; k < smoothed.errorStd.size(); ++k) {
+            const Eigen::Matrix<float, 15, 1>& sigma = smoothed.errorStd[k];
+            QVERIFY2(sigma.allFinite(), qPrintable(QStringLiteral("sample %1").arg(k)));
+            // Smoothing only adds information (a little slack for rounding in float).
+            QVERIFY2((sigma.array() <= filtered.errorStd[k].array() * 1.0001f + 1e-6f).all(),
+                     qPrintable(QStringLiteral("sample %1").arg(k)));
+        }
+    }
+
     void aRecordingBeyondTheMemoryBudgetIsFilteredWithANote()
     {
         const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), mtiClassSensor(100.0, 5));

@@ -342,6 +342,11 @@ void RtsSmoother::updatesBackward(std::size_t k, Eigen::Matrix<double, C::size, 
             l -= bh + bh.transpose();
             l += hm.transpose().lazyProduct(c.lazyProduct(hm));
         }
+        // The steps above keep L symmetric only in exact arithmetic, and its antisymmetric part,
+        // which they do not damp, grows from rounding to overflow over a few thousand strides
+        // (a 30-minute walk's smoothed variances were infinite before its 20th minute). The
+        // correction does not depend on L; the variances do.
+        l = 0.5 * (l + l.transpose()).eval();
     }
 }
 
