@@ -301,7 +301,9 @@ void StatePlots::plotRow(std::size_t r)
             curve.append(QCPGraphData(time_s, value));
             if (!bands || (k % stride != 0 && k + 1 != n))
                 continue;
-            const double s = stateSigma(*result_, which, k, c);
+            // A σ that is not finite (a covariance that overflowed) leaves a gap in the band
+            // rather than a band to the end of the axis that rescales the whole row.
+            const double s = std::isfinite(stateSigma(*result_, which, k, c)) ? stateSigma(*result_, which, k, c) : gap;
             if (!lower.isEmpty() && wraps(which, lower.back().value + sigma.back().value, value)) {
                 const double between_s = 0.5 * (lower.back().key + time_s);
                 lower.append(QCPGraphData(between_s, gap));
