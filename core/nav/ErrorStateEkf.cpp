@@ -5,7 +5,6 @@
 
 #include <Eigen/Cholesky>
 
-
 namespace footpath {
 
 namespace {
