@@ -14,16 +14,11 @@ namespace footpath {
 inline const Recording& thirtyMinuteWalk()
 {
     static const Recording recording = [] {
-        WalkSimulatorConfig config;
-        config.accNoiseStd_mps2 = 0.01;
-        config.gyrNoiseStd_radps = 0.0015;
-        config.accBias_mps2 = Eigen::Vector3d(0.0075, -0.005, 0.01);
-        config.gyrBias_radps = Eigen::Vector3d(0.0016, -0.0012, 0.002);
         std::vector<Eigen::Vector3d> path{Eigen::Vector3d::Zero()};
         const std::vector<Eigen::Vector3d> lap = closedRectanglePath(40.0, 25.0);
         for (int i = 0; i < 20; ++i)  // about 93 s per lap
             path.insert(path.end(), lap.begin() + 1, lap.end());
-        SimulatedWalk walk = simulateWalk(path, config);
+        SimulatedWalk walk = simulateWalk(path, mtiClassSensor());
         walk.recording.samples.resize(std::min<std::size_t>(walk.recording.samples.size(), 30 * 60 * 100));
         return walk.recording;
     }();

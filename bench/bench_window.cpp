@@ -68,7 +68,7 @@ public:
         clock_.start();
         QObject::connect(window.session(), &AnalysisSession::estimatingChanged, this, [this](bool running) {
             if (!running)
-                resultArrived_ms_ = static_cast<double>(clock_.nsecsElapsed()) / 1e6;  // emitted just before resultChanged
+                resultArrived_ms_ = now_ms();  // emitted just before resultChanged
         });
         QObject::connect(&window, &MainWindow::resultShown, this, [this] {
             shown_ = true;

@@ -303,7 +303,8 @@ void StatePlots::plotRow(std::size_t r)
                 continue;
             // A σ that is not finite (a covariance that overflowed) leaves a gap in the band
             // rather than a band to the end of the axis that rescales the whole row.
-            const double s = std::isfinite(stateSigma(*result_, which, k, c)) ? stateSigma(*result_, which, k, c) : gap;
+            const double computed = stateSigma(*result_, which, k, c);
+            const double s = std::isfinite(computed) ? computed : gap;
             if (!lower.isEmpty() && wraps(which, lower.back().value + sigma.back().value, value)) {
                 const double between_s = 0.5 * (lower.back().key + time_s);
                 lower.append(QCPGraphData(between_s, gap));

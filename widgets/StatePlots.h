@@ -104,8 +104,8 @@ private:
     void refreshLegend();
 
     QCustomPlot* plot_;
-    DeferredReplot* replot_;
-    bool rowsStale_ = false;  ///< result_ changed while hidden: the rows show an older one  ///< one replot per event-loop pass for the setters, none while hidden
+    DeferredReplot* replot_;  ///< one replot per event-loop pass for the setters, none while hidden
+    bool rowsStale_ = false;  ///< result_ changed while hidden: the rows show an older one
     std::array<RowParts, kRowCount> rows_;
     LegendStrip* legend_ = nullptr;  ///< one for all rows, above them
     QCPGraph* bandLegendEntry_ = nullptr;  ///< draws nothing; names the bands

@@ -129,10 +129,8 @@ public:
         points_m_.reserve(positions_m.size());
         for (std::size_t k = held; k < positions_m.size(); ++k) {
             const QPointF point(positions_m[k].x(), positions_m[k].y());
-            // By hand: QRectF::united() ignores the zero-size rectangle of a single point.
-            bounds_ = points_m_.empty() ? QRectF(point, point)
-                                        : QRectF(QPointF(std::min(bounds_.left(), point.x()), std::min(bounds_.top(), point.y())),
-                                                 QPointF(std::max(bounds_.right(), point.x()), std::max(bounds_.bottom(), point.y())));
+            // unite(), not QRectF::united(), which ignores the zero-size rectangle of a single point.
+            bounds_ = points_m_.empty() ? QRectF(point, point) : *unite(bounds_, QRectF(point, point));
             points_m_.push_back(point);
         }
         levels_.clear();

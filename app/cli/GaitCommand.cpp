@@ -1,6 +1,7 @@
 #include "cli/GaitCommand.h"
 
 #include "cli/CliSupport.h"
+#include "cli/EvalOutput.h"
 #include "gait/BilateralGait.h"
 #include "io/FootPairing.h"
 
@@ -17,7 +18,6 @@ namespace footpath::cli {
 namespace {
 
 struct Foot {
-    std::string path;
     Recording recording;
     Result result;
 };
@@ -26,16 +26,10 @@ Foot estimateFoot(const std::string& path, const ImportOptions& options, const P
 {
     ImportResult read = importFile(path, options);
     printImportWarnings(path, read.recording.warnings);
-    Foot foot{path, std::move(read.recording), Result()};
+    Foot foot{std::move(read.recording), Result()};
     foot.result = estimate(foot.recording, params);
     printPlausibilityWarnings(path, foot.result.warnings);
     return foot;
-}
-
-/// JSON has no NaN: a figure that could not be computed is null.
-QJsonValue figure(double value)
-{
-    return std::isfinite(value) ? QJsonValue(value) : QJsonValue(QJsonValue::Null);
 }
 
 QJsonObject gaitJson(const GaitSummary& gait)
@@ -43,19 +37,19 @@ QJsonObject gaitJson(const GaitSummary& gait)
     return {{"strides", static_cast<qint64>(gait.strides)},
             {"straight_strides", static_cast<qint64>(gait.straightStrides)},
             {"turning_strides", static_cast<qint64>(gait.turningStrides)},
-            {"stride_time_s", figure(gait.strideTime_s)},
-            {"stride_length_m", figure(gait.strideLength_m)},
-            {"cadence_spm", figure(gait.cadence_spm)},
-            {"stance_pct", figure(gait.stancePct)},
-            {"swing_pct", figure(gait.swingPct)},
-            {"clearance_m", figure(gait.clearance_m)}};
+            {"stride_time_s", jsonNumber(gait.strideTime_s)},
+            {"stride_length_m", jsonNumber(gait.strideLength_m)},
+            {"cadence_spm", jsonNumber(gait.cadence_spm)},
+            {"stance_pct", jsonNumber(gait.stancePct)},
+            {"swing_pct", jsonNumber(gait.swingPct)},
+            {"clearance_m", jsonNumber(gait.clearance_m)}};
 }
 
 QJsonObject doubleSupportJson(const DoubleSupportSummary& support)
 {
-    return {{"mean_pct", figure(support.meanPct)},
-            {"initial_pct", figure(support.initialPct)},
-            {"terminal_pct", figure(support.terminalPct)},
+    return {{"mean_pct", jsonNumber(support.meanPct)},
+            {"initial_pct", jsonNumber(support.initialPct)},
+            {"terminal_pct", jsonNumber(support.terminalPct)},
             {"strides", static_cast<qint64>(support.cycles)},
             {"unpaired_strides", static_cast<qint64>(support.unpairedCycles)}};
 }
@@ -68,16 +62,16 @@ QJsonObject walkJson(const FootPair& pair, const BilateralGait& walk, const std:
                      {"left_gait", gaitJson(walk.left)},
                      {"right_gait", gaitJson(walk.right)},
                      {"double_support", doubleSupportJson(walk.doubleSupport)},
-                     {"symmetry_index_pct", QJsonObject{{"stride_time", figure(s.strideTimePct)},
-                                                        {"stride_length", figure(s.strideLengthPct)},
-                                                        {"stance", figure(s.stancePct)},
-                                                        {"swing", figure(s.swingPct)}}}};
+                     {"symmetry_index_pct", QJsonObject{{"stride_time", jsonNumber(s.strideTimePct)},
+                                                        {"stride_length", jsonNumber(s.strideLengthPct)},
+                                                        {"stance", jsonNumber(s.stancePct)},
+                                                        {"swing", jsonNumber(s.swingPct)}}}};
     if (check)
         json["against_labels"] = QJsonObject{{"labelled", doubleSupportJson(check->labelled)},
                                              {"detected", doubleSupportJson(check->detected)},
                                              {"matched_strides", static_cast<qint64>(check->matchedStrides)},
-                                             {"matched_labelled_pct", figure(check->matchedLabelledPct)},
-                                             {"matched_detected_pct", figure(check->matchedDetectedPct)}};
+                                             {"matched_labelled_pct", jsonNumber(check->matchedLabelledPct)},
+                                             {"matched_detected_pct", jsonNumber(check->matchedDetectedPct)}};
     QJsonArray notes;
     for (const std::string& note : pair.notes)
         notes.append(QString::fromStdString(note));

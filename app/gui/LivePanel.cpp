@@ -465,7 +465,7 @@ void LivePanel::setParameters(const Parameters& params)
     views_->setParameters(params_);
     if (!estimator_)
         return;
-    if (received_.empty() || !StreamingEstimator(params_).error().empty()) {
+    if (received_.empty() || !params_.validate().empty()) {
         restartEstimate();  // nothing to catch up with, or nothing will be estimated
         refreshViews(true);
         return;

@@ -508,11 +508,11 @@ void MainWindow::createComparison()
     connect(session_, &AnalysisSession::parametersChanged, this,
             [this] { comparison_->setBaseParameters(session_->parameters()); });
     connect(comparison_, &ComparisonPanel::rowsChanged, this,
-            [this] { showComparisonOverlays(!comparisonDock_->isHidden()); });
+            [this] { showOverlays(); });
     connect(comparison_, &ComparisonPanel::parametersChosen, this, [this](const Parameters& params, const QString& label) {
         session_->setParameters(params, tr("Methods of the set %1").arg(label));
     });
-    connect(comparisonDock_->toggleViewAction(), &QAction::toggled, this, &MainWindow::showComparisonOverlays);
+    connect(comparisonDock_->toggleViewAction(), &QAction::toggled, this, [this] { showOverlays(); });
 }
 
 void MainWindow::addComparisonMenu(QAction* compare)
@@ -569,11 +569,6 @@ TuneFolderDialog* MainWindow::tuneOverFolder()
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->open();
     return dialog;
-}
-
-void MainWindow::showComparisonOverlays(bool)
-{
-    showOverlays();
 }
 
 std::vector<PathOverlay> MainWindow::otherFootOverlays() const
@@ -811,6 +806,10 @@ void MainWindow::showWalkStatus(const QString& text, bool warning)
 
 void MainWindow::showLiveStatus(const QString& line)
 {
+    // The live panel reports at every view refresh, an empty line while its views are not in front:
+    // the walk's line is already shown then, and setting it again repolishes its style 5 times a second.
+    if (line.isEmpty() && liveStatus_.isEmpty())
+        return;
     liveStatus_ = line;
     if (line.isEmpty())
         displayStatus(workspaceStatus_, workspaceStatusWarns_);

@@ -127,8 +127,6 @@ private:
     void restoreLayout();
     void createComparison();
     void addComparisonMenu(QAction* compare);
-    /// The comparison's paths in the trajectory views while its panel is open, none otherwise.
-    void showComparisonOverlays(bool shown);
     /// The comparison's paths (while its panel is open) and the right foot's (while both feet are
     /// open) in the trajectory views; the main path named after its foot when both are.
     void showOverlays();

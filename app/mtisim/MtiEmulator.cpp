@@ -361,7 +361,6 @@ void MtiEmulator::emitDataMessage(Bytes& out)
     deviceTime_s_ += 1.0 / rate;
     ++streamMessages_;
     ++segmentMessages_;
-    ++dataMessages_;
 }
 
 void MtiEmulator::emitWithFaults(Bytes frame, DataRecord& record, Bytes& out)

@@ -102,7 +102,7 @@ public:
     State state() const { return state_; }
     const std::vector<OutputConfigEntry>& outputConfiguration() const { return outputConfiguration_; }
     std::uint8_t baudCode() const { return baudCode_; }
-    std::uint64_t dataMessagesSent() const { return dataMessages_; }  ///< including dropped ones
+    std::uint64_t dataMessagesSent() const { return injected_.dataMessages; }  ///< including dropped ones
     const MtiInjected& injected() const { return injected_; }
     double streamedDeviceTime_s() const { return deviceTime_s_; }
 
@@ -149,7 +149,6 @@ private:
     double segmentStart_s_ = 0.0;       ///< wall time since which messages leave at segmentRate_
     std::uint64_t segmentMessages_ = 0; ///< data messages since segmentStart_s_
     double segmentRate_ = 0.0;          ///< messages per wall second (a burst changes it)
-    std::uint64_t dataMessages_ = 0;    ///< since power-up, dropped ones included
     std::uint16_t packetCounter_ = 0;   ///< of the next data message
     std::uint32_t sampleTimeFine_ = 0;  ///< of the next data message
     double deviceTime_s_ = 0.0;         ///< streamed device time: the playback position

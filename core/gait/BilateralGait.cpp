@@ -274,32 +274,35 @@ std::optional<DoubleSupportCheck> checkDoubleSupportAgainstLabels(const Recordin
 
 std::vector<Eigen::Vector3d> otherFootPathAligned(const Result& foot, const Result& other)
 {
-    std::vector<Eigen::Vector3d> mine, theirs;
-    std::size_t cursor = 0;
-    for (std::size_t k = 0; k < foot.time_s.size() && k < foot.position_m.size(); ++k) {
-        Eigen::Vector3d position;
-        if (positionAt(other, foot.time_s[k], cursor, position)) {
-            mine.push_back(foot.position_m[k]);
-            theirs.push_back(position);
+    // Two passes over the samples both paths cover, instead of copies of both (a long walk's
+    // copies ran to hundreds of MB): their centres, then the fit.
+    const auto forEachPair = [&foot, &other](const auto& visit) {
+        std::size_t cursor = 0;
+        for (std::size_t k = 0; k < foot.time_s.size() && k < foot.position_m.size(); ++k) {
+            Eigen::Vector3d position;
+            if (positionAt(other, foot.time_s[k], cursor, position))
+                visit(foot.position_m[k], position);
         }
-    }
-    if (mine.size() < 2)
-        return {};
+    };
     Eigen::Vector3d mineCentre = Eigen::Vector3d::Zero(), theirCentre = Eigen::Vector3d::Zero();
-    for (std::size_t k = 0; k < mine.size(); ++k) {
-        mineCentre += mine[k];
-        theirCentre += theirs[k];
-    }
-    mineCentre /= static_cast<double>(mine.size());
-    theirCentre /= static_cast<double>(mine.size());
+    std::size_t pairs = 0;
+    forEachPair([&](const Eigen::Vector3d& mine, const Eigen::Vector3d& theirs) {
+        mineCentre += mine;
+        theirCentre += theirs;
+        ++pairs;
+    });
+    if (pairs < 2)
+        return {};
+    mineCentre /= static_cast<double>(pairs);
+    theirCentre /= static_cast<double>(pairs);
     // The rotation about z that best turns their centred horizontal positions onto mine (the 2D
     // Procrustes solution: the angle of the summed dot and cross products).
     double dot = 0.0, cross = 0.0;
-    for (std::size_t k = 0; k < mine.size(); ++k) {
-        const Eigen::Vector3d a = theirs[k] - theirCentre, b = mine[k] - mineCentre;
+    forEachPair([&](const Eigen::Vector3d& mine, const Eigen::Vector3d& theirs) {
+        const Eigen::Vector3d a = theirs - theirCentre, b = mine - mineCentre;
         dot += a.x() * b.x() + a.y() * b.y();
         cross += a.x() * b.y() - a.y() * b.x();
-    }
+    });
     const Eigen::Matrix3d turn = Eigen::AngleAxisd(std::atan2(cross, dot), Eigen::Vector3d::UnitZ()).toRotationMatrix();
     const Eigen::Vector3d shift = mineCentre - turn * theirCentre;
     std::vector<Eigen::Vector3d> aligned;

@@ -8,10 +8,15 @@ namespace footpath {
 
 namespace {
 
-std::string stemOf(const std::string& path)
+std::string fileName(const std::string& path)
 {
     const std::size_t slash = path.find_last_of("/\\");
-    std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string stemOf(const std::string& path)
+{
+    std::string name = fileName(path);
     if (const std::size_t dot = name.find_last_of('.'); dot != std::string::npos && dot > 0)
         name.resize(dot);
     return name;
@@ -21,12 +26,6 @@ std::string lowered(std::string text)
 {
     std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
     return text;
-}
-
-std::string fileName(const std::string& path)
-{
-    const std::size_t slash = path.find_last_of("/\\");
-    return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
 }  // namespace

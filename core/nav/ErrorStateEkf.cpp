@@ -202,9 +202,8 @@ void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOf
 {
     using PHt = Eigen::Matrix<double, N, Rows>;
     using MatR = Eigen::Matrix<double, Rows, Rows>;
-    // The filter's index of running state i: the 9-state filter skips the gyro bias block, and its
-    // bias rows of P, and so of every gain, stay zero (no work is done on them).
-    constexpr auto filterIndex = [](int i) { return N == kStates || i < kGyroBias ? i : i + 3; };
+    // No work is done on the states the filter does not run (filterIndex).
+    constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
     Matrix15& p = covariance_;
     // H only selects 3-blocks of the state with +I, so P H^T is a set of columns of P and H P H^T
     // a set of its rows; S = H P H^T + R.

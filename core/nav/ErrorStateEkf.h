@@ -60,6 +60,15 @@ public:
 
     ErrorStateEkf(const Parameters& params, const Eigen::Matrix3d& initialAttitude);
 
+    /// The filter's state index of running state i of an N-state filter (9 or 15): from position
+    /// on, the 9-state filter's running states skip the gyro bias block, whose rows of P, and so of
+    /// every gain, stay zero.
+    template <int N>
+    static constexpr int filterIndex(int i)
+    {
+        return N == kStates || i < kGyroBias ? i : i + 3;
+    }
+
     /// Eq. 6-11 and 32: removes the bias estimates, integrates attitude (Padé), velocity and
     /// position over dt, and propagates the covariance with the structured transition matrix.
     void propagate(const Eigen::Vector3d& acc_mps2, const Eigen::Vector3d& gyr_radps, double dt_s);

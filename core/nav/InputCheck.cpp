@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <sstream>
 
 namespace footpath {
@@ -56,8 +55,8 @@ struct ClippedAxis {
 
 /// How many samples sit at the largest absolute value of one axis (signed extreme) and whether
 /// any two of them are neighbours.
-ClippedAxis clippedAt(const std::vector<ImuSample>& samples, const std::function<double(const ImuSample&)>& value,
-                      double extreme)
+template <typename Value>
+ClippedAxis clippedAt(const std::vector<ImuSample>& samples, const Value& value, double extreme)
 {
     ClippedAxis clipped;
     bool previousAtExtreme = false;
@@ -71,14 +70,17 @@ ClippedAxis clippedAt(const std::vector<ImuSample>& samples, const std::function
     return clipped;
 }
 
-void checkAxis(const std::vector<ImuSample>& samples, const std::function<double(const ImuSample&)>& value,
-               const char* name, const char* unit, double floor, std::vector<std::string>& warnings)
+/// value: the axis of a sample (a lambda, called directly on every import's every sample).
+template <typename Value>
+void checkAxis(const std::vector<ImuSample>& samples, const Value& value, const char* name, const char* unit,
+               double floor, std::vector<std::string>& warnings)
 {
     double lowest = 0.0;
     double highest = 0.0;
     for (const ImuSample& sample : samples) {
-        lowest = std::min(lowest, value(sample));
-        highest = std::max(highest, value(sample));
+        const double v = value(sample);
+        lowest = std::min(lowest, v);
+        highest = std::max(highest, v);
     }
     for (const double extreme : {lowest, highest}) {
         if (!(std::abs(extreme) > floor))

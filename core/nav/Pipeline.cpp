@@ -133,17 +133,17 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
     const std::size_t start = alignmentStart(flags.stance);  // after a mid-walk start, the first stance
     for (std::size_t k = 0; k < samples.size(); ++k) {
         const ImuSample& sample = samples[k];
+        const std::optional<double> previousTime_s =
+            k > start ? std::optional<double>(samples[k - 1].time_s) : std::nullopt;
         if (smoother) {  // samples before the start: the filter stands still, as holdAtStart records
             if (k >= start)
-                advanceFilter(ekf, sources, sample, k > start ? std::optional<double>(samples[k - 1].time_s) : std::nullopt,
-                              flagsAt(flags, k), k, result.methodNotes);
+                advanceFilter(ekf, sources, sample, previousTime_s, flagsAt(flags, k), k, result.methodNotes);
             recordStateButAttitude(result, sample.time_s, ekf.state());
             smoother->capture(ekf);
         } else if (k < start) {
             holdAtStart(ekf, sample.time_s, result);
         } else {
-            filterSample(ekf, sources, sample, k > start ? std::optional<double>(samples[k - 1].time_s) : std::nullopt,
-                         flagsAt(flags, k), result);
+            filterSample(ekf, sources, sample, previousTime_s, flagsAt(flags, k), result);
         }
         if (progress && k % kProgressInterval == 0
             && !progress(forwardShare * static_cast<double>(k) / static_cast<double>(samples.size())))

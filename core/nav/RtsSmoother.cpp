@@ -2,8 +2,6 @@
 
 #include "nav/Attitude.h"
 
-#include <Eigen/Cholesky>
-
 namespace footpath {
 
 namespace {
@@ -56,9 +54,7 @@ struct Carried {
 template <int N>
 double* storePackedCovariance(const ErrorStateEkf::Matrix15& p, double* out)
 {
-    constexpr int runningPos = Carried<N, false>::runningPos;
-    // From position on, the 9-state filter's running states skip the gyro bias block of the 15.
-    constexpr auto filterIndex = [](int i) { return N == 15 || i < runningPos ? i : i + 3; };
+    constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
     for (int j = 0; j < N; ++j)
         for (int i = 0; i <= j; ++i)
             *out++ = p(filterIndex(i), filterIndex(j));
@@ -171,8 +167,7 @@ void RtsSmoother::storeUpdate(const MeasurementUpdate& update)
 
 std::size_t RtsSmoother::bytesPerSample() const
 {
-    const std::size_t doubles = packedSize() + 4 + 3 + 1 + (storesPropagationAttitude_ ? 4 : 0);
-    return doubles * sizeof(double) + sizeof(std::size_t);
+    return recordStride() * sizeof(double) + sizeof(std::size_t);
 }
 
 std::size_t RtsSmoother::projectedBytes(std::size_t samples, std::size_t stanceSamples) const
