@@ -5,24 +5,6 @@
 
 namespace footpath {
 
-Eigen::Matrix3d skew(const Eigen::Vector3d& v)
-{
-    Eigen::Matrix3d s;
-    s << 0.0, -v.z(), v.y(),
-         v.z(), 0.0, -v.x(),
-         -v.y(), v.x(), 0.0;
-    return s;
-}
-
-Eigen::Matrix3d padeRotation(const Eigen::Vector3d& theta)
-{
-    // With A = S(theta): (2I + A)(2I - A)^-1 = I + 4/(4 + |theta|^2) (A + A^2/2), because A and
-    // (2I - A) commute and A^3 = -|theta|^2 A. This avoids a 3x3 solve on every sample.
-    const Eigen::Matrix3d a = skew(theta);
-    const double scale = 4.0 / (4.0 + theta.squaredNorm());
-    return Eigen::Matrix3d::Identity() + scale * (a + 0.5 * a * a);
-}
-
 Eigen::Matrix3d rotationFromRollPitchYaw(double roll, double pitch, double yaw)
 {
     const double cr = std::cos(roll), sr = std::sin(roll);

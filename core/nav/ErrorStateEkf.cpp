@@ -22,6 +22,29 @@ Eigen::Matrix<double, 15, 1> blockDiagonal(double att, double gyroBias, double p
     return d;
 }
 
+/// The Cholesky factor L of a small symmetric positive definite S = L L^T (lower triangle; the upper
+/// is zero). Written out because Eigen's LLT does not unroll at these sizes and cost as much as the
+/// rest of a ZUPT's gain.
+template <int Rows>
+Eigen::Matrix<double, Rows, Rows> choleskyFactor(const Eigen::Matrix<double, Rows, Rows>& s)
+{
+    Eigen::Matrix<double, Rows, Rows> l = Eigen::Matrix<double, Rows, Rows>::Zero();
+    for (int j = 0; j < Rows; ++j) {
+        double diagonal = s(j, j);
+        for (int k = 0; k < j; ++k)
+            diagonal -= l(j, k) * l(j, k);
+        l(j, j) = std::sqrt(diagonal);
+        const double inverse = 1.0 / l(j, j);
+        for (int i = j + 1; i < Rows; ++i) {
+            double below = s(i, j);
+            for (int k = 0; k < j; ++k)
+                below -= l(i, k) * l(j, k);
+            l(i, j) = below * inverse;
+        }
+    }
+    return l;
+}
+
 /// K = P H^T S^-1 (eq. 31) by substitution with the Cholesky factor L of S (S = L L^T, symmetric
 /// positive definite because R is), not an inverse: K L L^T = P H^T on whole columns of K, which are
 /// contiguous N-vectors (Eigen's general triangular solver is slow at these sizes).
@@ -217,8 +240,8 @@ void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOf
         for (int r = 0; r < Rows; ++r)
             s(r, c) = p(selected(r), selected(c));
     s.diagonal() += noiseVariance;
-    const MatR choleskyFactor = s.llt().matrixL();  // S is symmetric positive definite because R is
-    const PHt gain = solveGain(pht, choleskyFactor);
+    const MatR cholesky = choleskyFactor(s);  // S is symmetric positive definite because R is
+    const PHt gain = solveGain(pht, cholesky);
 
     // Joseph form (eq. 33), with A = (I - KH) P = P - K (P H^T)^T:
     //   (I - KH) P (I - KH)^T + K R K^T = A - (A H^T - K R) K^T,
@@ -244,7 +267,7 @@ void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOf
             fullGain.row(filterIndex(i)) = gain.row(i);
     }
     if (recordUpdates_)
-        recordUpdate<Rows>(blockOffsets, fullGain, innovation, choleskyFactor);
+        recordUpdate<Rows>(blockOffsets, fullGain, innovation, cholesky);
     applyCorrection(fullGain * innovation);
 }
 

@@ -70,8 +70,6 @@ void prefetch(const double* values, std::size_t count)
 }
 
 constexpr int kMaxRows = MeasurementUpdate::kMaxRows;
-using RowsVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1>;
-using RowsMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxRows>;
 
 bool observesPosition(const MeasurementUpdate& update, int row)
 {
@@ -202,23 +200,27 @@ void RtsSmoother::writeSmoothed(Result& result, std::size_t k, const Eigen::Matr
                                 const Eigen::Matrix<double, N, 1>& variance) const
 {
     using E = ErrorStateEkf;
-    ErrorStateEkf::Vector15 dx = ErrorStateEkf::Vector15::Zero();
-    for (int i = 0; i < N; ++i)
-        dx(active_[static_cast<std::size_t>(i)]) = correction(i);
+    constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
+    // The running states in the filter's order: attitude, (gyro bias,) position, velocity, (acc bias).
+    constexpr int pos = N == E::kStates ? E::kPos : E::kPos - 3;
+    constexpr int vel = pos + 3;
     // The filter's signs (ErrorStateEkf::applyCorrection): attitude, position and velocity errors
     // are estimate - truth, bias errors truth - estimate.
     // Not re-orthonormalised: both factors are rotations to rounding (a unit quaternion's matrix, a
     // Cayley transform), and this product is read for its angles once, never multiplied on.
-    result.rollPitchYaw_rad[k] = rollPitchYaw(padeRotation(-dx.segment<3>(E::kAtt)) * attitude(k));
-    result.position_m[k] -= dx.segment<3>(E::kPos);
-    result.velocity_mps[k] -= dx.segment<3>(E::kVel);
-    result.gyroBias_radps[k] += dx.segment<3>(E::kGyroBias);
-    result.accBias_mps2[k] += dx.segment<3>(E::kAccBias);
+    result.rollPitchYaw_rad[k] = rollPitchYaw(padeRotation(-correction.template segment<3>(0)) * attitude(k));
+    result.position_m[k] -= correction.template segment<3>(pos);
+    result.velocity_mps[k] -= correction.template segment<3>(vel);
+    if constexpr (N == E::kStates) {
+        result.gyroBias_radps[k] += correction.template segment<3>(E::kGyroBias);
+        result.accBias_mps2[k] += correction.template segment<3>(E::kAccBias);
+    }
     if (k < result.errorStd.size()) {
         Eigen::Matrix<float, 15, 1>& sigma = result.errorStd[k];
-        sigma.setZero();
+        if constexpr (N != E::kStates)
+            sigma.setZero();
         for (int i = 0; i < N; ++i)
-            sigma(active_[static_cast<std::size_t>(i)]) = static_cast<float>(std::sqrt(std::max(0.0, variance(i))));
+            sigma(filterIndex(i)) = static_cast<float>(std::sqrt(std::max(0.0, variance(i))));
     }
 }
 
@@ -289,59 +291,82 @@ void RtsSmoother::transitionBackward(Eigen::Matrix<double, C::size, 1>& adjoint,
     }
 }
 
+namespace {
+
+/// One update run backwards (the class comment's mu~ and L~) on the carried states of C, with Rows
+/// rows: fixed for the usual ZUPT (3) and ZUPT+ZARU (6) updates that select states, so Eigen
+/// unrolls them; Eigen::Dynamic for any other.
+template <class C, int Rows>
+void updateBackward(const double* record, Eigen::Matrix<double, C::size, 1>& adjoint,
+                    Eigen::Matrix<double, C::size, C::size>& information)
+{
+    constexpr int N = C::running, M = C::size;
+    constexpr int MaxRows = Rows == Eigen::Dynamic ? kMaxRows : Rows;
+    using CarriedGain = Eigen::Matrix<double, M, Rows, 0, M, MaxRows>;
+    using RowsMatrix = Eigen::Matrix<double, Rows, Rows, 0, MaxRows, MaxRows>;
+    using RowsVector = Eigen::Matrix<double, Rows, 1, 0, MaxRows, 1>;
+    auto& l = information;
+    const int m = static_cast<int>(record[0]);
+    const bool selects = record[1] != 0.0;
+    const double* h = record + 2;
+    const double* gainData = h + (selects ? m : m * N);
+    const Eigen::Map<const RowsVector> weightedInnovation(gainData + N * m, m);
+    const Eigen::Map<const RowsMatrix> inverseS(gainData + N * m + m, m, m);
+    CarriedGain gain(M, m);  // K's rows of the carried states: mu and L are zero in the others
+    for (int j = 0; j < m; ++j)
+        for (int a = 0; a < M; ++a)
+            gain(a, j) = gainData[N * j + C::runningIndex(a)];
+
+    // B = L K and C = K^T B + S^-1, from L and mu before the update.
+    const CarriedGain b = l.lazyProduct(gain);
+    const RowsMatrix c = gain.transpose().lazyProduct(b) + inverseS;
+    const RowsVector t = weightedInnovation - gain.transpose().lazyProduct(adjoint);
+    // mu += H^T t, L = L - B H - (B H)^T + H^T C H.
+    if (selects) {
+        for (int j = 0; j < m; ++j) {
+            const int state = C::carriedIndex(static_cast<int>(h[j]));
+            adjoint(state) += t(j);
+            l.col(state) -= b.col(j);
+            l.row(state) -= b.col(j).transpose();
+        }
+        for (int j = 0; j < m; ++j)
+            for (int i = 0; i < m; ++i)
+                l(C::carriedIndex(static_cast<int>(h[i])), C::carriedIndex(static_cast<int>(h[j]))) += c(i, j);
+    } else {
+        Eigen::Matrix<double, Rows, M, Eigen::RowMajor, MaxRows, M> hm(m, M);
+        for (int r = 0; r < m; ++r)
+            for (int a = 0; a < M; ++a)
+                hm(r, a) = h[r * N + C::runningIndex(a)];
+        adjoint += hm.transpose().lazyProduct(t);
+        const Eigen::Matrix<double, M, M> bh = b.lazyProduct(hm);
+        l -= bh + bh.transpose();
+        l += hm.transpose().lazyProduct(c.lazyProduct(hm));
+    }
+    // The steps above keep L symmetric only in exact arithmetic, and its antisymmetric part,
+    // which they do not damp, grows from rounding to overflow over a few thousand strides
+    // (a 30-minute walk's smoothed variances were infinite before its 20th minute). The
+    // correction does not depend on L; the variances do.
+    l = 0.5 * (l + l.transpose()).eval();
+}
+
+}  // namespace
+
 template <class C>
 void RtsSmoother::updatesBackward(std::size_t k, Eigen::Matrix<double, C::size, 1>& adjoint,
                                   Eigen::Matrix<double, C::size, C::size>& information) const
 {
-    constexpr int N = C::running, M = C::size;
-    using CarriedGain = Eigen::Matrix<double, M, Eigen::Dynamic, 0, M, kMaxRows>;
-    auto& l = information;
     // Last update first: each record ends with its length.
     for (std::size_t end = updateStart_[k + 1]; end > updateStart_[k];) {
         const std::size_t begin = end - static_cast<std::size_t>(updateData_[end - 1]);
         end = begin;
         const double* record = updateData_.data() + begin;
-        const int m = static_cast<int>(record[0]);
         const bool selects = record[1] != 0.0;
-        const double* h = record + 2;
-        const double* gainData = h + (selects ? m : m * N);
-        const Eigen::Map<const Eigen::VectorXd> weightedInnovation(gainData + N * m, m);
-        const Eigen::Map<const Eigen::MatrixXd> inverseS(gainData + N * m + m, m, m);
-        CarriedGain gain(M, m);  // K's rows of the carried states: mu and L are zero in the others
-        for (int j = 0; j < m; ++j)
-            for (int a = 0; a < M; ++a)
-                gain(a, j) = gainData[N * j + C::runningIndex(a)];
-
-        // B = L K and C = K^T B + S^-1, from L and mu before the update.
-        const CarriedGain b = l.lazyProduct(gain);
-        const RowsMatrix c = gain.transpose().lazyProduct(b) + inverseS;
-        const RowsVector t = weightedInnovation - gain.transpose().lazyProduct(adjoint);
-        // mu += H^T t, L = L - B H - (B H)^T + H^T C H.
-        if (selects) {
-            for (int j = 0; j < m; ++j) {
-                const int state = C::carriedIndex(static_cast<int>(h[j]));
-                adjoint(state) += t(j);
-                l.col(state) -= b.col(j);
-                l.row(state) -= b.col(j).transpose();
-            }
-            for (int j = 0; j < m; ++j)
-                for (int i = 0; i < m; ++i)
-                    l(C::carriedIndex(static_cast<int>(h[i])), C::carriedIndex(static_cast<int>(h[j]))) += c(i, j);
-        } else {
-            Eigen::Matrix<double, Eigen::Dynamic, M, Eigen::RowMajor, kMaxRows, M> hm(m, M);
-            for (int r = 0; r < m; ++r)
-                for (int a = 0; a < M; ++a)
-                    hm(r, a) = h[r * N + C::runningIndex(a)];
-            adjoint += hm.transpose().lazyProduct(t);
-            const Eigen::Matrix<double, M, M> bh = b.lazyProduct(hm);
-            l -= bh + bh.transpose();
-            l += hm.transpose().lazyProduct(c.lazyProduct(hm));
-        }
-        // The steps above keep L symmetric only in exact arithmetic, and its antisymmetric part,
-        // which they do not damp, grows from rounding to overflow over a few thousand strides
-        // (a 30-minute walk's smoothed variances were infinite before its 20th minute). The
-        // correction does not depend on L; the variances do.
-        l = 0.5 * (l + l.transpose()).eval();
+        if (selects && record[0] == 3.0)
+            updateBackward<C, 3>(record, adjoint, information);
+        else if (selects && record[0] == 6.0)
+            updateBackward<C, 6>(record, adjoint, information);
+        else
+            updateBackward<C, Eigen::Dynamic>(record, adjoint, information);
     }
 }
 
