@@ -118,7 +118,7 @@ namespace {
 /// Runs the filter over every sample, then the smoother's backward pass when it is chosen; returns
 /// false if the callback cancelled.
 bool runFilter(const Recording& recording, const Parameters& params, const StanceFlags& flags,
-               const ProgressCallback& progress, Result& result)
+               const ProgressCallback& progress, Concurrency concurrency, Result& result)
 {
     const std::vector<ImuSample>& samples = recording.samples;
     const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
@@ -157,9 +157,10 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
         result.forwardSpeed_mps.push_back(static_cast<float>(velocity.norm()));
     result.rollPitchYaw_rad.resize(samples.size());
     result.errorStd.resize(samples.size());
-    return smoother->smooth(result, [&](double fraction) {
+    const auto keepGoing = [&](double fraction) {
         return !progress || progress(forwardShare + (1.0 - forwardShare) * fraction);
-    });
+    };
+    return smoother->smooth(result, keepGoing, concurrency);
 }
 
 double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
@@ -252,7 +253,8 @@ void fillStepsAndSummary(Result& result)
     summarize(result, stancePathLength(result.steps));
 }
 
-PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress)
+PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress,
+                           Concurrency concurrency)
 {
     PipelineOutput output;
     output.error = checkInput(recording, params);
@@ -263,7 +265,7 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
     result.flags = detectStance(recording.samples, params);
     const bool completed = params.estimatorKind() == EstimatorKind::Feliz
                                ? runFelizIntegrator(recording, params, progress, result)
-                               : runFilter(recording, params, result.flags, progress, result);
+                               : runFilter(recording, params, result.flags, progress, concurrency, result);
     if (!completed) {
         result.cancelled = true;
         return output;
