@@ -29,9 +29,11 @@ OtherFootSession::OtherFootSession(AnalysisSession& session, QObject* parent)
     connect(runner_, &PipelineRunner::failed, this, [this](const QString& message) {
         estimating_ = false;
         emit failed(tr("The right foot's estimate failed: %1").arg(message));
+        combine();  // the left's new result may have waited for this one
     });
     connect(&session_, &AnalysisSession::parametersChanged, this, &OtherFootSession::estimate);
     connect(&session_, &AnalysisSession::resultChanged, this, &OtherFootSession::combine);
+    connect(&session_, &AnalysisSession::estimateFailed, this, &OtherFootSession::combine);  // likewise
 }
 
 OtherFootSession::~OtherFootSession() = default;
