@@ -115,6 +115,52 @@ private slots:
         QVERIFY(group->isHidden());
     }
 
+    void combinesBothFeetOncePerParameterChange()
+    {
+        // Each foot is estimated again after a change and each result used to combine the pair:
+        // the first time with the other foot's estimate for the old parameters.
+        FOOTPATH_REQUIRE_DATASETS();
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_bothfeet"));
+        MainWindow window(settings);
+        QCOMPARE(window.openRecordings({datasetPath(QStringLiteral("xsens-mtw-ipol/1-4_lf.txt")),
+                                        datasetPath(QStringLiteral("xsens-mtw-ipol/1-4_rf.txt"))}),
+                 QString());
+        AnalysisSession& session = *window.session();
+        OtherFootSession& rightFoot = *window.otherFoot();
+        QTRY_VERIFY_WITH_TIMEOUT(rightFoot.bothFeet().has_value() && !session.isEstimating(), 60000);
+
+        struct Combined {
+            std::shared_ptr<const Result> left, right;
+        };
+        std::vector<Combined> combinations;
+        connect(&rightFoot, &OtherFootSession::changed, this,
+                [&] { combinations.push_back({session.result(), rightFoot.result()}); });
+        const auto changeAndWait = [&](const std::vector<double>& values) {
+            const std::shared_ptr<const Result> leftBefore = session.result(), rightBefore = rightFoot.result();
+            for (double value : values)  // in a row, as a dragged slider sends them
+                session.setParameter(QStringLiteral("gyr_max_radps"), value);
+            QTRY_VERIFY_WITH_TIMEOUT(session.result() != leftBefore && rightFoot.result() != rightBefore
+                                         && !session.isEstimating(),
+                                     60000);
+            QTest::qWait(100);  // a late second combination would come now
+        };
+
+        changeAndWait({1.2});
+        QCOMPARE(combinations.size(), std::size_t(1));
+        // Of the two new estimates, and the figures shown are theirs.
+        QCOMPARE(combinations.front().left, session.result());
+        QCOMPARE(combinations.front().right, rightFoot.result());
+        const BilateralGait expected = analyseBilateralGait(*session.result(), *rightFoot.result());
+        QVERIFY(rightFoot.bothFeet().has_value());
+        QCOMPARE(rightFoot.bothFeet()->doubleSupport.meanPct, expected.doubleSupport.meanPct);
+
+        combinations.clear();
+        changeAndWait({1.3, 1.4, 1.5});
+        QCOMPARE(combinations.size(), std::size_t(1));
+        QCOMPARE(combinations.front().left, session.result());
+        QCOMPARE(combinations.front().right, rightFoot.result());
+    }
+
     void refusesTwoFilesOfOneFoot()
     {
         FOOTPATH_REQUIRE_DATASETS();

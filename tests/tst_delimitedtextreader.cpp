@@ -362,6 +362,20 @@ void TestDelimitedTextReader::errors_reportMessageLineAndColumn_data()
         << 0
         << QStringList{"missing column", "gyr_z",
                        "the header has: time_s, acc_x, acc_y, acc_z, gyr_x, gyr_y, temperature"};
+    {
+        // A header of 100 names: the message lists the first 300 characters and the count.
+        QByteArray header;
+        QString listed;
+        for (int k = 0; k < 100; ++k) {
+            const QString name = QStringLiteral("n%1").arg(k, 3, 10, QLatin1Char('0'));
+            header += (k == 0 ? "" : ",") + name.toLatin1();
+            if (k < 50)
+                listed += name + QStringLiteral(", ");
+        }
+        QTest::newRow("long header cut in the message")
+            << header + "\n0\n" << none << none << 1 << 0
+            << QStringList{"missing column", QStringLiteral("; the header has: ") + listed + QStringLiteral(" ... (100 columns)")};
+    }
     QTest::newRow("missing time column")
         << QByteArray("acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n0,0,9.8,0,0,0\n") << none << none << 1 << 0
         << QStringList{"missing column", "time (or a counter, with the sample rate given)",

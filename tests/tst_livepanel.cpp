@@ -22,6 +22,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QThread>
 #include <QtTest>
 
 #include <algorithm>
@@ -37,6 +38,7 @@ private slots:
     void continuationPathsCountUp();
     void receivesRecordsAndEstimatesCausally();
     void parameterChangeMidStreamReestimatesOffTheGuiThread();
+    void notShownCountsWhatABusyWindowMissed();
     void recordsFromFirstSample();
     void offersReconnectWhenPortVanishes();
     void viewsSayNotConnected();
@@ -253,6 +255,67 @@ void TestLivePanel::parameterChangeMidStreamReestimatesOffTheGuiThread()
     QCOMPARE(panel.estimator()->result().time_s.size(), panel.receivedSamples().size());
     QVERIFY(panel.estimator()->result().position_m == offline.result.position_m);
     QVERIFY(panel.lastResult() && panel.lastResult()->position_m == offline.result.position_m);
+
+    // A re-estimate cancelled by parameters the estimator refuses: the dock stops saying
+    // "Re-estimating" at once; after the session nothing else would refresh it.
+    const auto* state = panel.findChild<QLabel*>(QStringLiteral("liveEstimateState"));
+    QVERIFY(state);
+    Parameters another = changed;
+    another.zv_adapt_fraction = 0.4;
+    panel.setParameters(another);
+    QVERIFY(panel.isReestimating());
+    QVERIFY2(state->text().startsWith(QStringLiteral("Re-estimating")), qPrintable(state->text()));
+    Parameters refused = another;
+    refused.acc_min_mps2 = refused.acc_max_mps2 + 1.0;
+    QVERIFY(!refused.validate().empty());
+    panel.setParameters(refused);
+    QVERIFY(!panel.isReestimating());
+    QTest::qWait(200);  // the cancelled run ends meanwhile
+    QVERIFY2(!state->text().startsWith(QStringLiteral("Re-estimating")), qPrintable(state->text()));
+    QCOMPARE(panel.estimator()->parameters(), refused);  // the cancelled run did not take over
+}
+
+void TestLivePanel::notShownCountsWhatABusyWindowMissed()
+{
+    // The display queue holds 2 s of samples at 5x speed (500 a second); the window is then
+    // blocked for 4 s while the port goes on: the oldest samples are dropped from the queue, and
+    // the dock's "Not shown" row appears with exactly how many the views never got.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString link = dir.filePath(QStringLiteral("ttyMTi3"));
+    Emulator emulator;
+    const QString problem = emulator.start(link, QString(), {QStringLiteral("--speed"), QStringLiteral("5")});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+
+    LivePanel panel;
+    constexpr std::size_t kBound = 1000;
+    panel.setDisplayQueueSamples(kBound);
+    QSignalSpy ended(panel.session(), &DeviceSession::ended);
+    const auto* notShown = panel.findChild<QLabel*>(QStringLiteral("liveNotShown"));
+    QVERIFY(notShown);
+    panel.connectTo(link);
+    QTRY_VERIFY_WITH_TIMEOUT(panel.sampleCount() >= 500, 30000);
+    QCOMPARE(panel.session()->counters().samplesNotShown, std::uint64_t(0));
+    QVERIFY(notShown->isHidden());  // nothing dropped: no row
+
+    QThread::msleep(4000);  // a busy window: no event is handled, the worker thread goes on receiving
+    panel.disconnectDevice();
+    QTRY_VERIFY_WITH_TIMEOUT(ended.count() == 1, 15000);
+    const DeviceCounters counters = panel.session()->counters();
+    QVERIFY2(counters.samplesNotShown > 0, "the queue did not overflow");
+    // Every received sample was either shown or counted as not shown.
+    QCOMPARE(counters.samplesReceived, std::uint64_t(panel.sampleCount()) + counters.samplesNotShown);
+    QVERIFY(!notShown->isHidden());
+    QCOMPARE(notShown->text(), QString::number(counters.samplesNotShown));
+
+    // A new session starts from nothing dropped: the row goes again.
+    panel.setDisplayQueueSamples(SessionSettings{}.displayQueueSamples);
+    panel.connectTo(link);
+    QTRY_VERIFY_WITH_TIMEOUT(panel.sampleCount() >= 100, 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(notShown->isHidden(), 5000);
+    QCOMPARE(panel.session()->counters().samplesNotShown, std::uint64_t(0));
+    panel.disconnectDevice();
+    QTRY_VERIFY_WITH_TIMEOUT(ended.count() == 2, 15000);
 }
 
 void TestLivePanel::recordsFromFirstSample()

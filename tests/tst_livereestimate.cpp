@@ -186,6 +186,38 @@ private slots:
         QTest::qWait(50);
         QCOMPARE(reported.size(), std::size_t(1));
     }
+
+    void nothingRunsOnceCancelled()
+    {
+        // The Live dock shows "Re-estimating" while isRunning(): after a cancel (new session,
+        // parameters the estimator refuses) it must say so at once, not once the cancelled run has
+        // stopped on the pool and its end has reached the event loop, which no refresh may follow.
+        const std::vector<ImuSample> samples = repeatedWalk(8);
+        LiveReestimator reestimator;
+        int reports = 0;
+        Parameters reported;
+        connect(&reestimator, &LiveReestimator::finished, this,
+                [&](std::shared_ptr<StreamingEstimator> estimator, std::size_t) {
+                    reported = estimator->parameters();
+                    ++reports;
+                });
+        reestimator.start(samples, liveParameters(0.2), false);
+        QVERIFY(reestimator.isRunning());
+        reestimator.cancel();
+        QVERIFY(!reestimator.isRunning());
+        QTest::qWait(200);  // the cancelled run ends meanwhile
+        QVERIFY(!reestimator.isRunning());
+        QCOMPARE(reports, 0);
+
+        // Started again before the cancelled run has wound down: running until its own report.
+        reestimator.start(samples, liveParameters(0.3), false);
+        reestimator.cancel();
+        reestimator.start(samples, liveParameters(0.4), false);
+        QVERIFY(reestimator.isRunning());
+        QTRY_COMPARE_WITH_TIMEOUT(reports, 1, 60000);
+        QCOMPARE(reported, liveParameters(0.4));
+        QVERIFY(!reestimator.isRunning());
+    }
 };
 
 QTEST_MAIN(TestLiveReestimate)

@@ -475,6 +475,20 @@ void TestXsensTextReader::errors_data()
     QTest::newRow("Gyr columns missing")
         << rate + "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z\tMag_X\n0\t1\t2\t3\t4\n" << 0.0 << 2 << 0
         << "missing column(s) Gyr_X, Gyr_Y, Gyr_Z; the column line has: PacketCounter, Acc_X, Acc_Y, Acc_Z, Mag_X";
+    {
+        // A column line of 104 names: the message lists its first 300 characters.
+        QByteArray columns = "PacketCounter\tAcc_X\tAcc_Y\tAcc_Z";
+        QString listed = QStringLiteral("PacketCounter, Acc_X, Acc_Y, Acc_Z");
+        for (int k = 0; k < 100; ++k) {
+            const QString name = QStringLiteral("N%1").arg(k, 3, 10, QLatin1Char('0'));
+            columns += "\t" + name.toLatin1();
+            listed += QStringLiteral(", ") + name;
+        }
+        QTest::newRow("long column line cut in the message")
+            << rate + columns + "\n0\t1\t2\t3\n" << 0.0 << 2 << 0
+            << QStringLiteral("missing column(s) Gyr_X, Gyr_Y, Gyr_Z; the column line has: ") + listed.left(300)
+                   + QStringLiteral(" ...");
+    }
     QTest::newRow("FreeAcc without Acc")
         << rate + "PacketCounter\tFreeAcc_X\tFreeAcc_Y\tFreeAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n0\t1\t2\t3\t4\t5\t6\n" << 0.0 << 2
         << 0 << "missing column(s) Acc_X, Acc_Y, Acc_Z";

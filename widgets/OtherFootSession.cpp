@@ -23,12 +23,17 @@ OtherFootSession::OtherFootSession(AnalysisSession& session, QObject* parent)
     });
     connect(runner_, &PipelineRunner::finished, this, [this](const std::shared_ptr<const Result>& result) {
         result_ = result;
+        estimating_ = false;
         combine();
     });
-    connect(runner_, &PipelineRunner::failed, this,
-            [this](const QString& message) { emit failed(tr("The right foot's estimate failed: %1").arg(message)); });
+    connect(runner_, &PipelineRunner::failed, this, [this](const QString& message) {
+        estimating_ = false;
+        emit failed(tr("The right foot's estimate failed: %1").arg(message));
+        combine();  // the left's new result may have waited for this one
+    });
     connect(&session_, &AnalysisSession::parametersChanged, this, &OtherFootSession::estimate);
     connect(&session_, &AnalysisSession::resultChanged, this, &OtherFootSession::combine);
+    connect(&session_, &AnalysisSession::estimateFailed, this, &OtherFootSession::combine);  // likewise
 }
 
 OtherFootSession::~OtherFootSession() = default;
@@ -47,6 +52,7 @@ void OtherFootSession::clear()
     const bool wasActive = isActive();
     loader_->cancel();
     runner_->cancel();
+    estimating_ = false;
     path_.clear();
     notes_.clear();
     recording_.reset();
@@ -63,12 +69,18 @@ void OtherFootSession::estimate()
         return;
     // The right foot's previous result stays until the new one is there (as the left's does).
     runner_->run(recording_, session_.parameters());
+    estimating_ = true;
 }
 
 void OtherFootSession::combine()
 {
     const std::shared_ptr<const Result> left = session_.result();
     if (!isActive())
+        return;
+    // After a parameter change both feet are estimated again, and each result calls this. The
+    // first to arrive would be paired with the other foot's estimate for the old parameters:
+    // only the second combines (the figures stay those of the old pair until then).
+    if (left && result_ && (estimating_ || session_.isEstimating()))
         return;
     if (left && result_) {
         bothFeet_ = analyseBilateralGait(*left, *result_);

@@ -61,6 +61,9 @@ private:
     QStringList notes_;
     std::shared_ptr<const Recording> recording_;
     std::shared_ptr<const Result> result_;
+    /// From run() to the runner's report (finished or failed): PipelineRunner::isRunning() turns
+    /// false before its finished signal is handled, when the new result is not here yet.
+    bool estimating_ = false;
     std::optional<BilateralGait> bothFeet_;
     std::vector<Eigen::Vector3d> alignedPath_;
 };

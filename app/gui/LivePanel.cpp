@@ -229,6 +229,7 @@ void LivePanel::buildUi()
     checksumLabel_ = valueLabel(counters);
     resyncLabel_ = valueLabel(counters);
     notShownLabel_ = valueLabel(counters);
+    notShownLabel_->setObjectName(QStringLiteral("liveNotShown"));
     notShownLabel_->setToolTip(tr("Samples the views could not keep up with (the window was busy for longer "
                                   "than the display queue holds). They are in the recording all the same."));
     countersForm->addRow(tr("Samples:"), samplesLabel_);
@@ -284,6 +285,7 @@ QWidget* LivePanel::buildEstimateBox()
                             "stance is confirmed once it has lasted the minimum duration), so the estimate trails the "
                             "sensor by up to this delay."));
     estimateState_ = valueLabel(box);
+    estimateState_->setObjectName(QStringLiteral("liveEstimateState"));
     estimateState_->setWordWrap(true);
     steps_ = valueLabel(box);
     steps_->setObjectName(QStringLiteral("liveSteps"));
@@ -409,6 +411,7 @@ void LivePanel::connectTo(const QString& port)
     settings.probeBaudRates = baud == 0;
     settings.baud = baud == 0 ? 115200u : static_cast<std::uint32_t>(baud);
     settings.rate_hz = static_cast<std::uint16_t>(rate_->value());
+    settings.displayQueueSamples = displayQueueSamples_;
     if (!recordingPath_.isEmpty() && !recordingActive_)
         settings.recording = recordingPathsFor(recordingPath_);  // asked before connecting: from the first sample on
     received_.clear();

@@ -54,6 +54,10 @@ public:
     void setParameters(const Parameters& params);
     /// Whether a re-estimate after a parameter change is running.
     bool isReestimating() const;
+    /// How many samples wait for the views at the most from the next connection on
+    /// (SessionSettings::displayQueueSamples); beyond it the oldest are not shown, only counted
+    /// ("Not shown"). Tests make it small to fall behind in seconds instead of minutes.
+    void setDisplayQueueSamples(std::size_t samples) { displayQueueSamples_ = samples; }
     /// Moves the live views out of the panel into the workspace's tab widgets.
     void moveViewsInto(QTabWidget* trajectoryTabs, QTabWidget* signalTabs);
     /// While a live view is the current tab of the workspace (after moveViewsInto), `summary`
@@ -169,6 +173,7 @@ private:
     QTimer* viewTimer_ = nullptr;
 
     Parameters params_;
+    std::size_t displayQueueSamples_ = SessionSettings{}.displayQueueSamples;
     std::vector<LiveSample> received_;
     std::shared_ptr<StreamingEstimator> estimator_;
     LiveReestimator* reestimator_;

@@ -26,7 +26,9 @@ LiveReestimator::~LiveReestimator()
 
 bool LiveReestimator::isRunning() const
 {
-    return running_ || pending_ != nullptr;
+    // A cancelled run may still be winding down on the pool, but it will report nothing: for the
+    // caller nothing runs any more.
+    return pending_ != nullptr || (running_ && runningRequest_ == latestRequest_);
 }
 
 void LiveReestimator::cancel()
@@ -54,6 +56,7 @@ void LiveReestimator::run(Request request)
     auto cancelled = std::make_shared<std::atomic_bool>(false);
     cancelCurrent_ = cancelled;
     running_ = true;
+    runningRequest_ = request.number;
     watcher_.setFuture(QtConcurrent::run([request = std::move(request), cancelled]() {
         Outcome outcome;
         outcome.request = request.number;

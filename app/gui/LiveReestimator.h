@@ -30,6 +30,8 @@ public:
     void start(std::vector<ImuSample> samples, const Parameters& params, bool finish);
     /// Stops the current run and forgets a pending one: nothing is reported for them.
     void cancel();
+    /// Whether a result is still to come: false at once after cancel(), even while the cancelled
+    /// run is still stopping.
     bool isRunning() const;
 
 signals:
@@ -58,7 +60,8 @@ private:
     /// From run() to the finished signal: QFutureWatcher::isRunning() is false until the pool
     /// starts the task, so a second start() in a row would replace the future it watches.
     bool running_ = false;
-    std::uint64_t latestRequest_ = 0;
+    std::uint64_t runningRequest_ = 0;  ///< the request the pool runs (or ran last)
+    std::uint64_t latestRequest_ = 0;   ///< the newest start() or cancel(): only it is reported
 };
 
 }  // namespace footpath

@@ -163,6 +163,20 @@ const std::vector<std::string>& columnRoleNames()
     return names;
 }
 
+std::string listedColumnNames(const std::vector<std::string>& names, ColumnCount count)
+{
+    constexpr std::size_t kMaxChars = 300;
+    std::string listed;
+    for (const std::string& name : names)
+        listed += (listed.empty() ? "" : ", ") + name;
+    if (listed.size() <= kMaxChars)
+        return listed;
+    listed = listed.substr(0, kMaxChars) + " ...";
+    if (count == ColumnCount::Stated)
+        listed += " (" + std::to_string(names.size()) + " columns)";
+    return listed;
+}
+
 std::optional<ColumnMeaning> columnMapRole(const std::string& role)
 {
     const std::string name = lowerCase(role);

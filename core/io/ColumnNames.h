@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace footpath {
 
@@ -35,5 +36,13 @@ std::optional<ColumnMeaning> columnMapRole(const std::string& role);
 
 /// The roles a column map may name, for messages and help texts.
 const std::vector<std::string>& columnRoleNames();
+
+/// Whether a shortened list of column names ends by saying how many there were.
+enum class ColumnCount { Omitted, Stated };
+
+/// The names joined by ", " for a message. Longer than 300 characters (a header of thousands of
+/// names, or a binary file's "header line"), the list would flood the message: it is cut there
+/// and ends with " ...", and with " (N columns)" when `count` is Stated.
+std::string listedColumnNames(const std::vector<std::string>& names, ColumnCount count);
 
 }  // namespace footpath

@@ -15,8 +15,6 @@ namespace footpath {
 
 namespace {
 
-constexpr std::size_t kMaxListedHeaderChars = 300;
-
 struct Column {
     ColumnMeaning meaning;
     double sign = 1.0;  ///< -1 for a negated reference axis
@@ -263,11 +261,7 @@ bool TextParser::checkRequiredRoles()
         if (count(role) != 1)
             missing += std::string(" ") + name;
     if (!missing.empty()) {
-        std::string found;
-        for (const std::string& name : names_)
-            found += (found.empty() ? "" : ", ") + name;
-        if (found.size() > kMaxListedHeaderChars)  // a header of thousands of names would flood the message
-            found = found.substr(0, kMaxListedHeaderChars) + " ... (" + std::to_string(names_.size()) + " columns)";
+        const std::string found = listedColumnNames(names_, ColumnCount::Stated);
         if (!options_.columnMap.empty())
             return fail(0, "the column map lacks:" + missing + "; it has: " + found);
         const std::string hint = names_.size() == 1 ? " (one column only: columns must be separated by commas, "

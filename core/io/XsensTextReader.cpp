@@ -1,5 +1,6 @@
 #include "io/XsensTextReader.h"
 
+#include "io/ColumnNames.h"
 #include "io/LineReader.h"
 #include "io/SampleLimit.h"
 
@@ -23,7 +24,6 @@ constexpr std::uint64_t kSampleTimeFineModulus = 4294967296ULL;  // u32 (MTData2
 // Counters are read as doubles ("0.0" in the IPOL files); above 2^53 they are no longer exact.
 constexpr double kLargestExactCounter = 9007199254740992.0;
 constexpr std::size_t kProgressIntervalLines = 1024;
-constexpr std::size_t kMaxListedHeaderChars = 300;
 constexpr std::size_t kDamagedRowsShown = 3;  // more are counted, not listed
 // No row is shorter: bounds the up-front reservation should totalBytes be wrong.
 constexpr std::size_t kShortestRow_bytes = 8;
@@ -364,11 +364,7 @@ bool XsensTextParser::checkRequiredColumns()
     for (std::size_t i = index(Field::AccX); i <= index(Field::GyrZ); ++i)
         if (layout_.columnOf[i] == kNoColumn)
             missing += std::string(missing.empty() ? "" : ", ") + kFieldDisplayNames[i];
-    std::string found;
-    for (const std::string& name : layout_.names)
-        found += (found.empty() ? "" : ", ") + name;
-    if (found.size() > kMaxListedHeaderChars)  // a binary file's "column line" would flood the message
-        found = found.substr(0, kMaxListedHeaderChars) + " ...";
+    const std::string found = listedColumnNames(layout_.names, ColumnCount::Omitted);
     if (!missing.empty()) {
         const bool hasFreeAcc = lowerCase(found).find("freeacc_") != std::string::npos;
         return fail(columnLine_, 0, "missing column(s) " + missing + "; the column line has: " + found
