@@ -3,6 +3,7 @@
 #include "nav/Attitude.h"
 #include "nav/SerialWorker.h"
 
+#include <array>
 #include <optional>
 
 namespace footpath {
@@ -24,6 +25,16 @@ std::vector<int> activeStates(FilterStates states)
         for (int i = 0; i < 3; ++i)
             active.push_back(block + i);
     return active;
+}
+
+/// For each error state, its index among the active ones, -1 if it is not one.
+std::array<int, ErrorStateEkf::kStates> runningIndices(const std::vector<int>& active)
+{
+    std::array<int, ErrorStateEkf::kStates> index;
+    index.fill(-1);
+    for (std::size_t i = 0; i < active.size(); ++i)
+        index[static_cast<std::size_t>(active[i])] = static_cast<int>(i);
+    return index;
 }
 
 /// The states the backward pass carries. mu and L are zero in the rows of a state no update observes
@@ -91,6 +102,7 @@ bool observesPosition(const MeasurementUpdate& update, int row)
 
 RtsSmoother::RtsSmoother(const Parameters& params, ErrorStateEkf& ekf)
     : active_(activeStates(params.filterStates()))
+    , runningIndexOf_(runningIndices(active_))
     , storesPropagationAttitude_(params.filterStates() == FilterStates::Fifteen)
 {
     ekf.setRecordUpdates(true);
@@ -131,18 +143,21 @@ void RtsSmoother::storeUpdate(const MeasurementUpdate& update)
     // nothing the backward pass carries.
     const int n = static_cast<int>(active_.size());
     const bool selects = update.selectedStates.size() > 0;
+    const auto seesRunningStates = [&](int row) {
+        if (selects)
+            return runningIndexOf_[static_cast<std::size_t>(update.selectedStates(row))] >= 0;
+        for (const int state : active_)
+            if (update.h(row, state) != 0.0)
+                return true;
+        return false;
+    };
     std::vector<int>& rows = rowsScratch_;
     rows.clear();
-    for (int row = 0; row < update.gain.cols(); ++row) {
-        bool seen = false;
-        for (int i = 0; i < n && !seen; ++i)
-            seen = selects ? update.selectedStates(row) == active_[static_cast<std::size_t>(i)]
-                           : update.h(row, active_[static_cast<std::size_t>(i)]) != 0.0;
-        if (seen)
+    for (int row = 0; row < update.gain.cols(); ++row)
+        if (seesRunningStates(row)) {
             rows.push_back(row);
-        if (seen && observesPosition(update, row))
-            positionObserved_ = true;
-    }
+            positionObserved_ = positionObserved_ || observesPosition(update, row);
+        }
     if (rows.empty())
         return;
     const std::size_t m = rows.size();
@@ -152,17 +167,17 @@ void RtsSmoother::storeUpdate(const MeasurementUpdate& update)
     double* out = updateData_.data() + begin;
     *out++ = static_cast<double>(m);
     *out++ = selects ? 1.0 : 0.0;
-    for (const int row : rows)
-        for (int i = 0; i < n; ++i) {
-            const int state = active_[static_cast<std::size_t>(i)];
-            if (!selects)
-                *out++ = update.h(row, state);
-            else if (update.selectedStates(row) == state)
-                *out++ = static_cast<double>(i);
+    for (const int row : rows) {
+        if (selects) {
+            *out++ = static_cast<double>(runningIndexOf_[static_cast<std::size_t>(update.selectedStates(row))]);
+            continue;
         }
+        for (const int state : active_)
+            *out++ = update.h(row, state);
+    }
     for (const int row : rows)
-        for (int i = 0; i < n; ++i)
-            *out++ = update.gain(active_[static_cast<std::size_t>(i)], row);
+        for (const int state : active_)
+            *out++ = update.gain(state, row);
     for (const int row : rows)
         *out++ = update.weightedInnovation(row);
     for (const int col : rows)

@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -107,6 +108,7 @@ private:
                        const Eigen::Matrix<double, N, 1>& variance) const;
 
     std::vector<int> active_;  ///< error-state indices the filter runs (all 15, or 9 without biases)
+    std::array<int, ErrorStateEkf::kStates> runningIndexOf_;  ///< index in active_ of each state, or -1
     bool storesPropagationAttitude_ = false;  ///< only the bias blocks of Phi need it
     bool positionObserved_ = false;           ///< an update measured position (height, IPER)
     /// One record of recordStride() doubles a sample, so the backward pass reads one block per
