@@ -140,21 +140,7 @@ StanceFlags detectStance(const std::vector<ImuSample>& samples, const Parameters
 {
     if (params.detectorKind() == DetectorKind::PaperC1C2C3)
         return detectPaperStance(samples, params);
-    StatisticStanceDetector detector(params);
-    std::deque<SampleStanceFlags> decided;
-    StanceFlags flags;
-    const auto take = [&] {
-        for (const SampleStanceFlags& sample : decided)
-            appendFlags(flags, sample);
-        decided.clear();
-    };
-    for (const ImuSample& sample : samples) {
-        detector.push(sample, decided);
-        take();
-    }
-    detector.finish(decided);
-    take();
-    return flags;
+    return StatisticStanceDetector::detect(samples, params);
 }
 
 StanceFlags detectPaperStance(const std::vector<ImuSample>& samples, const Parameters& params)

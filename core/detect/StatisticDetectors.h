@@ -20,13 +20,50 @@ namespace footpath {
 ///   MBGTD: max over the split points of the window of the mean distance between the accelerometer
 ///          samples before and after the split, squared and divided by sa^2 (so it is a variance like
 ///          the others; pyshoe compares the distance itself).
-/// pyshoe evaluates them over non-overlapping blocks; here every sample gets its own centred window.
-double zeroVelocityStatistic(DetectorKind kind, const std::deque<ImuSample>& samples, std::size_t first,
-                             std::size_t last, const Parameters& params);
+/// pyshoe evaluates them over non-overlapping blocks; here every sample gets its own centred window,
+/// the count samples from window on (count >= 1).
+double zeroVelocityStatistic(DetectorKind kind, const ImuSample* window, std::size_t count, const Parameters& params);
 
-/// A stance detector built on one of the statistics above, run causally (offline, detectStance
-/// pushes the whole recording through it, so live and offline flags are the same by construction).
-/// Four stages, each releasing a sample once the samples its window needs have arrived:
+/// The values of a stream from some index on, in one vector: appended at the back, taken from the
+/// front by moving a head, the taken ones erased in batches of at least half the vector, so each
+/// value moves O(1) times and the rest stays contiguous. Indices are those of the whole stream.
+template <typename T>
+class SlidingBuffer {
+public:
+    static constexpr std::size_t kMinimumDrop = 64;
+
+    bool empty() const { return head_ == values_.size(); }
+    std::size_t size() const { return values_.size() - head_; }
+    std::size_t first() const { return base_ + head_; }  ///< index of front()
+    std::size_t end() const { return base_ + values_.size(); }
+    const T& operator[](std::size_t index) const { return values_[index - base_]; }
+    const T& front() const { return values_[head_]; }
+    const T& back() const { return values_.back(); }
+    const T* data() const { return values_.data() + head_; }  ///< front() onwards, contiguous
+
+    void push_back(const T& value) { values_.push_back(value); }
+    void pop_back() { values_.pop_back(); }  ///< only when not empty()
+    void pop_front() { dropBefore(first() + 1); }
+    /// Forgets the values before index (at most end()).
+    void dropBefore(std::size_t index)
+    {
+        head_ = index - base_;
+        if (head_ < kMinimumDrop || 2 * head_ < values_.size())
+            return;
+        values_.erase(values_.begin(), values_.begin() + static_cast<std::ptrdiff_t>(head_));
+        base_ += head_;
+        head_ = 0;
+    }
+
+private:
+    std::vector<T> values_;
+    std::size_t base_ = 0;  ///< index of values_.front() in the stream
+    std::size_t head_ = 0;  ///< position of front() in values_
+};
+
+/// A stance detector built on one of the statistics above, run causally. Offline, detect() runs
+/// the same stages over the whole recording in place, so live and offline flags are the same by
+/// construction. Four stages, each releasing a sample once the samples its window needs have arrived:
 ///  1. the statistic over the centred window of zv_window_s;
 ///  2. the threshold: with zv_adaptive, over the centred zv_adapt_window_s (about a gait cycle) the
 ///     running minimum of log10 T (the quietest moment of the current motion) plus
@@ -44,6 +81,10 @@ public:
     void push(const ImuSample& sample, std::deque<SampleStanceFlags>& decided) override;
     void finish(std::deque<SampleStanceFlags>& decided) override;
 
+    /// The flags of a whole recording: the stages of push() and finish(), reading the samples in
+    /// place instead of copying them.
+    static StanceFlags detect(const std::vector<ImuSample>& samples, const Parameters& params);
+
     static double latency_s(const Parameters& params);
 
 private:
@@ -51,32 +92,38 @@ private:
         double time_s;
         float logStatistic;
     };
-    void scoreReadySamples(bool endOfData);
-    void thresholdReadySamples(bool endOfData, std::deque<SampleStanceFlags>& decided);
-    float nextThreshold(std::size_t centre);
-    void dropShortRuns(const SampleStanceFlags& flags, double time_s, std::deque<SampleStanceFlags>& decided);
-    void releaseHeldRun(bool keepAsStance, std::deque<SampleStanceFlags>& decided);
+    template <typename Emit>
+    void advance(const ImuSample* samples, std::size_t base, std::size_t end, bool endOfData, Emit& emit);
+    void scoreReadySamples(const ImuSample* samples, std::size_t base, std::size_t end, bool endOfData);
+    template <typename Emit>
+    void thresholdReadySamples(bool endOfData, Emit& emit);
+    float nextThreshold(double centre_s);
+    template <typename Emit>
+    void dropShortRuns(const SampleStanceFlags& flags, double time_s, Emit& emit);
+    template <typename Emit>
+    void releaseHeldRun(bool keepAsStance, Emit& emit);
 
     Parameters params_;
     DetectorKind kind_;
     double statisticHalf_s_;
     double thresholdHalf_s_;
 
-    // Stage 1: samples around the next centre (index statisticCentre_ in samples_).
-    std::deque<ImuSample> samples_;
+    // Stage 1: the next centre and its window [windowFirst_, windowEnd_), indices in the stream.
+    // Live, samples_ keeps the samples from the window's start on.
+    SlidingBuffer<ImuSample> samples_;
     std::size_t statisticCentre_ = 0;
+    std::size_t windowFirst_ = 0;
+    std::size_t windowEnd_ = 0;
 
-    // Stage 2: scored samples waiting for their threshold window, and monotonic queues of the
-    // candidates for the running minimum and maximum (absolute indices: scored_ starts at scoredBase_).
-    std::deque<Scored> scored_;
-    std::size_t scoredBase_ = 0;
-    std::size_t thresholdCentre_ = 0;  ///< absolute index of the next sample to threshold
-    std::size_t nextToEnter_ = 0;      ///< absolute index of the next value to enter the queues
-    std::deque<std::size_t> minimumCandidates_;
-    std::deque<std::size_t> maximumCandidates_;
+    // Stage 2: scored samples from the next one to threshold on, and monotonic queues of the
+    // candidates for the running minimum and maximum (values copied: O(1) per sample).
+    SlidingBuffer<Scored> scored_;
+    std::size_t nextToEnter_ = 0;  ///< index of the next scored sample to enter the queues
+    SlidingBuffer<Scored> minimumCandidates_;
+    SlidingBuffer<Scored> maximumCandidates_;
 
     // Stage 4: a stance run not yet known to be long enough, held back.
-    std::deque<SampleStanceFlags> heldRun_;
+    std::vector<SampleStanceFlags> heldRun_;
     double heldRunStart_s_ = 0.0;
     bool runConfirmed_ = false;  ///< the current stance run has lasted zv_min_stance_s
 };
