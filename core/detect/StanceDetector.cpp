@@ -122,6 +122,14 @@ void appendFlags(StanceFlags& flags, const SampleStanceFlags& sample)
     flags.logThreshold.push_back(sample.logThreshold);
 }
 
+void resizeFlags(StanceFlags& flags, std::size_t count)
+{
+    for (std::vector<std::uint8_t>* decisions : {&flags.c1, &flags.c2, &flags.c3, &flags.c, &flags.stance})
+        decisions->resize(count);
+    flags.logStatistic.resize(count);
+    flags.logThreshold.resize(count);
+}
+
 std::unique_ptr<CausalStanceDecider> makeCausalStanceDetector(const Parameters& params)
 {
     if (params.detectorKind() == DetectorKind::PaperC1C2C3)

@@ -4,7 +4,9 @@
 #include "detect/StanceDetector.h"
 #include "nav/Parameters.h"
 
+#include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <deque>
 #include <vector>
 
@@ -20,9 +22,27 @@ namespace footpath {
 ///   MBGTD: max over the split points of the window of the mean distance between the accelerometer
 ///          samples before and after the split, squared and divided by sa^2 (so it is a variance like
 ///          the others; pyshoe compares the distance itself).
-/// pyshoe evaluates them over non-overlapping blocks; here every sample gets its own centred window,
-/// the count samples from window on (count >= 1).
-double zeroVelocityStatistic(DetectorKind kind, const ImuSample* window, std::size_t count, const Parameters& params);
+/// pyshoe evaluates them over non-overlapping blocks; here every sample gets its own centred window.
+/// The chosen statistic with its constants worked out once: the detector evaluates it every sample.
+class ZeroVelocityStatistic {
+public:
+    explicit ZeroVelocityStatistic(const Parameters& params);
+    /// The statistic over the count samples from window on (count >= 1).
+    double operator()(const ImuSample* window, std::size_t count) const;
+
+private:
+    double shoe(const ImuSample* window, std::size_t count) const;
+    double ared(const ImuSample* window, std::size_t count) const;
+    double amvd(const ImuSample* window, std::size_t count) const;
+    double mbgtd(const ImuSample* window, std::size_t count) const;
+
+    DetectorKind kind_;
+    double gravity_mps2_;
+    double varAcc_;  ///< zv_sigma_acc_mps2^2
+    double varGyr_;
+    double invVarAcc_;  ///< 1 / varAcc_
+    double invVarGyr_;
+};
 
 /// The values of a stream from some index on, in one vector: appended at the back, taken from the
 /// front by moving a head, the taken ones erased in batches of at least half the vector, so each
@@ -59,6 +79,49 @@ private:
     std::vector<T> values_;
     std::size_t base_ = 0;  ///< index of values_.front() in the stream
     std::size_t head_ = 0;  ///< position of front() in values_
+};
+
+/// The smallest (Order = std::less) or largest (std::greater) value in a window sliding forward
+/// in time, as a monotonic queue: the values that may still become the extreme, oldest first, each
+/// more extreme than the ones after it. O(1) per value; one vector, its used part moved to the
+/// front when it reaches the end.
+template <typename Order>
+class SlidingExtremum {
+public:
+    void enter(double time_s, float value)
+    {
+        while (end_ > head_ && !Order()(entries_[end_ - 1].value, value))
+            --end_;  // never the extreme again: the new value is as extreme and stays longer
+        if (end_ == entries_.size())
+            makeRoom();
+        entries_[end_++] = {time_s, value};
+    }
+    /// Forgets the values before start_s; the newest value entered always stays.
+    void leaveBefore(double start_s)
+    {
+        while (head_ + 1 < end_ && entries_[head_].time_s < start_s)
+            ++head_;
+    }
+    float extreme() const { return entries_[head_].value; }
+
+private:
+    struct Entry {
+        double time_s;
+        float value;
+    };
+    void makeRoom()
+    {
+        std::move(entries_.begin() + static_cast<std::ptrdiff_t>(head_),
+                  entries_.begin() + static_cast<std::ptrdiff_t>(end_), entries_.begin());
+        end_ -= head_;
+        head_ = 0;
+        if (2 * end_ >= entries_.size())
+            entries_.resize(std::max<std::size_t>(64, 2 * entries_.size()));
+    }
+
+    std::vector<Entry> entries_;
+    std::size_t head_ = 0;
+    std::size_t end_ = 0;
 };
 
 /// A stance detector built on one of the statistics above, run causally. Offline, detect() runs
@@ -104,7 +167,7 @@ private:
     void releaseHeldRun(bool keepAsStance, Emit& emit);
 
     Parameters params_;
-    DetectorKind kind_;
+    ZeroVelocityStatistic statistic_;
     double statisticHalf_s_;
     double thresholdHalf_s_;
 
@@ -115,12 +178,12 @@ private:
     std::size_t windowFirst_ = 0;
     std::size_t windowEnd_ = 0;
 
-    // Stage 2: scored samples from the next one to threshold on, and monotonic queues of the
-    // candidates for the running minimum and maximum (values copied: O(1) per sample).
+    // Stage 2: scored samples from the next one to threshold on, and the running minimum and
+    // maximum of their log statistic.
     SlidingBuffer<Scored> scored_;
     std::size_t nextToEnter_ = 0;  ///< index of the next scored sample to enter the queues
-    SlidingBuffer<Scored> minimumCandidates_;
-    SlidingBuffer<Scored> maximumCandidates_;
+    SlidingExtremum<std::less<float>> minimum_;
+    SlidingExtremum<std::greater<float>> maximum_;
 
     // Stage 4: a stance run not yet known to be long enough, held back.
     std::vector<SampleStanceFlags> heldRun_;
