@@ -196,10 +196,10 @@ void StatisticStanceDetector::thresholdReadySamples(bool endOfData, Emit& emit)
     }
 }
 
-/// The threshold of the next centre, scored_.front() (centres come in order: the queues only move
-/// forward). Running minimum and maximum of the log statistic over the centred window (monotonic
-/// queues: O(1) per sample); the threshold lies zv_adapt_offset_dec above the minimum plus
-/// zv_adapt_fraction of the way to the maximum, clamped to the absolute bounds.
+/// The threshold of the next centre, scored_.front() (centres come in order: the windows only move
+/// forward). Running minimum and maximum of the log statistic over the centred window; the
+/// threshold lies zv_adapt_offset_dec above the minimum plus zv_adapt_fraction of the way to the
+/// maximum, clamped to the absolute bounds.
 float StatisticStanceDetector::nextThreshold(double centre_s)
 {
     if (!params_.zv_adaptive)
