@@ -53,7 +53,6 @@ public:
     static constexpr std::size_t kMinimumDrop = 64;
 
     bool empty() const { return head_ == values_.size(); }
-    std::size_t size() const { return values_.size() - head_; }
     std::size_t first() const { return base_ + head_; }  ///< index of front()
     std::size_t end() const { return base_ + values_.size(); }
     const T& operator[](std::size_t index) const { return values_[index - base_]; }
@@ -62,7 +61,6 @@ public:
     const T* data() const { return values_.data() + head_; }  ///< front() onwards, contiguous
 
     void push_back(const T& value) { values_.push_back(value); }
-    void pop_back() { values_.pop_back(); }  ///< only when not empty()
     void pop_front() { dropBefore(first() + 1); }
     /// Forgets the values before index (at most end()).
     void dropBefore(std::size_t index)
