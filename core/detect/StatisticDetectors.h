@@ -59,6 +59,7 @@ public:
     const T& front() const { return values_[head_]; }
     const T& back() const { return values_.back(); }
     const T* data() const { return values_.data() + head_; }  ///< front() onwards, contiguous
+    std::size_t stored() const { return values_.size(); }     ///< with those not yet erased
 
     void push_back(const T& value) { values_.push_back(value); }
     void pop_front() { dropBefore(first() + 1); }
@@ -147,6 +148,10 @@ public:
     static StanceFlags detect(const std::vector<ImuSample>& samples, const Parameters& params);
 
     static double latency_s(const Parameters& params);
+
+    /// Samples and scores held: those the open windows need, plus at most as many (or
+    /// SlidingBuffer::kMinimumDrop) waiting to be erased in one go.
+    std::size_t bufferedSamples() const { return samples_.stored() + scored_.stored(); }
 
 private:
     struct Scored {
