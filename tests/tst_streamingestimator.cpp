@@ -592,9 +592,11 @@ private slots:
         std::deque<SampleStanceFlags> decided;
         // The statistic window and the threshold's half window reach back from the newest sample;
         // the dead samples and scores before them are erased in batches.
-        const auto open = static_cast<std::size_t>(std::ceil((params.zv_window_s + params.zv_adapt_window_s / 2.0) * 100.0)) + 3;
+        const double reach_s = params.zv_window_s + params.zv_adapt_window_s / 2.0;
+        const auto open = static_cast<std::size_t>(std::ceil(reach_s * 100.0)) + 3;
         const std::size_t bound = 2 * open + 2 * SlidingBuffer<ImuSample>::kMinimumDrop;
-        const auto latency = static_cast<std::size_t>(std::ceil(StatisticStanceDetector::latency_s(params) * 100.0)) + 3;
+        const double latency_s = StatisticStanceDetector::latency_s(params);
+        const auto latency = static_cast<std::size_t>(std::ceil(latency_s * 100.0)) + 3;
         std::size_t pushed = 0;
         for (const ImuSample& sample : samples) {
             detector.push(sample, decided);
