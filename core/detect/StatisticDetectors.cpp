@@ -170,8 +170,7 @@ void StatisticStanceDetector::scoreReadySamples(const ImuSample* samples, std::s
             ++windowFirst_;
         while (windowEnd_ < end && timeAt(windowEnd_) <= windowEnd_s)
             ++windowEnd_;
-        const double statistic =
-            statistic_(samples + (windowFirst_ - base), windowEnd_ - windowFirst_);
+        const double statistic = statistic_(samples + (windowFirst_ - base), windowEnd_ - windowFirst_);
         scored_.push_back({centre, static_cast<float>(std::log(std::max(statistic, kSmallestStatistic)) * kLog10OfE)});
         ++statisticCentre_;
     }
