@@ -1,6 +1,11 @@
+#include "TestData.h"
 #include "detect/StanceDetector.h"
+#include "io/Import.h"
 
+#include <QDirIterator>
 #include <QtTest>
+
+#include <cmath>
 
 using namespace footpath;
 
@@ -39,6 +44,144 @@ std::string pattern(const std::vector<std::uint8_t>& values)
     for (auto v : values)
         out += v ? '1' : '0';
     return out;
+}
+
+
+// A plain statistic detector written from the definitions in detect/StatisticDetectors.h, sample
+// by sample, to check the streaming one against: every window found by scanning outwards from its
+// centre, the running minimum and maximum by looking at every value in the window.
+
+constexpr double kWindowTolerance_s = 1e-9;  // timestamps are rounded decimals (StatisticDetectors.cpp)
+
+/// The first and last index within +-half_s of sample k's time.
+std::pair<std::size_t, std::size_t> centredWindow(const std::vector<double>& times, std::size_t k, double half_s)
+{
+    std::size_t first = k;
+    while (first > 0 && times[first - 1] >= times[k] - half_s - kWindowTolerance_s)
+        --first;
+    std::size_t last = k;
+    while (last + 1 < times.size() && times[last + 1] <= times[k] + half_s + kWindowTolerance_s)
+        ++last;
+    return {first, last};
+}
+
+/// SHOE, ARED or AMVD over samples[first..last], normalised by the noise variances.
+double referenceStatistic(const std::vector<ImuSample>& samples, std::size_t first, std::size_t last,
+                          const Parameters& params)
+{
+    const double count = static_cast<double>(last - first + 1);
+    Eigen::Vector3d meanAcc = Eigen::Vector3d::Zero();
+    for (std::size_t j = first; j <= last; ++j)
+        meanAcc += samples[j].acc_mps2 / count;
+    const Eigen::Vector3d gravity = params.gravity_mps2 * meanAcc.normalized();
+    const double varAcc = params.zv_sigma_acc_mps2 * params.zv_sigma_acc_mps2;
+    const double varGyr = params.zv_sigma_gyr_radps * params.zv_sigma_gyr_radps;
+    double sum = 0.0;
+    for (std::size_t j = first; j <= last; ++j) {
+        const ImuSample& s = samples[j];
+        switch (params.detectorKind()) {
+        case DetectorKind::Ared:
+            sum += s.gyr_radps.squaredNorm() / varGyr;
+            break;
+        case DetectorKind::Amvd:
+            sum += (s.acc_mps2 - meanAcc).squaredNorm() / varAcc;
+            break;
+        default:
+            sum += (s.acc_mps2 - gravity).squaredNorm() / varAcc + s.gyr_radps.squaredNorm() / varGyr;
+        }
+    }
+    return sum / count;
+}
+
+struct ReferenceFlags {
+    std::vector<double> logStatistic;
+    std::vector<double> logThreshold;
+    std::vector<std::uint8_t> c;
+    std::vector<std::uint8_t> stance;
+};
+
+ReferenceFlags referenceDetector(const std::vector<ImuSample>& samples, const Parameters& params)
+{
+    const std::size_t n = samples.size();
+    std::vector<double> times(n);
+    for (std::size_t k = 0; k < n; ++k)
+        times[k] = samples[k].time_s;
+    ReferenceFlags out;
+    std::vector<float> stored(n);  // the detector keeps the log statistic as a float
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto [first, last] = centredWindow(times, k, params.zv_window_s / 2.0);
+        out.logStatistic.push_back(std::log10(std::max(referenceStatistic(samples, first, last, params), 1e-12)));
+        stored[k] = static_cast<float>(out.logStatistic[k]);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        double threshold = params.zv_log_threshold;
+        if (params.zv_adaptive) {
+            const auto [first, last] = centredWindow(times, k, params.zv_adapt_window_s / 2.0);
+            const double lowest = *std::min_element(stored.begin() + first, stored.begin() + last + 1);
+            const double highest = *std::max_element(stored.begin() + first, stored.begin() + last + 1);
+            threshold = std::clamp(lowest + params.zv_adapt_offset_dec + params.zv_adapt_fraction * (highest - lowest),
+                                   params.zv_log_always, params.zv_log_never);
+        }
+        out.logThreshold.push_back(threshold);
+        out.c.push_back(stored[k] < static_cast<float>(threshold) ? 1 : 0);
+    }
+    out.stance = out.c;
+    for (std::size_t start = 0; start < n; ++start) {  // runs of c shorter than zv_min_stance_s are dropped
+        if (!out.c[start] || (start > 0 && out.c[start - 1]))
+            continue;
+        std::size_t end = start;
+        while (end + 1 < n && out.c[end + 1])
+            ++end;
+        if (times[end] - times[start] < params.zv_min_stance_s - kWindowTolerance_s)
+            std::fill(out.stance.begin() + start, out.stance.begin() + end + 1, 0);
+    }
+    return out;
+}
+
+/// Half a float's spacing at value: how far a double may lie from the float it was rounded to.
+double halfFloatSpacing(float value)
+{
+    return 0.5 * (std::nextafter(std::abs(value), INFINITY) - std::abs(value));
+}
+
+/// Every shared recording the importer reads, headerless logs with the column map it is sure of.
+std::vector<std::pair<QString, Recording>> sharedRecordings()
+{
+    std::vector<std::pair<QString, Recording>> recordings;
+    QDirIterator files(datasetsDir(), {"*.csv", "*.txt", "*.TXT", "*.mtb"}, QDir::Files, QDirIterator::Subdirectories);
+    while (files.hasNext()) {
+        const std::string path = files.next().toStdString();
+        ImportOptions options;
+        ImportResult read = importRecording(path, options);
+        if (!read.ok()) {
+            const ColumnMapGuess guess = guessColumnMap(path, options);
+            if (!guess.confident)
+                continue;
+            options.columnMap = guess.columnMap;
+            read = importRecording(path, options);
+        }
+        if (read.ok() && read.recording.samples.size() > 100)
+            recordings.emplace_back(QDir(datasetsDir()).relativeFilePath(files.filePath()), std::move(read.recording));
+    }
+    return recordings;
+}
+
+/// The statistic detectors' settings checked on the real recordings.
+std::vector<std::pair<const char*, Parameters>> statisticDetectorSettings()
+{
+    Parameters shoe;
+    Parameters ared;
+    ared.detector = static_cast<int>(DetectorKind::Ared);
+    Parameters amvd;
+    amvd.detector = static_cast<int>(DetectorKind::Amvd);
+    Parameters fixedThreshold;
+    fixedThreshold.zv_adaptive = false;
+    Parameters offTheGrid;  // windows that end between samples, a minimum stance of a few samples
+    offTheGrid.zv_window_s = 0.0523;
+    offTheGrid.zv_adapt_window_s = 0.777;
+    offTheGrid.zv_min_stance_s = 0.0331;
+    return {{"shoe", shoe}, {"ared", ared}, {"amvd", amvd}, {"fixed threshold", fixedThreshold},
+            {"windows off the sample grid", offTheGrid}};
 }
 
 }  // namespace
@@ -148,6 +291,60 @@ private slots:
         const std::vector<std::uint8_t> in = flags(input.toStdString());
         const std::vector<std::uint8_t> out = footpath::medianFilter(uniformTimes(in.size(), 100.0), in, window);
         QCOMPARE(QString::fromStdString(pattern(out)), expected);
+    }
+
+    void statisticDetectorMatchesAPlainReferenceOnTheSharedRecordings()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        const auto recordings = sharedRecordings();
+        QVERIFY2(recordings.size() >= 12, "the pyshoe-vicon trials at least");
+        std::size_t checked = 0;
+        for (const auto& [name, recording] : recordings) {
+            for (const auto& [setting, params] : statisticDetectorSettings()) {
+                const StanceFlags flags = detectStance(recording.samples, params);
+                const ReferenceFlags expected = referenceDetector(recording.samples, params);
+                const std::size_t n = recording.samples.size();
+                QCOMPARE(flags.stance.size(), n);
+                QCOMPARE(flags.logStatistic.size(), n);
+                for (std::size_t k = 0; k < n; ++k) {
+                    const QByteArray where = QStringLiteral("%1, %2, sample %3").arg(name, setting).arg(k).toUtf8();
+                    QVERIFY2(std::abs(flags.logStatistic[k] - expected.logStatistic[k])
+                                 <= halfFloatSpacing(flags.logStatistic[k]) + 1e-9,
+                             where.constData());
+                    QVERIFY2(std::abs(flags.logThreshold[k] - expected.logThreshold[k])
+                                 <= halfFloatSpacing(flags.logThreshold[k]) + 1e-9,
+                             where.constData());
+                    QVERIFY2(flags.c[k] == expected.c[k], where.constData());
+                    QVERIFY2(flags.stance[k] == expected.stance[k], where.constData());
+                    QVERIFY2(flags.c1[k] == flags.c[k] && flags.c2[k] == flags.c[k] && flags.c3[k] == flags.c[k],
+                             where.constData());
+                }
+                checked += n;
+            }
+        }
+        qInfo("%zu recordings, %zu samples checked", recordings.size(), checked);
+    }
+
+    void statisticDetectorLiveEqualsOfflineOnTheSharedRecordings()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        for (const auto& [name, recording] : sharedRecordings()) {
+            for (const auto& [setting, params] : statisticDetectorSettings()) {
+                const StanceFlags offline = detectStance(recording.samples, params);
+                StanceFlags live;
+                std::deque<SampleStanceFlags> decided;
+                const std::unique_ptr<CausalStanceDecider> detector = makeCausalStanceDetector(params);
+                for (const ImuSample& sample : recording.samples)
+                    detector->push(sample, decided);
+                detector->finish(decided);
+                for (const SampleStanceFlags& sample : decided)
+                    appendFlags(live, sample);
+                const QByteArray where = QStringLiteral("%1, %2").arg(name, setting).toUtf8();
+                QVERIFY2(live.c == offline.c && live.stance == offline.stance, where.constData());
+                QVERIFY2(live.logStatistic == offline.logStatistic, where.constData());
+                QVERIFY2(live.logThreshold == offline.logThreshold, where.constData());
+            }
+        }
     }
 
     void stanceIsTheFilteredConjunction()

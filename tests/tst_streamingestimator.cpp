@@ -2,6 +2,7 @@
 // data are complete, and while they arrive, estimates that only use samples already pushed.
 #include "TestData.h"
 #include "detect/StanceDetector.h"
+#include "detect/StatisticDetectors.h"
 #include "io/Import.h"
 #include "metrics/Evaluation.h"
 #include "nav/Alignment.h"
@@ -581,6 +582,33 @@ private slots:
             QCOMPARE(firstDifference("c", result.flags.c, prefix.c, n), QString());
             QCOMPARE(firstDifference("stance", result.flags.stance, prefix.stance, n), QString());
         }
+    }
+
+    void statisticDetectorKeepsOnlyTheOpenWindows()
+    {
+        const Parameters params;  // the adaptive SHOE detector
+        const std::vector<ImuSample> samples = simulatedRectangle(100.0).samples;
+        StatisticStanceDetector detector(params);
+        std::deque<SampleStanceFlags> decided;
+        // The statistic window and the threshold's half window reach back from the newest sample;
+        // the dead samples and scores before them are erased in batches.
+        const double reach_s = params.zv_window_s + params.zv_adapt_window_s / 2.0;
+        const auto open = static_cast<std::size_t>(std::ceil(reach_s * 100.0)) + 3;
+        const std::size_t bound = 2 * open + 2 * SlidingBuffer<ImuSample>::kMinimumDrop;
+        const double latency_s = StatisticStanceDetector::latency_s(params);
+        const auto latency = static_cast<std::size_t>(std::ceil(latency_s * 100.0)) + 3;
+        std::size_t pushed = 0;
+        for (const ImuSample& sample : samples) {
+            detector.push(sample, decided);
+            ++pushed;
+            QVERIFY(detector.bufferedSamples() <= bound);
+            QVERIFY(pushed - decided.size() <= latency);
+        }
+        detector.finish(decided);
+        QCOMPARE(decided.size(), samples.size());
+        const StanceFlags offline = detectStance(samples, params);
+        for (std::size_t k = 0; k < samples.size(); ++k)
+            QVERIFY(decided[k].stance == offline.stance[k] && decided[k].logStatistic == offline.logStatistic[k]);
     }
 
     void causalDetectorKeepsOnlyTheOpenWindows()

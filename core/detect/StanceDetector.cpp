@@ -122,6 +122,14 @@ void appendFlags(StanceFlags& flags, const SampleStanceFlags& sample)
     flags.logThreshold.push_back(sample.logThreshold);
 }
 
+void resizeFlags(StanceFlags& flags, std::size_t count)
+{
+    for (std::vector<std::uint8_t>* decisions : {&flags.c1, &flags.c2, &flags.c3, &flags.c, &flags.stance})
+        decisions->resize(count);
+    flags.logStatistic.resize(count);
+    flags.logThreshold.resize(count);
+}
+
 std::unique_ptr<CausalStanceDecider> makeCausalStanceDetector(const Parameters& params)
 {
     if (params.detectorKind() == DetectorKind::PaperC1C2C3)
@@ -140,21 +148,7 @@ StanceFlags detectStance(const std::vector<ImuSample>& samples, const Parameters
 {
     if (params.detectorKind() == DetectorKind::PaperC1C2C3)
         return detectPaperStance(samples, params);
-    StatisticStanceDetector detector(params);
-    std::deque<SampleStanceFlags> decided;
-    StanceFlags flags;
-    const auto take = [&] {
-        for (const SampleStanceFlags& sample : decided)
-            appendFlags(flags, sample);
-        decided.clear();
-    };
-    for (const ImuSample& sample : samples) {
-        detector.push(sample, decided);
-        take();
-    }
-    detector.finish(decided);
-    take();
-    return flags;
+    return StatisticStanceDetector::detect(samples, params);
 }
 
 StanceFlags detectPaperStance(const std::vector<ImuSample>& samples, const Parameters& params)

@@ -48,6 +48,22 @@ struct SampleStanceFlags {
 /// Appends one sample's flags to the per-sample vectors.
 void appendFlags(StanceFlags& flags, const SampleStanceFlags& sample);
 
+/// Sizes every per-sample vector for count samples.
+void resizeFlags(StanceFlags& flags, std::size_t count);
+
+/// Stores sample k's flags in vectors already sized past it (inline: the offline detectors call it
+/// once a sample).
+inline void setFlags(StanceFlags& flags, std::size_t k, const SampleStanceFlags& sample)
+{
+    flags.c1[k] = sample.c1;
+    flags.c2[k] = sample.c2;
+    flags.c3[k] = sample.c3;
+    flags.c[k] = sample.c;
+    flags.stance[k] = sample.stance;
+    flags.logStatistic[k] = sample.logStatistic;
+    flags.logThreshold[k] = sample.logThreshold;
+}
+
 /// A stance detector run causally, on samples as they arrive: each sample's flags are handed out
 /// once they are final, oldest first, and never change. Every detector is one of these, so a live
 /// device gets the same detectors as a file.
