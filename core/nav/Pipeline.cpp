@@ -199,19 +199,19 @@ void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSamp
 
 bool appendStep(Result& result, std::size_t first, std::size_t last)
 {
+    Step step = makeStep(result, first, last);
     bool merged = false;
     if (!result.steps.empty()) {
         const Step& previous = result.steps.back();
-        const Step candidate = makeStep(result, first, last);
         if (result.time_s[first] - previous.stanceEnd_s <= kStanceMergeGap_s
-            && horizontalDistance(candidate.position_m, previous.position_m) <= kStanceMergeDistance_m) {
+            && horizontalDistance(step.position_m, previous.position_m) <= kStanceMergeDistance_m) {
             first = static_cast<std::size_t>(
                 std::lower_bound(result.time_s.begin(), result.time_s.end(), previous.stanceStart_s) - result.time_s.begin());
             result.steps.pop_back();
             merged = true;
+            step = makeStep(result, first, last);
         }
     }
-    Step step = makeStep(result, first, last);
     if (!result.steps.empty()) {
         const Step& previous = result.steps.back();
         step.strideLength_m = horizontalDistance(step.position_m, previous.position_m);
