@@ -64,16 +64,26 @@ SmoothedRates smoothedRates(const std::vector<ImuSample>& samples, const std::ve
     SmoothedRates smoothed;
     smoothed.rates.reserve(samples.size());
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
+    const std::size_t n = samples.size();
     std::size_t first = 0, end = 0;  // the window [first, end)
-    for (std::size_t k = 0; k < samples.size(); ++k) {
-        for (; end < samples.size() && time_s[end] <= time_s[k] + 0.5 * kSmoothing_s; ++end)
+    for (std::size_t k = 0; k < n; ++k) {
+        const double windowEnd_s = time_s[k] + 0.5 * kSmoothing_s, windowStart_s = time_s[k] - 0.5 * kSmoothing_s;
+        for (; end < n && time_s[end] <= windowEnd_s; ++end)
             sum += samples[end].gyr_radps;
-        for (; time_s[first] < time_s[k] - 0.5 * kSmoothing_s; ++first)
+        for (; time_s[first] < windowStart_s; ++first)
             sum -= samples[first].gyr_radps;
         const Eigen::Vector3d rate = sum / static_cast<double>(end - first);
         smoothed.rates.push_back(rate);
-        smoothed.scatter += rate * rate.transpose();
+        // rate * rate^T, symmetric: the six distinct products, each rounded as Eigen's outer product rounds it.
+        xx += rate.x() * rate.x();
+        xy += rate.x() * rate.y();
+        xz += rate.x() * rate.z();
+        yy += rate.y() * rate.y();
+        yz += rate.y() * rate.z();
+        zz += rate.z() * rate.z();
     }
+    smoothed.scatter << xx, xy, xz, xy, yy, yz, xz, yz, zz;
     return smoothed;
 }
 
@@ -132,34 +142,62 @@ double approximateRateRightOfMotion(const Eigen::Vector3d& rpy, const Eigen::Vec
 /// speed) is small.
 ///
 /// Only the sign matters, and building C from the angles with libm's sin and cos cost more than
-/// the rest of the gait detection: the sum is taken with approximateSinCos first, and again with
-/// the exact rotation only when it lies within that approximation's error bound of zero (each
-/// term is off by at most 12e-9 |w . axis| |w|_1 |v_h|_1; the bound allows 1e-6, which also
-/// covers the rounding of a sum of 1e8 terms), so the answer is the exact sum's.
+/// the rest of the gait detection. No term exceeds its bound |w . axis| |w|_1 |v_h|_1 (C keeps
+/// |w|), and mid-swing terms, which agree, come near theirs. So the sum is first taken over the
+/// terms bounded above the mean with approximateSinCos (each then off by at most 12e-9 of its
+/// bound), and decides if it outweighs the other terms' bounds; then over all terms; and only if
+/// that lies within 1e-6 of the bounds' sum from zero (room for the approximation and for the
+/// rounding of 1e8 terms), with the exact rotation. The answer is the exact sum's every time.
 bool rateAgreesWithMotion(const std::vector<ImuSample>& samples, const std::vector<double>& along, const Result& result)
 {
-    const auto moving = [&result](std::size_t k) {
-        return result.velocity_mps[k].squaredNorm() >= kMinSwingSpeed_mps * kMinSwingSpeed_mps;
-    };
-    double approximate = 0.0, bound = 0.0;
+    // Each moving sample's bound; -1 marks the others.
+    std::vector<double> termBounds;
+    termBounds.reserve(samples.size());
+    double bounds = 0.0;
+    std::size_t moving = 0;
     for (std::size_t k = 0; k < samples.size(); ++k) {
-        if (!moving(k))
-            continue;
-        const Eigen::Vector3d& gyr = samples[k].gyr_radps;
         const Eigen::Vector3d& velocity = result.velocity_mps[k];
-        approximate += along[k] * approximateRateRightOfMotion(result.rollPitchYaw_rad[k], gyr, velocity);
-        bound += std::abs(along[k]) * gyr.lpNorm<1>() * (std::abs(velocity.x()) + std::abs(velocity.y()));
-    }
-    if (std::abs(approximate) > 1e-6 * bound)  // false for NaN: the exact sum decides
-        return approximate >= 0.0;
-    double agreement = 0.0;
-    for (std::size_t k = 0; k < samples.size(); ++k) {
-        if (!moving(k))
+        if (velocity.squaredNorm() < kMinSwingSpeed_mps * kMinSwingSpeed_mps) {
+            termBounds.push_back(-1.0);
             continue;
+        }
+        termBounds.push_back(std::abs(along[k]) * samples[k].gyr_radps.lpNorm<1>()
+                             * (std::abs(velocity.x()) + std::abs(velocity.y())));
+        bounds += termBounds.back();
+        ++moving;
+    }
+    const auto forEachMoving = [&termBounds](const auto& visit) {
+        for (std::size_t k = 0; k < termBounds.size(); ++k)
+            if (termBounds[k] >= 0.0)
+                visit(k, termBounds[k]);
+    };
+    const auto approximateTerm = [&](std::size_t k) {
+        return along[k] * approximateRateRightOfMotion(result.rollPitchYaw_rad[k], samples[k].gyr_radps, result.velocity_mps[k]);
+    };
+    const double meanBound = moving > 0 ? bounds / static_cast<double>(moving) : 0.0;
+    const double margin = 1e-6 * bounds;
+    double large = 0.0, smallBounds = 0.0;
+    forEachMoving([&](std::size_t k, double bound) {
+        if (bound >= meanBound)
+            large += approximateTerm(k);
+        else
+            smallBounds += bound;
+    });
+    if (std::abs(large) > smallBounds + margin)  // false for NaN: the exact sum decides
+        return large > 0.0;
+    double approximate = large;
+    forEachMoving([&](std::size_t k, double bound) {
+        if (bound < meanBound)
+            approximate += approximateTerm(k);
+    });
+    if (std::abs(approximate) > margin)
+        return approximate > 0.0;
+    double agreement = 0.0;
+    forEachMoving([&](std::size_t k, double) {
         const Eigen::Vector3d& rpy = result.rollPitchYaw_rad[k];
         agreement += along[k] * rateRightOfMotion(rotationFromRollPitchYaw(rpy.x(), rpy.y(), rpy.z()),
                                                   samples[k].gyr_radps, result.velocity_mps[k]);
-    }
+    });
     return agreement >= 0.0;
 }
 
