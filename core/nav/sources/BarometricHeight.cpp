@@ -48,27 +48,37 @@ double neighbourMedian(const std::vector<double>& pressures_pa, std::size_t i)
     return *middle;
 }
 
+/// True if some pressure is NaN or infinite: a neighbourhood with a NaN has no defined order, and
+/// an infinite difference of infinities is NaN.
+bool hasNonFinite(const std::vector<double>& pressures_pa)
+{
+    return !std::all_of(pressures_pa.begin(), pressures_pa.end(), [](double p) { return std::isfinite(p); });
+}
+
 /// Whether sample i lies more than kSpikeThreshold_pa from its neighbourhood's median m, that is
 /// |p_i - m| > threshold, without sorting for m. p_i - w does not grow as w does, so the
 /// neighbours with p_i - w > threshold are the smallest ones, and m (the middle-th smallest) is
 /// among them when there are more than `middle`; likewise those with p_i - w < -threshold are the
-/// largest, and hold m when there are at least size - middle. Each difference is the one the
-/// median's test computes, rounded alike: the same answer to the last bit. A NaN in the
-/// neighbourhood leaves the order undefined: the median is then taken as before.
-bool isSpike(const std::vector<double>& pressures_pa, std::size_t i)
+/// largest, and hold m when there are at least size - middle. Once more than `middle` neighbours
+/// are neither, neither count can get there. Each difference is the one the median's test
+/// computes, rounded alike: the same answer to the last bit. With a NaN or an infinity among the
+/// pressures (`nonFinite`) the median is taken as before.
+bool isSpike(const std::vector<double>& pressures_pa, std::size_t i, bool nonFinite)
 {
+    if (nonFinite)
+        return std::abs(pressures_pa[i] - neighbourMedian(pressures_pa, i)) > kSpikeThreshold_pa;
     const Neighbourhood around = neighbourhoodOf(pressures_pa, i);
     const std::size_t size = around.last - around.first, middle = size / 2;
-    std::size_t farBelow = 0, farAbove = 0;
-    bool unordered = false;
+    std::size_t farBelow = 0, farAbove = 0, near = 0;
     for (std::size_t j = around.first; j < around.last; ++j) {
         const double difference = pressures_pa[i] - pressures_pa[j];
-        farBelow += difference > kSpikeThreshold_pa;
-        farAbove += difference < -kSpikeThreshold_pa;
-        unordered |= std::isnan(difference);
+        if (difference > kSpikeThreshold_pa)
+            ++farBelow;
+        else if (difference < -kSpikeThreshold_pa)
+            ++farAbove;
+        else if (++near > middle)
+            return false;
     }
-    if (unordered)
-        return std::abs(pressures_pa[i] - neighbourMedian(pressures_pa, i)) > kSpikeThreshold_pa;
     return farBelow > middle || farAbove >= size - middle;
 }
 
@@ -92,8 +102,9 @@ double meanBetween(const std::vector<double>& times_s, const std::vector<double>
 std::vector<double> despikedPressure(const std::vector<double>& pressures_pa)
 {
     std::vector<double> clean = pressures_pa;
+    const bool nonFinite = hasNonFinite(pressures_pa);
     for (std::size_t i = 0; i < pressures_pa.size(); ++i)
-        if (isSpike(pressures_pa, i))
+        if (isSpike(pressures_pa, i, nonFinite))
             clean[i] = neighbourMedian(pressures_pa, i);
     return clean;
 }
@@ -106,8 +117,11 @@ StancePressure readStancePressure(const std::vector<double>& times_s, const std:
         return result;
     }
     std::vector<double> kept_s, kept_pa;
+    kept_s.reserve(times_s.size());
+    kept_pa.reserve(pressures_pa.size());
+    const bool nonFinite = hasNonFinite(pressures_pa);
     for (std::size_t i = 0; i < pressures_pa.size(); ++i) {
-        if (!isSpike(pressures_pa, i)) {
+        if (!isSpike(pressures_pa, i, nonFinite)) {
             kept_s.push_back(times_s[i]);
             kept_pa.push_back(pressures_pa[i]);
         }
