@@ -63,25 +63,35 @@ SmoothedRates smoothedRates(const std::vector<ImuSample>& samples, const std::ve
 {
     SmoothedRates smoothed;
     smoothed.rates.reserve(samples.size());
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    // Component by component, as Eigen's vector sum and quotient compute them.
+    double sumX = 0.0, sumY = 0.0, sumZ = 0.0;
     double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
     const std::size_t n = samples.size();
     std::size_t first = 0, end = 0;  // the window [first, end)
     for (std::size_t k = 0; k < n; ++k) {
         const double windowEnd_s = time_s[k] + 0.5 * kSmoothing_s, windowStart_s = time_s[k] - 0.5 * kSmoothing_s;
-        for (; end < n && time_s[end] <= windowEnd_s; ++end)
-            sum += samples[end].gyr_radps;
-        for (; time_s[first] < windowStart_s; ++first)
-            sum -= samples[first].gyr_radps;
-        const Eigen::Vector3d rate = sum / static_cast<double>(end - first);
-        smoothed.rates.push_back(rate);
+        for (; end < n && time_s[end] <= windowEnd_s; ++end) {
+            const Eigen::Vector3d& gyr = samples[end].gyr_radps;
+            sumX += gyr.x();
+            sumY += gyr.y();
+            sumZ += gyr.z();
+        }
+        for (; time_s[first] < windowStart_s; ++first) {
+            const Eigen::Vector3d& gyr = samples[first].gyr_radps;
+            sumX -= gyr.x();
+            sumY -= gyr.y();
+            sumZ -= gyr.z();
+        }
+        const auto count = static_cast<double>(end - first);
+        const double x = sumX / count, y = sumY / count, z = sumZ / count;
+        smoothed.rates.emplace_back(x, y, z);
         // rate * rate^T, symmetric: the six distinct products, each rounded as Eigen's outer product rounds it.
-        xx += rate.x() * rate.x();
-        xy += rate.x() * rate.y();
-        xz += rate.x() * rate.z();
-        yy += rate.y() * rate.y();
-        yz += rate.y() * rate.z();
-        zz += rate.z() * rate.z();
+        xx += x * x;
+        xy += x * y;
+        xz += x * z;
+        yy += y * y;
+        yz += y * z;
+        zz += z * z;
     }
     smoothed.scatter << xx, xy, xz, xy, yy, yz, xz, yz, zz;
     return smoothed;

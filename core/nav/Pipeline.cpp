@@ -252,6 +252,14 @@ void fillStepsAndSummary(Result& result)
     summarize(result, stancePathLength(result.steps));
 }
 
+void postProcess(const Recording& recording, const Parameters& params, Result& result)
+{
+    fillStepsAndSummary(result);
+    detectGaitEvents(recording, result);
+    classifyMotion(recording, params, result);
+    result.warnings = checkPlausibility(result, params);
+}
+
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress)
 {
     PipelineOutput output;
@@ -268,10 +276,7 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
         result.cancelled = true;
         return output;
     }
-    fillStepsAndSummary(result);
-    detectGaitEvents(recording, result);
-    classifyMotion(recording, params, result);
-    result.warnings = checkPlausibility(result, params);
+    postProcess(recording, params, result);
     result.summary.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (progress)
         progress(1.0);
