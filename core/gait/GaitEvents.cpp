@@ -121,8 +121,8 @@ void approximateSinCos(double x, double& sine, double& cosine)
     }
 }
 
-/// The rate about the axis to the right of the motion (v x up), from the body rate and the
-/// attitude angles: (C w) . (v x up) with C = rotationFromRollPitchYaw(rpy).
+/// The rate about the axis to the right of the motion (v x up) from the body rate and the
+/// body-to-navigation rotation C: (C w) . (v x up).
 double rateRightOfMotion(const Eigen::Matrix3d& bodyToNav, const Eigen::Vector3d& gyr, const Eigen::Vector3d& velocity)
 {
     const Eigen::Vector3d rate_n = bodyToNav * gyr;
