@@ -2,7 +2,8 @@
 // simulated walk at 100 Hz, offline and live, and on a real 200 Hz walk (a pyshoe-vicon trial repeated to a
 // minute) beside the textbook dense-matrix implementation of the same estimator (tests/DenseReferenceFilter).
 // Targets (issue 14): at least 5 million samples per second offline on real walking data, 10 times the
-// dense loop. Run with --benchmark_repetitions=5 --benchmark_report_aggregates_only=true on a busy machine.
+// dense loop. BM_PostProcessing times the steps after the filter alone. Run with --benchmark_repetitions=5
+// --benchmark_report_aggregates_only=true on a busy machine.
 #include "DenseReferenceFilter.h"
 #include "SimulatedWalks.h"
 #include "detect/StanceDetector.h"
@@ -120,6 +121,45 @@ void BM_DenseReferenceRealWalk(benchmark::State& state)
 }
 BENCHMARK(BM_DenseReferenceRealWalk)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(0)->Arg(1)->Arg(2)
     ->UseRealTime()->MeasureProcessCPUTime();
+
+/// An ecg-xmu walk with a barometer (100 Hz, 2.5 minutes: stairs and an elevator), for the motion
+/// classes; empty when the shared recordings are not there.
+const Recording& realWalkWithPressure()
+{
+    static const Recording recording = [] {
+        const char* fromEnv = std::getenv("FOOTPATH_DATASETS");
+        const std::filesystem::path file =
+            std::filesystem::path(fromEnv ? fromEnv : FOOTPATH_DATASETS_DIR) / "ecg-xmu" / "Height.txt";
+        ImportOptions options;
+        options.columnMap = {"time_ms", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "pressure_pa",
+                             "skip",    "skip",  "skip"};
+        ImportResult read = std::filesystem::exists(file) ? importRecording(file.string(), options) : ImportResult{};
+        return read.ok() ? read.recording : Recording{};
+    }();
+    return recording;
+}
+
+/// What runPipeline does after the filter and smoother (steps, gait events, motion classes,
+/// plausibility warnings), timed alone on the filter's output. Argument 0: the pyshoe-vicon
+/// minute (no barometer); 1: the ecg-xmu walk with pressure.
+void BM_PostProcessing(benchmark::State& state)
+{
+    const Recording& recording = state.range(0) == 0 ? realMinuteWalk() : realWalkWithPressure();
+    if (recording.samples.empty()) {
+        state.SkipWithError("the shared datasets are not there (set FOOTPATH_DATASETS)");
+        return;
+    }
+    const Parameters params;
+    Result result = runPipeline(recording, params).result;
+    for (auto _ : state) {
+        postProcess(recording, params, result);  // each step replaces what it wrote before
+        benchmark::DoNotOptimize(result.gaitEvents.data());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(recording.samples.size()));
+    state.counters["samples"] = static_cast<double>(recording.samples.size());
+    state.SetLabel(state.range(0) == 0 ? "pyshoe-vicon walk" : "ecg-xmu walk with pressure");
+}
+BENCHMARK(BM_PostProcessing)->Unit(benchmark::kMicrosecond)->MinTime(1.0)->Arg(0)->Arg(1);
 
 /// The same walk through the live estimator, pushed sample by sample as a device delivers it.
 void BM_StreamingEstimator(benchmark::State& state)

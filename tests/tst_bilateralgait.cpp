@@ -12,7 +12,9 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 using namespace footpath;
@@ -71,6 +73,61 @@ Result resultOf(const Rhythm& rhythm, double strideLength_m)
     return result;
 }
 
+/// One foot of a long walk with a jittered rhythm: some swings missed, some found twice (split
+/// in two), some strides turning; `offset_s` shifts it against the other foot.
+struct JitteredFoot {
+    std::vector<GaitCycle> cycles;
+    std::vector<FootSwing> swings;
+};
+
+JitteredFoot jitteredFoot(int strides, double offset_s, std::mt19937& random)
+{
+    std::uniform_real_distribution<double> jitter(-0.08, 0.08);
+    std::uniform_int_distribution<int> oddity(0, 49);
+    JitteredFoot foot;
+    double heelStrike_s = offset_s;
+    for (int k = 0; k < strides; ++k) {
+        const double toeOff_s = heelStrike_s + 0.68 + jitter(random), next_s = heelStrike_s + 1.1 + jitter(random);
+        const int odd = oddity(random);
+        if (odd == 0) {  // found twice: two short swings
+            const double middle_s = 0.5 * (toeOff_s + next_s);
+            foot.swings.push_back({toeOff_s, middle_s - 0.02});
+            foot.swings.push_back({middle_s + 0.02, next_s});
+        } else if (odd != 1) {  // 1: missed
+            foot.swings.push_back({toeOff_s, next_s});
+        }
+        foot.cycles.push_back({heelStrike_s, toeOff_s, next_s, odd != 2});
+        heelStrike_s = next_s;
+    }
+    return foot;
+}
+
+/// summariseDoubleSupport against doubleSupportIn over every swing of the other foot, field by
+/// field and to the last bit.
+void compareWithScan(const std::vector<GaitCycle>& cycles, const std::vector<FootSwing>& otherSwings)
+{
+    std::vector<CycleDoubleSupport> scanned;
+    std::size_t unpaired = 0;
+    for (const GaitCycle& cycle : cycles) {
+        if (!cycle.counted)
+            continue;
+        if (const std::optional<CycleDoubleSupport> support = doubleSupportIn(cycle, otherSwings))
+            scanned.push_back(*support);
+        else
+            ++unpaired;
+    }
+    std::vector<CycleDoubleSupport> summarised;
+    const DoubleSupportSummary summary = summariseDoubleSupport(cycles, otherSwings, &summarised);
+    QCOMPARE(summary.unpairedCycles, unpaired);
+    QCOMPARE(summarised.size(), scanned.size());
+    for (std::size_t i = 0; i < scanned.size(); ++i) {
+        QCOMPARE(summarised[i].heelStrike_s, scanned[i].heelStrike_s);
+        QCOMPARE(summarised[i].initial_s, scanned[i].initial_s);
+        QCOMPARE(summarised[i].terminal_s, scanned[i].terminal_s);
+        QCOMPARE(summarised[i].pct, scanned[i].pct);
+    }
+}
+
 }  // namespace
 
 class TestBilateralGait : public QObject {
@@ -81,6 +138,7 @@ private slots:
     void runningHasNoDoubleSupport();
     void missedSwingLeavesTheCycleOut();
     void turningStridesAreNotCounted();
+    void manyStridesAgreeWithAScanOfEverySwing();
     void clocksThatDifferAreReported();
     void symmetryIndex();
     void footSidesFromNames_data();
@@ -174,6 +232,24 @@ void TestBilateralGait::turningStridesAreNotCounted()
     const BilateralGait walk = analyseBilateralGait(left, right);
     QCOMPARE(walk.leftCycles.cycles, std::size_t(8));
     QCOMPARE(walk.leftCycles.unpairedCycles, std::size_t(0));
+}
+
+void TestBilateralGait::manyStridesAgreeWithAScanOfEverySwing()
+{
+    // 4000 strides a foot (over an hour of walking): each cycle looks at the few swings of the
+    // other foot that meet it, and must find what a scan of all of them finds, with missed,
+    // doubled and turning strides among them; swings out of time order take the scan itself.
+    std::mt19937 random(7);
+    const JitteredFoot left = jitteredFoot(4000, 0.0, random), right = jitteredFoot(4000, 0.55, random);
+    compareWithScan(left.cycles, right.swings);
+    compareWithScan(right.cycles, left.swings);
+    const BilateralGait walk = doubleSupportOfWalk(left.cycles, left.swings, right.cycles, right.swings);
+    QVERIFY2(walk.doubleSupport.cycles > 6000 && walk.doubleSupport.unpairedCycles > 100,
+             qPrintable(QStringLiteral("%1 paired, %2 unpaired").arg(walk.doubleSupport.cycles).arg(walk.doubleSupport.unpairedCycles)));
+    std::vector<FootSwing> shuffled(right.swings.begin(), right.swings.begin() + 300);
+    std::shuffle(shuffled.begin(), shuffled.end(), random);
+    const std::vector<GaitCycle> someCycles(left.cycles.begin(), left.cycles.begin() + 300);
+    compareWithScan(someCycles, shuffled);
 }
 
 void TestBilateralGait::clocksThatDifferAreReported()

@@ -6,6 +6,7 @@
 #include "nav/ErrorStateEkf.h"
 #include "nav/MotionClasses.h"
 #include "nav/Pipeline.h"
+#include "nav/Plausibility.h"
 #include "nav/sources/BarometricHeight.h"
 #include "nav/sources/ZeroNavigationAcceleration.h"
 #include "sim/WalkSimulator.h"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <set>
 
 using namespace footpath;
@@ -61,6 +63,56 @@ Recording importEcg(const QString& name, bool elevenColumns)
     if (!imported.ok())
         qFatal("cannot import %s", qPrintable(name));
     return imported.recording;
+}
+
+/// The steps' classes as runs, "L12 U3 e1 L4": L level, U/D stairs up/down, E/e an elevator up/down.
+QString motionRuns(const Result& result)
+{
+    const auto letter = [](MotionClass motion) {
+        switch (motion) {
+        case MotionClass::Level: return 'L';
+        case MotionClass::StairsUp: return 'U';
+        case MotionClass::StairsDown: return 'D';
+        case MotionClass::ElevatorUp: return 'E';
+        case MotionClass::ElevatorDown: return 'e';
+        case MotionClass::Unknown: break;
+        }
+        return '?';
+    };
+    QStringList runs;
+    for (std::size_t k = 0; k < result.steps.size();) {
+        std::size_t end = k;
+        while (end < result.steps.size() && result.steps[end].motion == result.steps[k].motion)
+            ++end;
+        runs << QStringLiteral("%1%2").arg(QChar(letter(result.steps[k].motion))).arg(end - k);
+        k = end;
+    }
+    return runs.join(' ');
+}
+
+/// The plausibility warnings as "kind@start".
+QString warningList(const Result& result)
+{
+    QStringList warnings;
+    for (const PlausibilityWarning& warning : result.warnings)
+        warnings << QStringLiteral("%1@%2").arg(warningKindName(warning.kind)).arg(warning.start_s, 0, 'f', 2);
+    return warnings.join(' ');
+}
+
+/// The spike rule written out: a sample more than 12 Pa from the median of itself and its five
+/// neighbours on each side takes that median.
+std::vector<double> despikedByMedians(const std::vector<double>& pressures_pa)
+{
+    std::vector<double> clean = pressures_pa;
+    for (std::size_t i = 0; i < pressures_pa.size(); ++i) {
+        std::vector<double> window(pressures_pa.begin() + static_cast<long>(i >= 5 ? i - 5 : 0),
+                                   pressures_pa.begin() + static_cast<long>(std::min(pressures_pa.size(), i + 6)));
+        std::sort(window.begin(), window.end());
+        const double median = window[window.size() / 2];
+        if (std::abs(pressures_pa[i] - median) > 12.0)
+            clean[i] = median;
+    }
+    return clean;
 }
 
 /// A foot at rest, level in truth, whose estimate starts tilted; the ZUNA source alone runs.
@@ -171,6 +223,30 @@ private slots:
         QVERIFY(!hasNote(baro, "baro"));
     }
 
+    // The spike test counts the neighbours far above and far below instead of sorting for the
+    // median: on pressures on a 0.25 Pa grid, where differences of exactly 12 Pa are common, with
+    // single and double spikes, steps and the short windows at both ends, it must agree with the
+    // median rule everywhere.
+    void baro_despikeAgreesWithTheMedianRule()
+    {
+        std::mt19937 random(20240611);
+        std::uniform_int_distribution<int> quarterPascals(-56, 56);  // +-14 Pa
+        std::uniform_int_distribution<int> kind(0, 19);
+        for (int trial = 0; trial < 200; ++trial) {
+            std::vector<double> pressures_pa;
+            double level_pa = 101325.0;
+            const int count = 1 + trial % 40;
+            for (int k = 0; k < count; ++k) {
+                const int what = kind(random);
+                if (what == 0)
+                    level_pa += 12.0 * (random() % 2 ? 1 : -1);  // a step of exactly the threshold
+                const double noise_pa = 0.25 * quarterPascals(random) * (what < 12 ? 0.25 : 1.0);
+                pressures_pa.push_back(level_pa + noise_pa + (what == 1 ? 40.0 : what == 2 ? -30.0 : 0.0));
+            }
+            QCOMPARE(despikedPressure(pressures_pa), despikedByMedians(pressures_pa));
+        }
+    }
+
     void baro_withoutPressure_notesAndLeavesTheWalkAlone()
     {
         const SimulatedWalk walk = simulateWalk(straightLinePath(10.0), WalkSimulatorConfig());
@@ -273,6 +349,32 @@ private slots:
         QCOMPARE(static_cast<int>(s.elevatorRides), elevatorRides);
         QVERIFY(s.stairStepsUp > 0);
         QVERIFY(std::abs(baro.position_m.back().z()) <= std::abs(inertial.position_m.back().z()) + 0.1);
+    }
+    // The classes of every step and the plausibility warnings of the recordings with pressure, as
+    // they were measured when the post-processing was made faster (the barometer's spike test by
+    // counting instead of sorting): a change to either shows here.
+    void datasets_motionClassesAndWarnings_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<bool>("elevenColumns");
+        QTest::addColumn<QString>("classes");
+        QTest::addColumn<QString>("warnings");
+        QTest::newRow("Height.txt") << "Height.txt" << true << "L29 e2 L33 U10 L1 U4 L2 U5 L3 U4" << "no_initial_rest@82.05 long_swing@213.92";
+        QTest::newRow("data.txt") << "data.txt" << false << "L2 D1 L6 D1 L2 U1 L15 D1 L20 U2 L20 e2 L3 U1 L6 U1 L16 D1 L10 U4 L2 U7 L4" << "";
+        QTest::newRow("shanglou") << "shanglou041601.TXT" << false << "L40 D9 L8 D1 L48 U3 L1 U8 L3" << "no_initial_rest@243.03 long_swing@287.72 long_swing@368.22";
+    }
+
+    void datasets_motionClassesAndWarnings()
+    {
+        FOOTPATH_REQUIRE_DATASETS();
+        QFETCH(QString, file);
+        QFETCH(bool, elevenColumns);
+        QFETCH(QString, classes);
+        QFETCH(QString, warnings);
+        const Result result = run(importEcg(file, elevenColumns), Parameters());
+        qInfo("%s: %s; %s", qPrintable(file), qPrintable(motionRuns(result)), qPrintable(warningList(result)));
+        QCOMPARE(motionRuns(result), classes);
+        QCOMPARE(warningList(result), warnings);
     }
 };
 

@@ -166,7 +166,12 @@ std::vector<GaitCycle> cyclesOf(const std::vector<GaitStride>& strides)
     return cycles;
 }
 
-std::optional<CycleDoubleSupport> doubleSupportIn(const GaitCycle& cycle, const std::vector<FootSwing>& otherSwings)
+namespace {
+
+using SwingIterator = std::vector<FootSwing>::const_iterator;
+
+/// doubleSupportIn over the other foot's swings [first, last).
+std::optional<CycleDoubleSupport> doubleSupportAmong(const GaitCycle& cycle, SwingIterator first, SwingIterator last)
 {
     const double start = cycle.heelStrike_s, end = cycle.nextHeelStrike_s;
     if (!(end > start) || cycle.toeOff_s < start || cycle.toeOff_s > end)
@@ -175,11 +180,11 @@ std::optional<CycleDoubleSupport> doubleSupportIn(const GaitCycle& cycle, const 
     // anything else is a swing missed or found twice on one of the feet.
     std::size_t toeOffs = 0, heelStrikes = 0;
     double otherHeelStrike = end;
-    for (const FootSwing& swing : otherSwings) {
-        toeOffs += swing.toeOff_s > start && swing.toeOff_s <= end;
-        if (swing.heelStrike_s > start && swing.heelStrike_s <= end) {
+    for (auto swing = first; swing != last; ++swing) {
+        toeOffs += swing->toeOff_s > start && swing->toeOff_s <= end;
+        if (swing->heelStrike_s > start && swing->heelStrike_s <= end) {
             ++heelStrikes;
-            otherHeelStrike = swing.heelStrike_s;
+            otherHeelStrike = swing->heelStrike_s;
         }
     }
     if (toeOffs != 1 || heelStrikes != 1)
@@ -187,10 +192,10 @@ std::optional<CycleDoubleSupport> doubleSupportIn(const GaitCycle& cycle, const 
     // Both feet are down where this foot stands (start to its toe off) and the other is in none of
     // its swings: before the other's heel strike that is the initial double support, after it the
     // terminal one.
-    const auto together = [&otherSwings](double from, double to) {
+    const auto together = [first, last](double from, double to) {
         double time = std::max(0.0, to - from);
-        for (const FootSwing& swing : otherSwings)
-            time -= overlap(from, to, swing.toeOff_s, swing.heelStrike_s);
+        for (auto swing = first; swing != last; ++swing)
+            time -= overlap(from, to, swing->toeOff_s, swing->heelStrike_s);
         return std::max(0.0, time);
     };
     CycleDoubleSupport support;
@@ -202,16 +207,57 @@ std::optional<CycleDoubleSupport> doubleSupportIn(const GaitCycle& cycle, const 
     return support;
 }
 
+/// True if every swing's toe off comes no later than its heel strike and both times ascend along
+/// the list (false for NaN), as swingsOf and referenceSwings give them.
+bool inTimeOrder(const std::vector<FootSwing>& swings)
+{
+    for (std::size_t i = 0; i < swings.size(); ++i) {
+        if (!(swings[i].toeOff_s <= swings[i].heelStrike_s))
+            return false;
+        if (i > 0
+            && !(swings[i - 1].toeOff_s <= swings[i].toeOff_s && swings[i - 1].heelStrike_s <= swings[i].heelStrike_s))
+            return false;
+    }
+    return true;
+}
+
+/// Of swings in time order, the run that can matter in the cycle: the others strike by its start
+/// (so lift off by then too) or lift off after its end. They add no toe off or heel strike inside
+/// the cycle and overlap none of its parts, so doubleSupportAmong gives over the run what it gives
+/// over all, to the last bit (each swing left out subtracted zero).
+std::pair<SwingIterator, SwingIterator> swingsMeeting(const GaitCycle& cycle, const std::vector<FootSwing>& swings)
+{
+    const auto first = std::partition_point(swings.begin(), swings.end(), [&cycle](const FootSwing& swing) {
+        return swing.heelStrike_s <= cycle.heelStrike_s;
+    });
+    const auto last = std::partition_point(first, swings.end(), [&cycle](const FootSwing& swing) {
+        return swing.toeOff_s <= cycle.nextHeelStrike_s;
+    });
+    return {first, last};
+}
+
+}  // namespace
+
+std::optional<CycleDoubleSupport> doubleSupportIn(const GaitCycle& cycle, const std::vector<FootSwing>& otherSwings)
+{
+    return doubleSupportAmong(cycle, otherSwings.begin(), otherSwings.end());
+}
+
 DoubleSupportSummary summariseDoubleSupport(const std::vector<GaitCycle>& cycles,
                                             const std::vector<FootSwing>& otherSwings,
                                             std::vector<CycleDoubleSupport>* perCycle)
 {
+    // Each cycle looks at the few swings that meet it (two binary searches) instead of all of
+    // them, which made a long walk's analysis quadratic in its strides.
+    const bool ordered = inTimeOrder(otherSwings);
     std::vector<CycleDoubleSupport> values;
     std::size_t unpaired = 0;
     for (const GaitCycle& cycle : cycles) {
         if (!cycle.counted)
             continue;
-        if (const std::optional<CycleDoubleSupport> support = doubleSupportIn(cycle, otherSwings))
+        const auto [first, last] =
+            ordered ? swingsMeeting(cycle, otherSwings) : std::make_pair(otherSwings.begin(), otherSwings.end());
+        if (const std::optional<CycleDoubleSupport> support = doubleSupportAmong(cycle, first, last))
             values.push_back(*support);
         else
             ++unpaired;

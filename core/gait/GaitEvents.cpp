@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace footpath {
@@ -49,58 +50,195 @@ struct Stance {
     Eigen::Matrix3d bodyToNav = Eigen::Matrix3d::Identity();  ///< in the middle of the quiet part
 };
 
-/// The angular rate averaged over kSmoothing_s around each sample: a heel strike rings through the
-/// gyro for a few samples at up to 15 rad/s about any axis, and must neither tilt the axis nor
-/// pass for a swing.
-std::vector<Eigen::Vector3d> smoothedRates(const std::vector<ImuSample>& samples, const std::vector<double>& time_s)
+/// The angular rate averaged over kSmoothing_s around each sample, and the scatter matrix of
+/// those averages (whose principal axis is the sagittal one): a heel strike rings through the gyro
+/// for a few samples at up to 15 rad/s about any axis, and must neither tilt the axis nor pass for
+/// a swing.
+struct SmoothedRates {
+    std::vector<Eigen::Vector3d> rates;
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+};
+
+SmoothedRates smoothedRates(const std::vector<ImuSample>& samples, const std::vector<double>& time_s)
 {
-    std::vector<Eigen::Vector3d> smoothed;
-    smoothed.reserve(samples.size());
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    SmoothedRates smoothed;
+    smoothed.rates.reserve(samples.size());
+    // Component by component, as Eigen's vector sum and quotient compute them.
+    double sumX = 0.0, sumY = 0.0, sumZ = 0.0;
+    double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
+    const std::size_t n = samples.size();
     std::size_t first = 0, end = 0;  // the window [first, end)
-    for (std::size_t k = 0; k < samples.size(); ++k) {
-        for (; end < samples.size() && time_s[end] <= time_s[k] + 0.5 * kSmoothing_s; ++end)
-            sum += samples[end].gyr_radps;
-        for (; time_s[first] < time_s[k] - 0.5 * kSmoothing_s; ++first)
-            sum -= samples[first].gyr_radps;
-        smoothed.push_back(sum / static_cast<double>(end - first));
+    for (std::size_t k = 0; k < n; ++k) {
+        const double windowEnd_s = time_s[k] + 0.5 * kSmoothing_s, windowStart_s = time_s[k] - 0.5 * kSmoothing_s;
+        for (; end < n && time_s[end] <= windowEnd_s; ++end) {
+            const Eigen::Vector3d& gyr = samples[end].gyr_radps;
+            sumX += gyr.x();
+            sumY += gyr.y();
+            sumZ += gyr.z();
+        }
+        for (; time_s[first] < windowStart_s; ++first) {
+            const Eigen::Vector3d& gyr = samples[first].gyr_radps;
+            sumX -= gyr.x();
+            sumY -= gyr.y();
+            sumZ -= gyr.z();
+        }
+        const auto count = static_cast<double>(end - first);
+        const double x = sumX / count, y = sumY / count, z = sumZ / count;
+        smoothed.rates.emplace_back(x, y, z);
+        // rate * rate^T, symmetric: the six distinct products, each rounded as Eigen's outer product rounds it.
+        xx += x * x;
+        xy += x * y;
+        xz += x * z;
+        yy += y * y;
+        yz += y * z;
+        zz += z * z;
     }
+    smoothed.scatter << xx, xy, xz, xy, yy, yz, xz, yz, zz;
     return smoothed;
 }
 
-/// The principal axis of the angular rate, signed so that the rotation about it is positive
-/// while the estimated foot moves forwards through mid-swing (speed weights the swing over
-/// push-off and foot slap, whose rotation is the other way).
-Eigen::Vector3d sagittalAxis(const std::vector<ImuSample>& samples, const std::vector<Eigen::Vector3d>& smoothed,
-                             const Result& result)
+/// sin and cos of an angle of a few turns at most, within 2e-9: Taylor polynomials on the angle
+/// reduced to [-pi/4, pi/4] (the first omitted terms, (pi/4)^11/11! and (pi/4)^12/12!, bound the
+/// error). A fifth of libm's cost, for a sum whose sign is all that is wanted (see
+/// rateAgreesWithMotion). NaN for an angle beyond a thousand radians, which no attitude angle is.
+void approximateSinCos(double x, double& sine, double& cosine)
 {
-    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-    for (const Eigen::Vector3d& rate : smoothed)
-        scatter += rate * rate.transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(scatter);
-    Eigen::Vector3d axis = solver.eigenvectors().col(2);  // eigenvalues ascending
-    // Toe rising while moving forwards is a positive turn about the axis to the right of the
-    // motion (v x up); the rate about `axis` should agree with it. Samples slower than a swing
-    // are left out: their weight (the speed) is small and each costs a rotation from angles.
-    double agreement = 0.0;
-    for (std::size_t k = 0; k < samples.size(); ++k) {
-        if (result.velocity_mps[k].squaredNorm() < kMinSwingSpeed_mps * kMinSwingSpeed_mps)
-            continue;
-        const Eigen::Vector3d& rpy = result.rollPitchYaw_rad[k];
-        const Eigen::Vector3d rate_n = rotationFromRollPitchYaw(rpy.x(), rpy.y(), rpy.z()) * samples[k].gyr_radps;
-        const Eigen::Vector3d rightOfMotion = result.velocity_mps[k].cross(Eigen::Vector3d::UnitZ());
-        agreement += samples[k].gyr_radps.dot(axis) * rate_n.dot(rightOfMotion);
+    if (!(std::abs(x) <= 1e3)) {
+        sine = cosine = std::numeric_limits<double>::quiet_NaN();
+        return;
     }
-    return agreement >= 0.0 ? axis : Eigen::Vector3d(-axis);
+    constexpr double kHalfPiHigh = 1.5707963267948966, kHalfPiLow = 6.123233995736766e-17;
+    const auto quadrant = static_cast<long>(x * (2.0 / M_PI) + (x >= 0.0 ? 0.5 : -0.5));
+    const double r = (x - static_cast<double>(quadrant) * kHalfPiHigh) - static_cast<double>(quadrant) * kHalfPiLow;
+    const double r2 = r * r;
+    const double s = r + r * r2 * (-1.0 / 6 + r2 * (1.0 / 120 + r2 * (-1.0 / 5040 + r2 * (1.0 / 362880))));
+    const double c = 1.0 + r2 * (-0.5 + r2 * (1.0 / 24 + r2 * (-1.0 / 720 + r2 * (1.0 / 40320 + r2 * (-1.0 / 3628800)))));
+    switch (quadrant & 3) {
+    case 0: sine = s; cosine = c; break;
+    case 1: sine = c; cosine = -s; break;
+    case 2: sine = -s; cosine = -c; break;
+    default: sine = -c; cosine = s; break;
+    }
 }
 
-std::vector<double> projected(const std::vector<Eigen::Vector3d>& rates, const Eigen::Vector3d& axis)
+/// The rate about the axis to the right of the motion (v x up) from the body rate and the
+/// body-to-navigation rotation C: (C w) . (v x up).
+double rateRightOfMotion(const Eigen::Matrix3d& bodyToNav, const Eigen::Vector3d& gyr, const Eigen::Vector3d& velocity)
 {
-    std::vector<double> rate;
-    rate.reserve(rates.size());
-    for (const Eigen::Vector3d& w : rates)
-        rate.push_back(w.dot(axis));
-    return rate;
+    const Eigen::Vector3d rate_n = bodyToNav * gyr;
+    const Eigen::Vector3d rightOfMotion = velocity.cross(Eigen::Vector3d::UnitZ());
+    return rate_n.dot(rightOfMotion);
+}
+
+/// The same with the rotation from approximateSinCos: each entry of C (sums of two products of
+/// three sines or cosines) is then within 12e-9 of the exact one.
+double approximateRateRightOfMotion(const Eigen::Vector3d& rpy, const Eigen::Vector3d& gyr, const Eigen::Vector3d& velocity)
+{
+    double sr, cr, sp, cp, sy, cy;
+    approximateSinCos(rpy.x(), sr, cr);
+    approximateSinCos(rpy.y(), sp, cp);
+    approximateSinCos(rpy.z(), sy, cy);
+    // The nav-frame rate's horizontal part: rows 0 and 1 of rotationFromRollPitchYaw times gyr.
+    const double levelX = cp * gyr.x() + sp * (sr * gyr.y() + cr * gyr.z());
+    const double levelY = cr * gyr.y() - sr * gyr.z();
+    const double east = cy * levelX - sy * levelY, north = sy * levelX + cy * levelY;
+    return velocity.y() * east - velocity.x() * north;
+}
+
+/// Whether the rate about the principal axis agrees with the foot turning toe-up while it moves
+/// forwards: the sign of the sum over the moving samples of (w . axis) (C w . (v x up)), where
+/// `along` holds w . axis. Toe rising while moving forwards is a positive turn about the axis to
+/// the right of the motion (v x up). Samples slower than a swing are left out: their weight (the
+/// speed) is small.
+///
+/// Only the sign matters, and building C from the angles with libm's sin and cos cost more than
+/// the rest of the gait detection. No term exceeds its bound |w . axis| |w|_1 |v_h|_1 (C keeps
+/// |w|), and mid-swing terms, which agree, come near theirs. So the sum is first taken over the
+/// terms bounded above the mean with approximateSinCos (each then off by at most 12e-9 of its
+/// bound), and decides if it outweighs the other terms' bounds; then over all terms; and only if
+/// that lies within 1e-6 of the bounds' sum from zero (room for the approximation and for the
+/// rounding of 1e8 terms), with the exact rotation. The answer is the exact sum's every time.
+bool rateAgreesWithMotion(const std::vector<ImuSample>& samples, const std::vector<double>& along, const Result& result)
+{
+    // Each moving sample's bound; -1 marks the others.
+    std::vector<double> termBounds;
+    termBounds.reserve(samples.size());
+    double bounds = 0.0;
+    std::size_t moving = 0;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        const Eigen::Vector3d& velocity = result.velocity_mps[k];
+        if (velocity.squaredNorm() < kMinSwingSpeed_mps * kMinSwingSpeed_mps) {
+            termBounds.push_back(-1.0);
+            continue;
+        }
+        termBounds.push_back(std::abs(along[k]) * samples[k].gyr_radps.lpNorm<1>()
+                             * (std::abs(velocity.x()) + std::abs(velocity.y())));
+        bounds += termBounds.back();
+        ++moving;
+    }
+    const auto forEachMoving = [&termBounds](const auto& visit) {
+        for (std::size_t k = 0; k < termBounds.size(); ++k)
+            if (termBounds[k] >= 0.0)
+                visit(k, termBounds[k]);
+    };
+    const auto approximateTerm = [&](std::size_t k) {
+        return along[k] * approximateRateRightOfMotion(result.rollPitchYaw_rad[k], samples[k].gyr_radps, result.velocity_mps[k]);
+    };
+    const double meanBound = moving > 0 ? bounds / static_cast<double>(moving) : 0.0;
+    const double margin = 1e-6 * bounds;
+    double large = 0.0, smallBounds = 0.0;
+    forEachMoving([&](std::size_t k, double bound) {
+        if (bound >= meanBound)
+            large += approximateTerm(k);
+        else
+            smallBounds += bound;
+    });
+    if (std::abs(large) > smallBounds + margin)  // false for NaN: the exact sum decides
+        return large > 0.0;
+    double approximate = large;
+    forEachMoving([&](std::size_t k, double bound) {
+        if (bound < meanBound)
+            approximate += approximateTerm(k);
+    });
+    if (std::abs(approximate) > margin)
+        return approximate > 0.0;
+    double agreement = 0.0;
+    forEachMoving([&](std::size_t k, double) {
+        const Eigen::Vector3d& rpy = result.rollPitchYaw_rad[k];
+        agreement += along[k] * rateRightOfMotion(rotationFromRollPitchYaw(rpy.x(), rpy.y(), rpy.z()),
+                                                  samples[k].gyr_radps, result.velocity_mps[k]);
+    });
+    return agreement >= 0.0;
+}
+
+/// The rates about the sagittal axis: the principal axis of the smoothed rate, signed so that the
+/// rotation about it is positive while the estimated foot moves forwards through mid-swing (speed
+/// weights the swing over push-off and foot slap, whose rotation is the other way).
+struct SagittalRates {
+    std::vector<double> raw;       ///< of each gyro reading
+    std::vector<double> smoothed;  ///< of the smoothed rates
+};
+
+SagittalRates sagittalRates(const std::vector<ImuSample>& samples, const SmoothedRates& smoothed, const Result& result)
+{
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(smoothed.scatter);
+    const Eigen::Vector3d axis = solver.eigenvectors().col(2);  // eigenvalues ascending
+    SagittalRates rates;
+    rates.raw.reserve(samples.size());
+    rates.smoothed.reserve(samples.size());
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        rates.raw.push_back(samples[k].gyr_radps.dot(axis));
+        rates.smoothed.push_back(smoothed.rates[k].dot(axis));
+    }
+    // Turning the axis round negates every product of the dot products exactly: the rates about
+    // -axis are these negated, to the last bit.
+    if (!rateAgreesWithMotion(samples, rates.raw, result)) {
+        for (double& rate : rates.raw)
+            rate = -rate;
+        for (double& rate : rates.smoothed)
+            rate = -rate;
+    }
+    return rates;
 }
 
 /// First sample at or after time t (times ascending).
@@ -114,12 +252,16 @@ std::size_t indexAtOrAfter(const std::vector<double>& time_s, double t)
 std::vector<std::size_t> swingPeaks(const std::vector<double>& rate, const Result& result)
 {
     std::vector<std::size_t> peaks;
+    // The last sample before k where the rate was not positive: the rate left the positive side
+    // since the last peak if it lies at or after that peak.
+    std::optional<std::size_t> lastNotPositive;
     for (std::size_t k = 1; k + 1 < rate.size(); ++k) {
+        if (!(rate[k - 1] > 0.0))
+            lastNotPositive = k - 1;
         if (rate[k] < kMinSwingPeak_radps || rate[k] < rate[k - 1] || rate[k] <= rate[k + 1]
             || result.velocity_mps[k].norm() < kMinSwingSpeed_mps)
             continue;
-        const bool sameSwing = !peaks.empty()
-            && *std::min_element(rate.begin() + static_cast<long>(peaks.back()), rate.begin() + static_cast<long>(k)) > 0.0;
+        const bool sameSwing = !peaks.empty() && !(lastNotPositive && *lastNotPositive >= peaks.back());
         if (!sameSwing)
             peaks.push_back(k);
         else if (rate[k] > rate[peaks.back()])
@@ -212,16 +354,25 @@ std::vector<Swing> findSwings(const std::vector<double>& rate, const std::vector
 Stance quietPart(const std::vector<ImuSample>& samples, const Result& result, std::size_t first, std::size_t last)
 {
     Stance stance;
-    double quietest = samples[first].gyr_radps.norm();
+    // The square root grows with its argument: the smallest |w| is the root of the smallest |w|^2.
+    double leastSquared = samples[first].gyr_radps.squaredNorm();
     for (std::size_t k = first; k <= last; ++k)
-        quietest = std::min(quietest, samples[k].gyr_radps.norm());
-    stance.quietFirst = last;
-    for (std::size_t k = first; k <= last; ++k) {
-        if (samples[k].gyr_radps.norm() <= quietest + kQuietMargin_radps) {
-            stance.quietFirst = std::min(stance.quietFirst, k);
-            stance.quietLast = k;
-        }
+        leastSquared = std::min(leastSquared, samples[k].gyr_radps.squaredNorm());
+    const double quietest = std::sqrt(leastSquared);
+    // The quiet part runs from the first quiet sample to the last: search from either end.
+    const auto quiet = [&](std::size_t k) { return samples[k].gyr_radps.norm() <= quietest + kQuietMargin_radps; };
+    std::size_t quietFirst = first;
+    while (quietFirst <= last && !quiet(quietFirst))
+        ++quietFirst;
+    std::size_t quietLast = last;
+    while (quietLast > quietFirst && !quiet(quietLast))
+        --quietLast;
+    if (quietFirst > last) {  // none (a NaN rate): as the running search left it
+        quietFirst = last;
+        quietLast = 0;
     }
+    stance.quietFirst = quietFirst;
+    stance.quietLast = quietLast;
     for (std::size_t k = stance.quietFirst; k <= stance.quietLast; ++k)
         stance.position_m += result.position_m[k];
     stance.position_m /= static_cast<double>(stance.quietLast - stance.quietFirst + 1);
@@ -315,14 +466,15 @@ std::vector<GaitEvent> eventsInOrder(const std::vector<Swing>& swings, const std
     return events;
 }
 
-std::vector<std::uint8_t> stanceFlag(const std::vector<Swing>& swings, std::size_t sampleCount)
+/// Clears the flag over each swing's samples.
+void clearSwings(const std::vector<Swing>& swings, std::vector<std::uint8_t>& stance)
 {
-    std::vector<std::uint8_t> stance(sampleCount, 1);
-    for (const Swing& swing : swings)
-        for (std::size_t k = nearestSample(swing.toeOff, sampleCount);
-             k <= nearestSample(swing.heelStrike, sampleCount); ++k)
-            stance[k] = 0;
-    return stance;
+    for (const Swing& swing : swings) {
+        const std::size_t first = nearestSample(swing.toeOff, stance.size());
+        const std::size_t last = nearestSample(swing.heelStrike, stance.size());
+        if (first <= last)
+            std::fill(stance.begin() + static_cast<long>(first), stance.begin() + static_cast<long>(last) + 1, 0);
+    }
 }
 
 GaitSummary summarizeGait(const std::vector<GaitStride>& strides)
@@ -375,20 +527,15 @@ void detectGaitEvents(const Recording& recording, Result& result)
     result.gaitStance.assign(result.time_s.size(), 1);
     if (samples.size() < 3 || result.time_s.size() != samples.size() || result.velocity_mps.size() != samples.size())
         return;
-    std::vector<Eigen::Vector3d> rates;
-    rates.reserve(samples.size());
-    for (const ImuSample& sample : samples)
-        rates.push_back(sample.gyr_radps);
-    const std::vector<Eigen::Vector3d> smoothed = smoothedRates(samples, result.time_s);
-    const Eigen::Vector3d axis = sagittalAxis(samples, smoothed, result);
-    const std::vector<Swing> swings = findSwings(projected(rates, axis), projected(smoothed, axis), result);
+    const SagittalRates rates = sagittalRates(samples, smoothedRates(samples, result.time_s), result);
+    const std::vector<Swing> swings = findSwings(rates.raw, rates.smoothed, result);
     if (swings.empty())
         return;
     const std::vector<Stance> stances = stancesAround(swings, samples, result);
     for (std::size_t i = 0; i + 1 < swings.size(); ++i)
         result.gaitStrides.push_back(makeStride(swings, stances, i, result));
     result.gaitEvents = eventsInOrder(swings, stances, result.time_s);
-    result.gaitStance = stanceFlag(swings, samples.size());
+    clearSwings(swings, result.gaitStance);
     result.gait = summarizeGait(result.gaitStrides);
 }
 

@@ -200,19 +200,19 @@ void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSamp
 
 bool appendStep(Result& result, std::size_t first, std::size_t last)
 {
+    Step step = makeStep(result, first, last);
     bool merged = false;
     if (!result.steps.empty()) {
         const Step& previous = result.steps.back();
-        const Step candidate = makeStep(result, first, last);
         if (result.time_s[first] - previous.stanceEnd_s <= kStanceMergeGap_s
-            && horizontalDistance(candidate.position_m, previous.position_m) <= kStanceMergeDistance_m) {
+            && horizontalDistance(step.position_m, previous.position_m) <= kStanceMergeDistance_m) {
             first = static_cast<std::size_t>(
                 std::lower_bound(result.time_s.begin(), result.time_s.end(), previous.stanceStart_s) - result.time_s.begin());
             result.steps.pop_back();
             merged = true;
+            step = makeStep(result, first, last);
         }
     }
-    Step step = makeStep(result, first, last);
     if (!result.steps.empty()) {
         const Step& previous = result.steps.back();
         step.strideLength_m = horizontalDistance(step.position_m, previous.position_m);
@@ -253,6 +253,14 @@ void fillStepsAndSummary(Result& result)
     summarize(result, stancePathLength(result.steps));
 }
 
+void postProcess(const Recording& recording, const Parameters& params, Result& result)
+{
+    fillStepsAndSummary(result);
+    detectGaitEvents(recording, result);
+    classifyMotion(recording, params, result);
+    result.warnings = checkPlausibility(result, params);
+}
+
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress,
                            Concurrency concurrency)
 {
@@ -270,10 +278,7 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
         result.cancelled = true;
         return output;
     }
-    fillStepsAndSummary(result);
-    detectGaitEvents(recording, result);
-    classifyMotion(recording, params, result);
-    result.warnings = checkPlausibility(result, params);
+    postProcess(recording, params, result);
     result.summary.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (progress)
         progress(1.0);

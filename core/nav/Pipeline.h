@@ -49,6 +49,11 @@ void recordState(Result& result, double time_s, const NavState& state);
 /// figures that depend on them. Exposed for tests; runPipeline calls it.
 void fillStepsAndSummary(Result& result);
 
+/// What runPipeline derives from the filter's (or smoother's) states and stance flags in result:
+/// the steps and summary, the gait events, the motion classes and the plausibility warnings.
+/// Exposed for the benchmark of these steps alone.
+void postProcess(const Recording& recording, const Parameters& params, Result& result);
+
 // The pieces below are shared with StreamingEstimator, which runs them one sample at a time and so
 // gives the same numbers as runPipeline.
 

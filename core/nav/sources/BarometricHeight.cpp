@@ -4,6 +4,7 @@
 #include "nav/MotionClasses.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -24,25 +25,61 @@ constexpr double kStancePart_s = 0.5;
 /// The measurement noise of a stance that spans a ride, as a fraction of r_baro_m.
 constexpr double kRideResetNoiseFactor = 0.01;
 
-double median(std::vector<double> values)
+/// The samples [first, last) that sample i is compared with: itself and kSpikeHalfWindow
+/// neighbours on each side.
+struct Neighbourhood {
+    std::size_t first = 0, last = 0;
+};
+
+Neighbourhood neighbourhoodOf(const std::vector<double>& pressures_pa, std::size_t i)
 {
-    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-    std::nth_element(values.begin(), middle, values.end());
+    return {i >= kSpikeHalfWindow ? i - kSpikeHalfWindow : 0, std::min(pressures_pa.size(), i + kSpikeHalfWindow + 1)};
+}
+
+/// The median of the neighbourhood: its (size / 2)-th smallest value, counted from 0.
+double neighbourMedian(const std::vector<double>& pressures_pa, std::size_t i)
+{
+    const Neighbourhood around = neighbourhoodOf(pressures_pa, i);
+    std::array<double, 2 * kSpikeHalfWindow + 1> values{};
+    const auto end = std::copy(pressures_pa.begin() + static_cast<std::ptrdiff_t>(around.first),
+                               pressures_pa.begin() + static_cast<std::ptrdiff_t>(around.last), values.begin());
+    const auto middle = values.begin() + (end - values.begin()) / 2;
+    std::nth_element(values.begin(), middle, end);
     return *middle;
 }
 
-double neighbourMedian(const std::vector<double>& pressures_pa, std::size_t i)
+/// True if some pressure is NaN or infinite: a neighbourhood with a NaN has no defined order, and
+/// an infinite difference of infinities is NaN.
+bool hasNonFinite(const std::vector<double>& pressures_pa)
 {
-    const std::size_t first = i >= kSpikeHalfWindow ? i - kSpikeHalfWindow : 0;
-    const std::size_t last = std::min(pressures_pa.size(), i + kSpikeHalfWindow + 1);
-    return median(std::vector<double>(pressures_pa.begin() + static_cast<std::ptrdiff_t>(first),
-                                      pressures_pa.begin() + static_cast<std::ptrdiff_t>(last)));
+    return !std::all_of(pressures_pa.begin(), pressures_pa.end(), [](double p) { return std::isfinite(p); });
 }
 
-bool isSpike(const std::vector<double>& pressures_pa, std::size_t i, double& replacement_pa)
+/// Whether sample i lies more than kSpikeThreshold_pa from its neighbourhood's median m, that is
+/// |p_i - m| > threshold, without sorting for m. p_i - w does not grow as w does, so the
+/// neighbours with p_i - w > threshold are the smallest ones, and m (the middle-th smallest) is
+/// among them when there are more than `middle`; likewise those with p_i - w < -threshold are the
+/// largest, and hold m when there are at least size - middle. Once more than `middle` neighbours
+/// are neither, neither count can get there. Each difference is the one the median's test
+/// computes, rounded alike: the same answer to the last bit. With a NaN or an infinity among the
+/// pressures (`nonFinite`) the median is taken as before.
+bool isSpike(const std::vector<double>& pressures_pa, std::size_t i, bool nonFinite)
 {
-    replacement_pa = neighbourMedian(pressures_pa, i);
-    return std::abs(pressures_pa[i] - replacement_pa) > kSpikeThreshold_pa;
+    if (nonFinite)
+        return std::abs(pressures_pa[i] - neighbourMedian(pressures_pa, i)) > kSpikeThreshold_pa;
+    const Neighbourhood around = neighbourhoodOf(pressures_pa, i);
+    const std::size_t size = around.last - around.first, middle = size / 2;
+    std::size_t farBelow = 0, farAbove = 0, near = 0;
+    for (std::size_t j = around.first; j < around.last; ++j) {
+        const double difference = pressures_pa[i] - pressures_pa[j];
+        if (difference > kSpikeThreshold_pa)
+            ++farBelow;
+        else if (difference < -kSpikeThreshold_pa)
+            ++farAbove;
+        else if (++near > middle)
+            return false;
+    }
+    return farBelow > middle || farAbove >= size - middle;
 }
 
 /// Mean of the samples whose time lies in [from_s, to_s].
@@ -65,11 +102,10 @@ double meanBetween(const std::vector<double>& times_s, const std::vector<double>
 std::vector<double> despikedPressure(const std::vector<double>& pressures_pa)
 {
     std::vector<double> clean = pressures_pa;
-    for (std::size_t i = 0; i < pressures_pa.size(); ++i) {
-        double replacement_pa = 0.0;
-        if (isSpike(pressures_pa, i, replacement_pa))
-            clean[i] = replacement_pa;
-    }
+    const bool nonFinite = hasNonFinite(pressures_pa);
+    for (std::size_t i = 0; i < pressures_pa.size(); ++i)
+        if (isSpike(pressures_pa, i, nonFinite))
+            clean[i] = neighbourMedian(pressures_pa, i);
     return clean;
 }
 
@@ -81,9 +117,11 @@ StancePressure readStancePressure(const std::vector<double>& times_s, const std:
         return result;
     }
     std::vector<double> kept_s, kept_pa;
+    kept_s.reserve(times_s.size());
+    kept_pa.reserve(pressures_pa.size());
+    const bool nonFinite = hasNonFinite(pressures_pa);
     for (std::size_t i = 0; i < pressures_pa.size(); ++i) {
-        double replacement_pa = 0.0;
-        if (!isSpike(pressures_pa, i, replacement_pa)) {
+        if (!isSpike(pressures_pa, i, nonFinite)) {
             kept_s.push_back(times_s[i]);
             kept_pa.push_back(pressures_pa[i]);
         }
