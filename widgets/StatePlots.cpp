@@ -201,8 +201,9 @@ void StatePlots::createRow(std::size_t r)
         QColor fill = pen.color();
         fill.setAlpha(45);
         // Bands first, so the curves are drawn over them.
-        component.lower = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
-        component.upper = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
+        // Each edge one point a pixel column: the band's fill polygon stays small however long the walk.
+        component.lower = new DecimatedGraph(timeAxis(row.rect), valueAxis(row.rect), DecimatedGraph::Reduction::Lowest);
+        component.upper = new DecimatedGraph(timeAxis(row.rect), valueAxis(row.rect), DecimatedGraph::Reduction::Highest);
         for (QCPGraph* edge : {component.lower, component.upper}) {
             edge->setPen(Qt::NoPen);
             edge->setSelectable(QCP::stNone);
