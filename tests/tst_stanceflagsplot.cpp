@@ -14,6 +14,7 @@
 #include <QImage>
 #include <QPainter>
 #include <QSignalSpy>
+#include <QTabWidget>
 #include <QtTest>
 #include <qcustomplot.h>
 
@@ -166,6 +167,39 @@ private slots:
         plot.setResult(walk.result);
         plot.setRecording(walk.recording);  // a new recording drops the old result's lanes
         QVERIFY(plot.laneGraph(Lane::Stance)->data()->isEmpty());
+    }
+
+    void aPlotOnATabBehindFillsItsCurvesWhenShown()
+    {
+        // Behind another tab a result brings its warning lane at once, and its lanes and
+        // statistic (every sample) when the tab comes to the front.
+        const Walk walk = simulatedWalk();
+        QTabWidget tabs;
+        tabs.addTab(new QWidget, QStringLiteral("in front"));
+        auto* plot = new StanceFlagsPlot;
+        tabs.addTab(plot, QStringLiteral("detector"));
+        plot->setRecording(walk.recording);
+        tabs.resize(900, 700);
+        tabs.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&tabs));
+        // Read past the accessors, which fill the curves for whoever asks.
+        const auto* customPlot = plot->findChild<QCustomPlot*>();
+        QVERIFY(customPlot);
+        const auto filledGraphs = [customPlot] {
+            int filled = 0;
+            for (int i = 0; i < customPlot->graphCount(); ++i)
+                filled += customPlot->graph(i)->dataCount() > 0;
+            return filled;
+        };
+        const int withoutResult = filledGraphs();
+        plot->setResult(resultWithWarnings());
+        QCoreApplication::processEvents();
+        QCOMPARE(filledGraphs(), withoutResult);
+        QVERIFY(plot->warningLane()->layout() != nullptr);  // the lane is there already
+
+        tabs.setCurrentWidget(plot);
+        QVERIFY(filledGraphs() > withoutResult + 3);  // the lanes and the statistic
+        QCOMPARE(plot->statisticGraph()->dataCount(), 2000);
     }
 
     void fillsTheLanesWhereTheFlagIsSet()

@@ -10,6 +10,7 @@
 #include <qcustomplot.h>
 
 #include <cmath>
+#include <map>
 #include <memory>
 
 using namespace footpath;
@@ -136,6 +137,40 @@ private slots:
             QVERIFY2(std::isnan(drawn[i - 1].value) || std::isnan(drawn[i].value)
                          || std::abs(drawn[i].value - drawn[i - 1].value) < 180.0,
                      qPrintable(QString::number(drawn[i].key)));
+    }
+
+    void bandEdgesAreOnePointAPixelColumnAroundEverySample()
+    {
+        // A band over more samples than pixel columns is drawn as its envelope: in each column the
+        // highest upper and the lowest lower edge, so its fill polygon stays small and still
+        // covers every sample's ±1σ.
+        auto result = knownResult(true);
+        for (std::size_t k = 0; k < kSamples; ++k)
+            result->velocity_mps[k].x() = std::sin(0.7 * static_cast<double>(k));  // faster than a column
+        StatePlots plots;
+        plots.setResult(result);
+        plots.resize(200, 500);
+        (void)plots.grab();
+        for (const bool upper : {true, false}) {
+            const auto* edge = dynamic_cast<const DecimatedGraph*>(upper ? plots.bandUpper(Row::Velocity, 0)
+                                                                         : plots.bandLower(Row::Velocity, 0));
+            QVERIFY(edge);
+            const QCPAxis* time = edge->keyAxis();
+            const QVector<QCPGraphData> drawn = edge->drawnData();
+            QVERIFY(drawn.size() > 10);
+            QVERIFY(drawn.size() <= plots.axisRect(Row::Velocity)->width() + 1);
+            std::map<double, double> columnValue;
+            for (const QCPGraphData& point : drawn) {
+                const double column = std::floor(time->coordToPixel(point.key));
+                QVERIFY2(!columnValue.count(column), "two points in one pixel column");
+                columnValue[column] = point.value;
+            }
+            for (const QCPGraphData& point : *edge->data()) {
+                const auto column = columnValue.find(std::floor(time->coordToPixel(point.key)));
+                QVERIFY(column != columnValue.end());
+                QVERIFY(upper ? point.value <= column->second : point.value >= column->second);
+            }
+        }
     }
 
     void constantBiasesAreNotPresentedAsEstimates()

@@ -471,6 +471,35 @@ private slots:
         QVERIFY2(view.plot()->xAxis->range().size() > 1.5 * zoomed.size(), "a double-click should fit and follow again");
     }
 
+    void ghostOfManyLapsIsOneEvenGrey()
+    {
+        // The ghost is drawn as quick line segments in an opaque grey: where its laps (and its
+        // segments' ends) overlap it stays the same faint grey a translucent pen left on white.
+        TrajectoryView2D view;
+        view.resize(600, 500);
+        view.setResult(std::make_shared<const Result>(rectangleResult()));
+        std::vector<Eigen::Vector3d> laps;
+        for (int lap = 0; lap < 6; ++lap)
+            for (int k = 0; k <= 100; ++k) {
+                const double x = lap % 2 == 0 ? 0.1 * k : 10.0 - 0.1 * k;  // to and fro on one line
+                laps.emplace_back(x, 2.5, 0.0);
+            }
+        view.setGhostPath(laps);
+        QCOMPARE(view.ghostCurve()->pen().color().alpha(), 255);
+        const QImage image = view.grab().toImage();
+        const QCustomPlot* plot = view.plot();
+        const int y = static_cast<int>(std::lround(plot->yAxis->coordToPixel(2.5)));
+        int checked = 0;
+        for (double x = 1.0; x < 9.0; x += 0.5) {
+            const QColor colour = image.pixelColor(static_cast<int>(std::lround(plot->xAxis->coordToPixel(x))), y);
+            if (colour == Qt::white || colour.red() != colour.green() || colour.green() != colour.blue())
+                continue;  // the path or a marker crosses the ghost here
+            QVERIFY2(colour.red() >= 195, qPrintable(QString("x %1 m: grey %2").arg(x).arg(colour.red())));
+            ++checked;
+        }
+        QVERIFY(checked > 5);
+    }
+
     void thirtyMinutePathRedrawsWellUnderHalfASecond()
     {
         const Result walk = longWalk(30.0 * 60.0, 100.0);

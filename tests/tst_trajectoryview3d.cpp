@@ -6,6 +6,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QPainter>
+#include <QTabWidget>
 #include <QtTest>
 
 #include <algorithm>
@@ -384,6 +385,50 @@ private slots:
         painter.end();
         QCOMPARE(paintedPixels(page.copy(0, 0, 800, 400)), 0);
         QVERIFY(pathColouredPixels(page.copy(400, 400, 400, 400)) > 100);
+    }
+
+    void aHiddenViewBuildsItsSceneOnceWhenShown()
+    {
+        // The 3D view on a tab behind another: parameter changes hand it results, a ghost and a
+        // reference, and it builds nothing until it is brought to the front; then once, for the last.
+        QTabWidget tabs;
+        tabs.addTab(new QWidget, QStringLiteral("in front"));
+        auto* view = new TrajectoryView3D;
+        tabs.addTab(view, QStringLiteral("3D"));
+        tabs.resize(640, 480);
+        tabs.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&tabs));
+        const int builtBefore = view->sceneBuilds();
+        const Result walk = longWalk(6000, 100.0);
+        view->setResult(std::make_shared<const Result>(stairsResult()));
+        view->setGhostPath(stairsResult().position_m);
+        view->setResult(std::make_shared<const Result>(walk));
+        view->setReference(walk.position_m);
+        tabs.repaint();
+        QCoreApplication::processEvents();
+        QCOMPARE(view->sceneBuilds(), builtBefore);
+
+        tabs.setCurrentWidget(view);
+        QVERIFY(view->isVisible());
+        const QImage shown = view->grab().toImage();
+        QCOMPARE(view->sceneBuilds(), builtBefore + 1);
+        QVERIFY2(pathColouredPixels(shown) > 300, qPrintable(QString::number(pathColouredPixels(shown))));
+        // Fitted to the last path, as if it had been built on the spot.
+        const QRectF target(QPointF(0, 0), QSizeF(view->size()));
+        const QRectF bounds = projectedBounds(*view, walk.position_m, target);
+        QVERIFY(target.contains(bounds));
+        QVERIFY(bounds.width() > 0.4 * target.width() || bounds.height() > 0.4 * target.height());
+        TrajectoryView3D fresh;
+        fresh.resize(view->size());
+        fresh.setResult(std::make_shared<const Result>(walk));
+        fresh.setReference(walk.position_m);
+        fresh.setGhostPath(stairsResult().position_m);
+        QCOMPARE(differingPixels(rendered(*view, view->size()), rendered(fresh, view->size())), 0);
+
+        (void)view->grab();  // drawn again without a change: nothing is built
+        view->setTimeCursor(10.0);
+        (void)view->grab();
+        QCOMPARE(view->sceneBuilds(), builtBefore + 1);
     }
 
     void longPathRedrawsWellUnder100Milliseconds()

@@ -11,7 +11,14 @@ namespace footpath {
 /// with a line through the whole row; here it runs on each stretch between gaps, and the gaps stay.
 class DecimatedGraph : public QCPGraph {
 public:
-    DecimatedGraph(QCPAxis* keyAxis, QCPAxis* valueAxis);
+    /// What a pixel column holding several samples is drawn as.
+    enum class Reduction {
+        LowestAndHighest,  ///< a line: QCustomPlot's adaptive sampling
+        Highest,           ///< the upper edge of a band: one point per column, its highest sample
+        Lowest,            ///< the lower edge of a band
+    };
+
+    DecimatedGraph(QCPAxis* keyAxis, QCPAxis* valueAxis, Reduction reduction = Reduction::LowestAndHighest);
 
     /// The points a replot at the axes' current ranges draws (a NaN value is a gap); for tests.
     QVector<QCPGraphData> drawnData() const;
@@ -19,6 +26,16 @@ public:
 protected:
     void getOptimizedLineData(QVector<QCPGraphData>* lineData, const QCPGraphDataContainer::const_iterator& begin,
                               const QCPGraphDataContainer::const_iterator& end) const override;
+
+private:
+    /// One stretch without gaps, reduced as reduction_ says, appended to lineData.
+    void appendReduced(QVector<QCPGraphData>* lineData, const QCPGraphDataContainer::const_iterator& begin,
+                       const QCPGraphDataContainer::const_iterator& end) const;
+    /// The band edge of a stretch: per pixel column the sample with the highest (or lowest) value.
+    void appendEnvelope(QVector<QCPGraphData>* lineData, const QCPGraphDataContainer::const_iterator& begin,
+                        const QCPGraphDataContainer::const_iterator& end) const;
+
+    Reduction reduction_;
 };
 
 }  // namespace footpath

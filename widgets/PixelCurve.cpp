@@ -30,7 +30,20 @@ void PixelCurve::draw(QCPPainter* painter)
     applyDefaultAntialiasingHint(painter);
     painter->setPen(mPen);
     painter->setBrush(Qt::NoBrush);
-    drawCurveLine(painter, pixelSimplified(pixels, tolerance_px_));
+    const QVector<QPointF> kept = pixelSimplified(pixels, tolerance_px_);
+    // QPainter strokes a wide polyline as one outline, which for a path of many laps crossing
+    // itself takes tens of milliseconds; line segments are quick. An opaque solid pen draws the
+    // same pixels either way (a translucent one would darken where its segments overlap).
+    if (mPen.style() != Qt::SolidLine || mPen.color().alpha() != 255) {
+        drawCurveLine(painter, kept);
+        return;
+    }
+    QVector<QLineF> segments;
+    segments.reserve(kept.size());
+    for (qsizetype k = 1; k < kept.size(); ++k)
+        if (qIsFinite(kept[k - 1].x()) && qIsFinite(kept[k - 1].y()) && qIsFinite(kept[k].x()) && qIsFinite(kept[k].y()))
+            segments.append(QLineF(kept[k - 1], kept[k]));
+    painter->drawLines(segments);
 }
 
 }  // namespace footpath

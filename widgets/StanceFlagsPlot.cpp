@@ -471,8 +471,7 @@ void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
     plotThresholds();
     rescaleInputAxes();
     plotReferenceStance(recording.get());
-    plotLanes();
-    plotStatistic();
+    showResultLanes();
     arrangeRows();
     showAll();
     replot_->request();
@@ -481,10 +480,37 @@ void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
 void StanceFlagsPlot::setResult(std::shared_ptr<const Result> result)
 {
     result_ = std::move(result);
-    plotLanes();
-    plotStatistic();
+    showResultLanes();
     arrangeRows();  // the warning lane comes or goes
     replot_->request();
+}
+
+void StanceFlagsPlot::showResultLanes()
+{
+    // The rows that come and go with the result now; the curves over all samples when seen.
+    warnings_->setWarnings(result_ ? result_->warnings : std::vector<PlausibilityWarning>());
+    motion_->setResult(result_.get());
+    curvesStale_ = true;
+    if (isVisible())
+        ensureCurvesPlotted();
+}
+
+void StanceFlagsPlot::ensureCurvesPlotted() const
+{
+    if (!curvesStale_)
+        return;
+    // The lanes and the statistic are a cache of result_: filling them while on a tab behind
+    // would cost every parameter change milliseconds for nobody.
+    auto* self = const_cast<StanceFlagsPlot*>(this);
+    self->curvesStale_ = false;
+    self->plotLanes();
+    self->plotStatistic();
+}
+
+void StanceFlagsPlot::showEvent(QShowEvent* event)
+{
+    ensureCurvesPlotted();
+    QWidget::showEvent(event);
 }
 
 void StanceFlagsPlot::setParameters(const Parameters& params)
@@ -529,8 +555,6 @@ void StanceFlagsPlot::plotLanes()
     }
     statisticStance_->setSpans(result_ ? flaggedSpans(times, result_->flags.stance) : std::vector<QCPRange>());
     stanceLegendEntry_->setVisible(!statisticStance_->isEmpty());
-    warnings_->setWarnings(result_ ? result_->warnings : std::vector<PlausibilityWarning>());
-    motion_->setResult(result_.get());
 }
 
 void StanceFlagsPlot::plotStatistic()
@@ -681,21 +705,41 @@ void StanceFlagsPlot::arrangeRows()
     legend_->setEntries(entries);
 }
 
-bool StanceFlagsPlot::isLaneShown(Lane lane) const { return lanes_[slot(lane)]->visible(); }
+bool StanceFlagsPlot::isLaneShown(Lane lane) const
+{
+    ensureCurvesPlotted();
+    return lanes_[slot(lane)]->visible();
+}
 bool StanceFlagsPlot::isInputRowShown(Input input) const { return inputRect(input)->layout() != nullptr; }
-QCPLegend* StanceFlagsPlot::legend() const { return legend_->legend(); }
+QCPLegend* StanceFlagsPlot::legend() const
+{
+    ensureCurvesPlotted();
+    return legend_->legend();
+}
 QCPAxisRect* StanceFlagsPlot::lanesRect() const { return rows_[kLanesRow].rect; }
-QCPAxisRect* StanceFlagsPlot::statisticRect() const { return rows_[kStatisticRow].rect; }
+QCPAxisRect* StanceFlagsPlot::statisticRect() const
+{
+    ensureCurvesPlotted();
+    return rows_[kStatisticRow].rect;
+}
 QCPAxisRect* StanceFlagsPlot::warningLane() const { return rows_[kWarningRow].rect; }
 QCPAxisRect* StanceFlagsPlot::motionLane() const { return rows_[kMotionRow].rect; }
 QCPAxisRect* StanceFlagsPlot::referenceLane() const { return rows_[kReferenceRow].rect; }
 bool StanceFlagsPlot::isReferenceStance(double time_s) const { return referenceFill_->contains(time_s); }
 QCPAxisRect* StanceFlagsPlot::methodNotesLane() const { return rows_[kNotesRow].rect; }
 QCPAxisRect* StanceFlagsPlot::inputRect(Input input) const { return rows_[rowOf(input)].rect; }
-QCPGraph* StanceFlagsPlot::laneGraph(Lane lane) const { return lanes_[slot(lane)]; }
+QCPGraph* StanceFlagsPlot::laneGraph(Lane lane) const
+{
+    ensureCurvesPlotted();
+    return lanes_[slot(lane)];
+}
 QCPGraph* StanceFlagsPlot::inputGraph(Input input) const { return inputs_[slot(input)]; }
 QCPGraph* StanceFlagsPlot::thresholdGraph(Threshold threshold) const { return thresholds_[slot(threshold)]; }
-bool StanceFlagsPlot::isStatisticStanceShaded(double time_s) const { return statisticStance_->contains(time_s); }
+bool StanceFlagsPlot::isStatisticStanceShaded(double time_s) const
+{
+    ensureCurvesPlotted();
+    return statisticStance_->contains(time_s);
+}
 QCPRange StanceFlagsPlot::timeRange() const { return timeRows_->range(); }
 
 void StanceFlagsPlot::setTimeCursor(double time_s)
@@ -732,6 +776,7 @@ void StanceFlagsPlot::keyPressEvent(QKeyEvent* event)
 
 void StanceFlagsPlot::renderTo(QPainter& painter, const QRect& target)
 {
+    ensureCurvesPlotted();
     renderPlotTo(plot_, painter, target);
 }
 

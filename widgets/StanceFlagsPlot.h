@@ -88,7 +88,11 @@ public:
     static double laneLevel(Lane lane, bool flag);
 
     /// For the PDF report (QCustomPlot::toPainter, savePdf) and for tests.
-    QCustomPlot* plot() const { return plot_; }
+    QCustomPlot* plot() const
+    {
+        ensureCurvesPlotted();  // for a report or a test that replots it while hidden
+        return plot_;
+    }
     /// The legend above the rows: the threshold(s) and the stance shading.
     QCPLegend* legend() const;
     QCPAxisRect* lanesRect() const;
@@ -100,9 +104,17 @@ public:
     /// The lane of labelled warning bars above the rows; in the layout while there are warnings.
     QCPAxisRect* warningLane() const;
     /// 10^logStatistic per sample (the log axis shows the logarithm).
-    QCPGraph* statisticGraph() const { return statistic_; }
+    QCPGraph* statisticGraph() const
+    {
+        ensureCurvesPlotted();
+        return statistic_;
+    }
     /// 10^logThreshold where it changes, as a step curve.
-    QCPGraph* statisticThresholdGraph() const { return statisticThreshold_; }
+    QCPGraph* statisticThresholdGraph() const
+    {
+        ensureCurvesPlotted();
+        return statisticThreshold_;
+    }
     bool isStatisticStanceShaded(double time_s) const;
     const WarningOverlay& warningOverlay() const { return *warnings_; }
     /// The steps' motion classes (seed 004) under the detector lanes; in the layout with a result.
@@ -129,6 +141,7 @@ signals:
 
 protected:
     void keyPressEvent(QKeyEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     /// warnings, method notes, lanes, reference stance, motion, statistic, one per input
@@ -147,6 +160,9 @@ private:
     void createInputRows();
     void wireInteractions();
     bool usesPaperDetector() const;
+    /// The warnings and motion lanes of result_ now, its lanes and statistic when seen.
+    void showResultLanes();
+    void ensureCurvesPlotted() const;
     void plotLanes();
     void plotStatistic();
     void rescaleStatisticAxis();
@@ -188,6 +204,7 @@ private:
     std::vector<double> times_s_;  ///< the recording's, kept to recompute the std on a new window
     std::vector<double> accNorm_;
     bool inputsVisible_ = false;
+    bool curvesStale_ = false;  ///< the lanes and the statistic do not show result_ yet
     double timeCursor_s_ = 0.0;
     bool cursorPlaced_ = false;  ///< the cursor stays hidden until someone places it
     LinkedTimeRows* timeRows_ = nullptr;  ///< made with the rows

@@ -72,21 +72,39 @@ std::size_t slot(Row row) { return static_cast<std::size_t>(row); }
 QCPAxis* timeAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atBottom); }
 QCPAxis* valueAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atLeft); }
 
-/// The row's component at sample k in the unit its axis shows; NaN where the result has no such sample.
-double stateValue(const Result& result, Row row, std::size_t k, int component)
-{
-    const auto pick = [k, component](const std::vector<Eigen::Vector3d>& series) {
-        return k < series.size() ? series[k][component] : std::numeric_limits<double>::quiet_NaN();
-    };
-    switch (row) {
-    case Row::Attitude: return pick(result.rollPitchYaw_rad) * kDegreesPerRadian;
-    case Row::Velocity: return pick(result.velocity_mps);
-    case Row::Height: return k < result.position_m.size() ? result.position_m[k].z() : std::nan("");
-    case Row::GyroBias: return pick(result.gyroBias_radps);
-    case Row::AccBias: return pick(result.accBias_mps2);
+/// One component of a row's state, read sample by sample in the unit its axis shows; the series
+/// is picked once, not at every sample.
+class StateSeries {
+public:
+    StateSeries(const Result& result, Row row, int component)
+        : series_(&seriesOf(result, row)), index_(row == Row::Height ? 2 : component),
+          scale_(row == Row::Attitude ? kDegreesPerRadian : 1.0)
+    {
     }
-    return std::nan("");
-}
+
+    /// NaN where the result has no such sample.
+    double operator()(std::size_t k) const
+    {
+        return k < series_->size() ? (*series_)[k][index_] * scale_ : std::numeric_limits<double>::quiet_NaN();
+    }
+
+private:
+    static const std::vector<Eigen::Vector3d>& seriesOf(const Result& result, Row row)
+    {
+        switch (row) {
+        case Row::Attitude: return result.rollPitchYaw_rad;
+        case Row::Velocity: return result.velocity_mps;
+        case Row::Height: return result.position_m;  // its z
+        case Row::GyroBias: return result.gyroBias_radps;
+        case Row::AccBias: break;
+        }
+        return result.accBias_mps2;
+    }
+
+    const std::vector<Eigen::Vector3d>* series_;
+    int index_;
+    double scale_;
+};
 
 /// σ of the component at sample k, in the row's unit. The attitude error is about the navigation
 /// axes, which for a foot's small roll and pitch is roll, pitch and yaw closely enough for a band.
@@ -129,10 +147,12 @@ double nearCentre_deg(double angle, double centre)
 bool isConstant(const Result& result, Row row)
 {
     const std::size_t n = result.time_s.size();
-    for (std::size_t k = 1; k < n; ++k)
-        for (int c = 0; c < kRowInfos[slot(row)].components; ++c)
-            if (stateValue(result, row, k, c) != stateValue(result, row, 0, c))
+    for (int c = 0; c < kRowInfos[slot(row)].components; ++c) {
+        const StateSeries value(result, row, c);
+        for (std::size_t k = 1; k < n; ++k)
+            if (value(k) != value(0))
                 return false;
+    }
     return true;
 }
 
@@ -201,8 +221,9 @@ void StatePlots::createRow(std::size_t r)
         QColor fill = pen.color();
         fill.setAlpha(45);
         // Bands first, so the curves are drawn over them.
-        component.lower = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
-        component.upper = plot_->addGraph(timeAxis(row.rect), valueAxis(row.rect));
+        // Each edge one point a pixel column: the band's fill polygon stays small however long the walk.
+        component.lower = new DecimatedGraph(timeAxis(row.rect), valueAxis(row.rect), DecimatedGraph::Reduction::Lowest);
+        component.upper = new DecimatedGraph(timeAxis(row.rect), valueAxis(row.rect), DecimatedGraph::Reduction::Highest);
         for (QCPGraph* edge : {component.lower, component.upper}) {
             edge->setPen(Qt::NoPen);
             edge->setSelectable(QCP::stNone);
@@ -289,18 +310,22 @@ void StatePlots::plotRow(std::size_t r)
         }
         const bool angle = which == Row::Attitude && n > 0;
         const double centre = angle ? circularMean_deg(*result_, c) : 0.0;
+        const StateSeries state(*result_, which, c);
+        std::size_t nextBandSample = 0;  // every stride-th sample and the last
         for (std::size_t k = 0; k < n; ++k) {
             if (constantBias && k != 0 && k + 1 != n)
                 continue;  // a flat line (the row is collapsed): its two ends draw the same
-            const double raw = stateValue(*result_, which, k, c);
+            const double raw = state(k);
             const double value = angle && std::abs(raw - centre) > 180.0 ? nearCentre_deg(raw, centre) : raw;
             const double time_s = result_->time_s[k];
             if (!curve.isEmpty() && wraps(which, curve.back().value, value)) {
                 curve.append(QCPGraphData(0.5 * (curve.back().key + time_s), gap));  // QCustomPlot leaves a gap at NaN
             }
             curve.append(QCPGraphData(time_s, value));
-            if (!bands || (k % stride != 0 && k + 1 != n))
+            if (!bands || (k != nextBandSample && k + 1 != n))
                 continue;
+            if (k == nextBandSample)
+                nextBandSample += stride;
             // A σ that is not finite (a covariance that overflowed) leaves a gap in the band
             // rather than a band to the end of the axis that rescales the whole row.
             const double computed = stateSigma(*result_, which, k, c);

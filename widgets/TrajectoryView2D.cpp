@@ -532,7 +532,9 @@ void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& position
         ghost_ = ghost;
         ghost_->setLayer(QStringLiteral("ghost"));
         ghost_->setName(tr("Before the last change"));
-        ghost_->setPen(QPen(QColor(110, 110, 110, 90), 2.5));
+        // The faint grey a translucent (110, 110, 110, 90) pen leaves on the white plot, opaque:
+        // its many short segments then draw quickly without darkening where they overlap.
+        ghost_->setPen(QPen(QColor(204, 204, 204), 2.5));
     }
     QVector<QCPCurveData> points;  // handed over whole: the curve shares it instead of copying
     points.reserve(static_cast<qsizetype>(positions_m.size()));

@@ -234,11 +234,7 @@ void TrajectoryView3D::setResult(std::shared_ptr<const Result> result)
 void TrajectoryView3D::followResult(std::shared_ptr<const Result> result)
 {
     result_ = std::move(result);
-    rebuildScene();
-    if (cameraMovedByUser_)
-        update();
-    else
-        resetView();
+    sceneChanged(!cameraMovedByUser_);
 }
 
 void TrajectoryView3D::clear()
@@ -246,16 +242,47 @@ void TrajectoryView3D::clear()
     result_.reset();
     reference_m_.clear();
     ghost_m_.clear();
-    drawnGhostIndices_.clear();
-    rebuildScene();
-    update();
+    ghostStale_ = true;
+    sceneChanged(false);
 }
 
 void TrajectoryView3D::setGhostPath(const std::vector<Eigen::Vector3d>& positions_m)
 {
     ghost_m_ = positions_m;
-    drawnGhostIndices_ = decimatedIndices(ghost_m_.size(), {});
+    ghostStale_ = true;
     update();
+}
+
+void TrajectoryView3D::sceneChanged(bool refit)
+{
+    // Built when next drawn or asked about, not here: a view on a tab behind would otherwise
+    // rebuild on every parameter change (and every live refresh) for nobody.
+    sceneStale_ = true;
+    if (refit) {
+        resetCamera();
+        fitPending_ = true;
+    }
+    update();
+}
+
+void TrajectoryView3D::ensureScene() const
+{
+    if (!sceneStale_ && !ghostStale_ && !fitPending_)
+        return;
+    // The scene is a cache of the paths: filling it from a const reader is not a visible change.
+    auto* self = const_cast<TrajectoryView3D*>(this);
+    if (sceneStale_) {
+        self->sceneStale_ = false;
+        self->rebuildScene();
+    }
+    if (ghostStale_) {
+        self->ghostStale_ = false;
+        self->drawnGhostIndices_ = decimatedIndices(ghost_m_.size(), {});
+    }
+    if (fitPending_) {
+        self->fitPending_ = false;
+        self->fitCamera();
+    }
 }
 
 void TrajectoryView3D::drawGhost(QPainter& painter, const ViewTransform& view) const
@@ -270,8 +297,7 @@ void TrajectoryView3D::setReference(const std::vector<Eigen::Vector3d>& position
     if (positions_m.empty() && reference_m_.empty())
         return;  // still none: no need to rebuild the scene (a walk without reference, after each estimate)
     reference_m_ = positions_m;
-    rebuildScene();
-    resetView();
+    sceneChanged(true);
 }
 
 void TrajectoryView3D::setTimeCursor(double time_s)
@@ -309,6 +335,7 @@ void TrajectoryView3D::setViewAngles(double azimuth_deg, double elevation_deg)
 
 void TrajectoryView3D::rebuildScene()
 {
+    ++sceneBuilds_;
     const std::vector<std::uint8_t> noFlags;
     drawnPathIndices_ = decimatedIndices(positions().size(), result_ ? result_->flags.stance : noFlags);
     sampleMotion_ = result_ ? motionOfSamples(*result_) : std::vector<MotionClass>();
@@ -328,10 +355,22 @@ void TrajectoryView3D::rebuildScene()
 
 void TrajectoryView3D::resetView()
 {
+    resetCamera();
+    fitPending_ = true;
+    ensureScene();
+    update();
+}
+
+void TrajectoryView3D::resetCamera()
+{
     azimuth_deg_ = kDefaultAzimuth_deg;
     elevation_deg_ = kDefaultElevation_deg;
     zoom_ = 1.0;
     cameraMovedByUser_ = false;
+}
+
+void TrajectoryView3D::fitCamera()
+{
     // Fit what the default camera sees of the floor grid and the paths, whatever the target, and
     // centre that (not the scene's centre, which sits off-centre once the grid is drawn).
     const Grid grid = groundGrid();
@@ -354,7 +393,6 @@ void TrajectoryView3D::resetView()
     const QRectF seen = seenPoints.boundingRect();
     fitHalfExtent_m_ = QPointF(std::max(0.5 * seen.width(), kMinHalfExtent_m), std::max(0.5 * seen.height(), kMinHalfExtent_m));
     pan_m_ = -seen.center();
-    update();
 }
 
 TrajectoryView3D::ViewTransform TrajectoryView3D::viewTransform(const QRectF& target) const
@@ -426,6 +464,7 @@ TrajectoryView3D::Grid TrajectoryView3D::groundGrid() const
 
 QPointF TrajectoryView3D::project(const Eigen::Vector3d& position_m, const QRectF& target) const
 {
+    ensureScene();
     return viewTransform(target)(position_m);
 }
 
@@ -437,6 +476,7 @@ void TrajectoryView3D::paintEvent(QPaintEvent*)
 
 void TrajectoryView3D::render(QPainter& painter, const QRectF& target) const
 {
+    ensureScene();
     painter.save();
     painter.setClipRect(target);
     painter.fillRect(target, Qt::white);
@@ -665,6 +705,7 @@ TrajectoryView3D::LegendLayout TrajectoryView3D::legendLayout(
 
 QRectF TrajectoryView3D::legendRect(const QSizeF& size) const
 {
+    ensureScene();
     if (positions().empty() && reference_m_.empty())
         return {};
     return legendLayout(font(), QRectF(QPointF(0, 0), size), legendEntries()).box;
@@ -697,11 +738,7 @@ void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target) const
 void TrajectoryView3D::setOverlays(const std::vector<PathOverlay>& overlays)
 {
     overlays_ = overlays;
-    rebuildScene();
-    if (cameraMovedByUser_)
-        update();
-    else
-        resetView();
+    sceneChanged(!cameraMovedByUser_);
 }
 
 void TrajectoryView3D::extendSceneByOverlays()
@@ -781,6 +818,7 @@ void TrajectoryView3D::setMotionColouring(bool on)
 
 bool TrajectoryView3D::showsMotionColours() const
 {
+    ensureScene();  // the classes per sample
     return motionColouring_ && result_ && hasMotionClasses(*result_) && sampleMotion_.size() == positions().size();
 }
 
@@ -829,6 +867,7 @@ void TrajectoryView3D::mousePressEvent(QMouseEvent* event)
 
 void TrajectoryView3D::mouseMoveEvent(QMouseEvent* event)
 {
+    ensureScene();  // the pan is measured in the fitted scale
     const QPoint position = event->position().toPoint();
     const QPoint delta = position - lastMousePosition_;
     lastMousePosition_ = position;
@@ -849,6 +888,7 @@ void TrajectoryView3D::mouseDoubleClickEvent(QMouseEvent*)
 
 void TrajectoryView3D::wheelEvent(QWheelEvent* event)
 {
+    ensureScene();
     // Zoom about the pointer: the scene point under it stays under it.
     const QPointF fromCentre = event->position() - sceneArea(rect()).center();
     const QPointF underPointer_m = fromCentre / viewTransform(rect()).pixelsPerMetre - pan_m_;

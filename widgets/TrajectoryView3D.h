@@ -84,6 +84,9 @@ public:
     double zoom() const { return zoom_; }
     /// The default oblique camera, fitted to the whole path at the current height exaggeration.
     void resetView();
+    /// How often the scene (the thinned-out paths, their bounds, the motion classes) was built:
+    /// once per change that is drawn or asked about, none for changes while nobody looks (for tests).
+    int sceneBuilds() const { return sceneBuilds_; }
 
     using QWidget::render;
     /// Draws the current view (without the toolbar) into any painter; paintEvent uses it too.
@@ -108,7 +111,13 @@ private:
 
     QWidget* createToolbar();
     void layOutToolbar();
+    /// The paths changed: the scene is built again when next needed; refit also fits the camera then.
+    void sceneChanged(bool refit);
+    /// Builds the scene (and fits the camera) if a change is pending; every reader of it calls this.
+    void ensureScene() const;
     void rebuildScene();
+    void resetCamera();  ///< the default angles and zoom; fitCamera() then frames the scene
+    void fitCamera();
     ViewTransform viewTransform(const QRectF& target) const;
     /// Where the scene is fitted in a target: above the key when the key is drawn.
     QRectF sceneArea(const QRectF& target) const;
@@ -165,6 +174,10 @@ private:
 
     QPoint lastMousePosition_;
     bool cameraMovedByUser_ = false;  ///< since the last resetView(); followResult keeps the camera
+    bool sceneStale_ = false;  ///< the paths changed since the scene was built
+    bool ghostStale_ = false;
+    bool fitPending_ = false;  ///< the camera is to be fitted to the scene once built
+    int sceneBuilds_ = 0;
     QWidget* toolbar_;
     std::vector<QWidget*> toolbarWidgets_;  ///< in reading order; one row or two (layOutToolbar)
     QDoubleSpinBox* heightSpin_;

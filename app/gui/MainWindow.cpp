@@ -760,10 +760,15 @@ void MainWindow::showGhost()
 {
     const Run* before = history_->previous();
     const Run* now = history_->current();
-    const std::vector<Eigen::Vector3d> none;
-    const std::vector<Eigen::Vector3d>& ghost = before && before->result && now ? before->result->position_m : none;
-    trajectory2D_->setGhostPath(ghost);
-    trajectory3D_->setGhostPath(ghost);
+    // While a slider is dragged the run before the drag stays the ghost: its path is not handed
+    // over again on every re-estimate.
+    const std::shared_ptr<const Result> ghost = before && now ? before->result : nullptr;
+    if (ghost != ghost_) {
+        ghost_ = ghost;
+        const std::vector<Eigen::Vector3d> none;
+        trajectory2D_->setGhostPath(ghost ? ghost->position_m : none);
+        trajectory3D_->setGhostPath(ghost ? ghost->position_m : none);
+    }
     if (before && now)
         summary_->showChange(&before->figures, now->figures, now->change);
     else

@@ -166,6 +166,7 @@ private:
     RunHistory* history_ = nullptr;
     RunHistoryPanel* historyPanel_ = nullptr;
     OtherFootSession* otherFoot_ = nullptr;
+    std::shared_ptr<const Result> ghost_;  ///< whose path the trajectory views show as the ghost
 };
 
 }  // namespace footpath
