@@ -51,12 +51,12 @@ const Recording& realMinuteWalk()
 
 /// Argument 0: the defaults (adaptive SHOE detector, 9-state filter with ZUPT, RTS smoother);
 /// 1: Guo 2015 as printed (C1/C2/C3, 15 states, ZUPT+ZARU, filter only); 2: the defaults with the
-/// filter alone (no smoother); 3: the defaults on one thread (runPipeline's Concurrency).
+/// filter alone (no smoother).
 Parameters parametersFor(const benchmark::State& state)
 {
     if (state.range(0) == 1)
         return guo2015Parameters();
-    Parameters params;  // the defaults also for argument 3
+    Parameters params;
     if (state.range(0) == 2)
         params.estimator = static_cast<int>(EstimatorKind::Ekf);
     return params;
@@ -64,7 +64,7 @@ Parameters parametersFor(const benchmark::State& state)
 
 void setLabel(benchmark::State& state)
 {
-    static const char* const names[] = {"defaults", "paper", "filter alone", "defaults, one thread"};
+    static const char* const names[] = {"defaults", "paper", "filter alone"};
     state.SetLabel(names[state.range(0)]);
 }
 
@@ -77,21 +77,20 @@ void timeEstimates(benchmark::State& state, const Recording& recording, Estimate
         return;
     }
     const Parameters params = parametersFor(state);
-    const Concurrency concurrency = state.range(0) == 3 ? Concurrency::SingleThread : Concurrency::SecondThread;
     for (auto _ : state)
-        benchmark::DoNotOptimize(estimate(recording, params, concurrency));
+        benchmark::DoNotOptimize(estimate(recording, params));
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(recording.samples.size()));
     state.counters["samples"] = static_cast<double>(recording.samples.size());
     setLabel(state);
 }
 
 /// The last position, which the benchmark keeps the compiler from dropping.
-Eigen::Vector3d pipelineEstimate(const Recording& recording, const Parameters& params, Concurrency concurrency)
+Eigen::Vector3d pipelineEstimate(const Recording& recording, const Parameters& params)
 {
-    return runPipeline(recording, params, {}, concurrency).result.position_m.back();
+    return runPipeline(recording, params).result.position_m.back();
 }
 
-Eigen::Vector3d denseReferenceEstimate(const Recording& recording, const Parameters& params, Concurrency)
+Eigen::Vector3d denseReferenceEstimate(const Recording& recording, const Parameters& params)
 {
     return runDenseReference(recording, params).position_m.back();
 }
@@ -100,18 +99,14 @@ void BM_Pipeline(benchmark::State& state)
 {
     timeEstimates(state, thirtyMinuteWalk(), pipelineEstimate);
 }
-// The time is the wall clock's (what a user waits; runPipeline may use a second thread), the CPU
-// time that of the whole process (both threads).
-BENCHMARK(BM_Pipeline)->Unit(benchmark::kMillisecond)->MinTime(2.0)->Arg(0)->Arg(1)->Arg(2)->Arg(3)
-    ->UseRealTime()->MeasureProcessCPUTime();
+BENCHMARK(BM_Pipeline)->Unit(benchmark::kMillisecond)->MinTime(2.0)->Arg(0)->Arg(1)->Arg(2);
 
 /// The whole offline pipeline on real walking data.
 void BM_PipelineRealWalk(benchmark::State& state)
 {
     timeEstimates(state, realMinuteWalk(), pipelineEstimate);
 }
-BENCHMARK(BM_PipelineRealWalk)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(0)->Arg(1)->Arg(2)->Arg(3)
-    ->UseRealTime()->MeasureProcessCPUTime();
+BENCHMARK(BM_PipelineRealWalk)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(0)->Arg(1)->Arg(2);
 
 /// The same estimator written with dense N x N matrices (detector and alignment shared): the
 /// reference for the speed ratio, on the same data and settings as BM_PipelineRealWalk.
@@ -119,8 +114,7 @@ void BM_DenseReferenceRealWalk(benchmark::State& state)
 {
     timeEstimates(state, realMinuteWalk(), denseReferenceEstimate);
 }
-BENCHMARK(BM_DenseReferenceRealWalk)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(0)->Arg(1)->Arg(2)
-    ->UseRealTime()->MeasureProcessCPUTime();
+BENCHMARK(BM_DenseReferenceRealWalk)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(0)->Arg(1)->Arg(2);
 
 /// An ecg-xmu walk with a barometer (100 Hz, 2.5 minutes: stairs and an elevator), for the motion
 /// classes; empty when the shared recordings are not there.
