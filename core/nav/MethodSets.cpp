@@ -77,15 +77,14 @@ bool applyToken(const std::string& token, Parameters& params, bool& statesNamed)
     return true;
 }
 
-ComparisonRow evaluateSet(const Recording& recording, const MethodSet& set, const std::atomic<bool>* cancel,
-                          Concurrency concurrency)
+ComparisonRow evaluateSet(const Recording& recording, const MethodSet& set, const std::atomic<bool>* cancel)
 {
     ComparisonRow row;
     row.set = set;
     ProgressCallback progress;
     if (cancel)
         progress = [cancel](double) { return !cancel->load(); };
-    row.output = runPipeline(recording, set.params, progress, concurrency);
+    row.output = runPipeline(recording, set.params, progress);
     const Result& result = row.output.result;
     if (!row.output.error.empty() || result.cancelled || result.position_m.empty())
         return row;
@@ -217,12 +216,10 @@ std::vector<ComparisonRow> runComparison(const Recording& recording, const std::
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     const std::size_t workers =
         std::min<std::size_t>(sets.size(), threads > 0 ? static_cast<std::size_t>(threads) : cores);
-    // One thread a run when the runs already share out the cores.
-    const Concurrency concurrency = workers > 1 ? Concurrency::SingleThread : Concurrency::SecondThread;
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
         for (std::size_t i = next++; i < sets.size(); i = next++)
-            rows[i] = evaluateSet(recording, sets[i], cancel, concurrency);
+            rows[i] = evaluateSet(recording, sets[i], cancel);
     };
     std::vector<std::thread> pool;
     for (std::size_t w = 1; w < workers; ++w)

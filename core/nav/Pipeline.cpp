@@ -118,7 +118,7 @@ namespace {
 /// Runs the filter over every sample, then the smoother's backward pass when it is chosen; returns
 /// false if the callback cancelled.
 bool runFilter(const Recording& recording, const Parameters& params, const StanceFlags& flags,
-               const ProgressCallback& progress, Concurrency concurrency, Result& result)
+               const ProgressCallback& progress, Result& result)
 {
     const std::vector<ImuSample>& samples = recording.samples;
     const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
@@ -157,10 +157,9 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
         result.forwardSpeed_mps.push_back(static_cast<float>(velocity.norm()));
     result.rollPitchYaw_rad.resize(samples.size());
     result.errorStd.resize(samples.size());
-    const auto keepGoing = [&](double fraction) {
+    return smoother->smooth(result, [&](double fraction) {
         return !progress || progress(forwardShare + (1.0 - forwardShare) * fraction);
-    };
-    return smoother->smooth(result, keepGoing, concurrency);
+    });
 }
 
 double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
@@ -261,8 +260,7 @@ void postProcess(const Recording& recording, const Parameters& params, Result& r
     result.warnings = checkPlausibility(result, params);
 }
 
-PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress,
-                           Concurrency concurrency)
+PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress)
 {
     PipelineOutput output;
     output.error = checkInput(recording, params);
@@ -273,7 +271,7 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
     result.flags = detectStance(recording.samples, params);
     const bool completed = params.estimatorKind() == EstimatorKind::Feliz
                                ? runFelizIntegrator(recording, params, progress, result)
-                               : runFilter(recording, params, result.flags, progress, concurrency, result);
+                               : runFilter(recording, params, result.flags, progress, result);
     if (!completed) {
         result.cancelled = true;
         return output;

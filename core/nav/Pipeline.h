@@ -27,10 +27,9 @@ struct PipelineOutput {
 /// The whole Guo 2015 pipeline as a pure function: stance detection, initial alignment, strapdown
 /// mechanization with the EKF (ZUPT/ZARU as enabled), then the per-step table and summary.
 /// Re-entrant: nothing is shared between calls, so the GUI may start a new run while an old one
-/// is being cancelled. It may use a second thread (Concurrency).
+/// is being cancelled.
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
-                           const ProgressCallback& progress = {},
-                           Concurrency concurrency = Concurrency::SecondThread);
+                           const ProgressCallback& progress = {});
 
 /// Reserves room for n samples in result's per-sample vectors (time, state, attitude, biases).
 void reserveResult(Result& result, std::size_t n);

@@ -1,19 +1,14 @@
 #include "nav/RtsSmoother.h"
 
 #include "nav/Attitude.h"
-#include "nav/SerialWorker.h"
 
 #include <array>
-#include <optional>
 
 namespace footpath {
 
 namespace {
 
-/// Samples of the backward pass handed to the worker at a time: large enough that the hand-over
-/// costs nothing, small enough that the buffers (mu and L a sample) stay in the cache (9 states:
-/// 2 x 2048 x 336 bytes).
-constexpr std::size_t kStretch = 2048;
+constexpr std::size_t kProgressInterval = 8192;
 
 std::vector<int> activeStates(FilterStates states)
 {
@@ -50,8 +45,6 @@ struct Carried {
     static constexpr bool biases = N == 15;
     static constexpr int running = N;
     static constexpr int size = Position ? N : N - 3;  ///< M, the states mu and L have
-    using Adjoint = Eigen::Matrix<double, size, 1>;
-    using Information = Eigen::Matrix<double, size, size>;
     static constexpr int runningPos = biases ? 6 : 3;  ///< position's offset among the running states
     static constexpr int att = 0, gyroBias = biases ? 3 : -1;
     static constexpr int pos = Position ? runningPos : -1;
@@ -247,16 +240,15 @@ void RtsSmoother::writeSmoothed(Result& result, std::size_t k, const Eigen::Matr
     }
 }
 
-bool RtsSmoother::smooth(Result& result, const std::function<bool(double fraction)>& keepGoing,
-                         Concurrency concurrency) const
+bool RtsSmoother::smooth(Result& result, const std::function<bool(double fraction)>& keepGoing) const
 {
     if (samples_ == 0 || result.position_m.size() != samples_)
         return true;
     if (active_.size() == 15)
-        return positionObserved_ ? smoothBackward<Carried<15, true>>(result, keepGoing, concurrency)
-                                 : smoothBackward<Carried<15, false>>(result, keepGoing, concurrency);
-    return positionObserved_ ? smoothBackward<Carried<9, true>>(result, keepGoing, concurrency)
-                             : smoothBackward<Carried<9, false>>(result, keepGoing, concurrency);
+        return positionObserved_ ? smoothBackward<Carried<15, true>>(result, keepGoing)
+                                 : smoothBackward<Carried<15, false>>(result, keepGoing);
+    return positionObserved_ ? smoothBackward<Carried<9, true>>(result, keepGoing)
+                             : smoothBackward<Carried<9, false>>(result, keepGoing);
 }
 
 template <class C>
@@ -395,68 +387,32 @@ void RtsSmoother::updatesBackward(std::size_t k, Eigen::Matrix<double, C::size, 
 }
 
 template <class C>
-bool RtsSmoother::smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing,
-                                 Concurrency concurrency) const
-{
-    const std::size_t n = samples_;
-    // After the last sample nothing is measured: mu and L start at zero.
-    typename C::Adjoint adjoint = C::Adjoint::Zero();
-    typename C::Information information = C::Information::Zero();
-    // Stretches of kStretch samples, last first: the recursion fills one pair of buffers while the
-    // worker reads out the other (it waits for the worker before it reuses a pair).
-    const std::size_t stretch = std::min(n, kStretch);
-    std::vector<typename C::Adjoint> adjoints[2] = {std::vector<typename C::Adjoint>(stretch),
-                                                    std::vector<typename C::Adjoint>(stretch)};
-    std::vector<typename C::Information> informations[2] = {std::vector<typename C::Information>(stretch),
-                                                            std::vector<typename C::Information>(stretch)};
-    std::optional<SerialWorker> worker;
-    if (concurrency == Concurrency::SecondThread && n > stretch)
-        worker.emplace();
-    int pair = 0;
-    for (std::size_t end = n; end > 0; pair ^= 1) {
-        const std::size_t begin = end - std::min(end, stretch);
-        if (worker)
-            worker->waitUntilAtMost(1);  // the read-out of the stretch that used this pair is done
-        for (std::size_t k = end; k-- > begin;) {
-            if (k >= 2)  // the pass walks memory backwards, which the hardware prefetcher follows poorly
-                prefetch(record(k - 2), recordStride());
-            if (k + 1 < n)
-                transitionBackward<C>(adjoint, information, propagationInto(k + 1));
-            adjoints[pair][k - begin] = adjoint;
-            informations[pair][k - begin] = information;
-            updatesBackward<C>(k, adjoint, information);
-        }
-        const auto readOut = [this, &result, begin, end, &adjoints = adjoints[pair], &informations = informations[pair]] {
-            readOutSmoothed<C>(result, begin, end, adjoints, informations);
-        };
-        if (worker)
-            worker->post(readOut);
-        else
-            readOut();
-        end = begin;
-        if (keepGoing && !keepGoing(static_cast<double>(n - end) / static_cast<double>(n)))
-            return false;  // the worker's destructor waits for the stretch it is reading out
-    }
-    return true;
-}
-
-template <class C>
-void RtsSmoother::readOutSmoothed(Result& result, std::size_t begin, std::size_t end,
-                                  const std::vector<typename C::Adjoint>& adjoints,
-                                  const std::vector<typename C::Information>& informations) const
+bool RtsSmoother::smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing) const
 {
     constexpr int N = C::running, M = C::size;
+    const std::size_t n = samples_;
+    // After the last sample nothing is measured: mu and L start at zero.
+    Eigen::Matrix<double, M, 1> adjoint = Eigen::Matrix<double, M, 1>::Zero();
+    Eigen::Matrix<double, M, M> information = Eigen::Matrix<double, M, M>::Zero();
     Eigen::Matrix<double, M, N> carriedRows;  // P(k|k) in the carried states' rows
     Eigen::Matrix<double, N, 1> filteredVariance;
-    for (std::size_t k = begin; k < end; ++k) {
+    for (std::size_t k = n; k-- > 0;) {
+        if (k >= 2)  // the pass walks memory backwards, which the hardware prefetcher follows poorly
+            prefetch(record(k - 2), recordStride());
+        if (k + 1 < n)
+            transitionBackward<C>(adjoint, information, propagationInto(k + 1));
         filteredRows<C>(k, carriedRows, filteredVariance);
         // diag(P L P) as the columns of P's carried rows dotted with those of L times them.
-        const Eigen::Matrix<double, M, N> informationTimesRows = informations[k - begin].lazyProduct(carriedRows);
+        const Eigen::Matrix<double, M, N> informationTimesRows = information.lazyProduct(carriedRows);
         Eigen::Matrix<double, N, 1> variance;
         for (int i = 0; i < N; ++i)
             variance(i) = filteredVariance(i) - carriedRows.col(i).dot(informationTimesRows.col(i));
-        writeSmoothed<N>(result, k, carriedRows.transpose().lazyProduct(adjoints[k - begin]), variance);
+        writeSmoothed<N>(result, k, carriedRows.transpose().lazyProduct(adjoint), variance);
+        updatesBackward<C>(k, adjoint, information);
+        if (keepGoing && k % kProgressInterval == 0 && !keepGoing(static_cast<double>(n - k) / static_cast<double>(n)))
+            return false;
     }
+    return true;
 }
 
 }  // namespace footpath

@@ -40,10 +40,6 @@ namespace footpath {
 /// sample plus 45 a ZUPT, about 77 (612 bytes) with stance half the time, an hour at 200 Hz 440 MB;
 /// 15 states: 133 doubles plus 141 a ZUPT+ZARU. Doubles: P(k|k) - P L P cancels most digits in the
 /// states the future observes.
-/// Whether a run may hand part of its work to a second thread. A caller that already runs several
-/// estimates at once on every core (tuning, method comparison) asks for one.
-enum class Concurrency { SingleThread, SecondThread };
-
 class RtsSmoother {
 public:
     /// The most a run may store (4 GiB): a recording that would need more is estimated by the
@@ -62,11 +58,8 @@ public:
     /// The backward pass over the captured samples: replaces the per-sample states and errorStd of
     /// result (which must hold one entry per captured sample; attitude and errorStd are written
     /// for every sample) by the smoothed ones. Returns false if keepGoing (asked now and then) said
-    /// stop; result is then partly smoothed. With a second thread, the recursion of mu and L runs on
-    /// this one and the per-sample read-out (states, angles, variances) of each finished stretch on
-    /// the other: the same numbers either way.
-    bool smooth(Result& result, const std::function<bool(double fraction)>& keepGoing = {},
-                Concurrency concurrency = Concurrency::SecondThread) const;
+    /// stop; result is then partly smoothed.
+    bool smooth(Result& result, const std::function<bool(double fraction)>& keepGoing = {}) const;
 
     /// Storage for each sample, and for each update of rows state-selecting rows on top.
     std::size_t bytesPerSample() const;
@@ -84,14 +77,7 @@ private:
     /// The backward pass on fixed-size blocks of the carried states C (RtsSmoother.cpp: the
     /// running states, without position unless an update measures it), which Eigen unrolls.
     template <class C>
-    bool smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing,
-                        Concurrency concurrency) const;
-    /// The smoothed states and variances of samples [begin, end) from each one's mu and L (after
-    /// the transition into it, before its updates), carried[k - begin].
-    template <class C>
-    void readOutSmoothed(Result& result, std::size_t begin, std::size_t end,
-                         const std::vector<typename C::Adjoint>& adjoints,
-                         const std::vector<typename C::Information>& informations) const;
+    bool smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing) const;
     /// P(k|k)'s rows of the carried states and its diagonal.
     template <class C>
     void filteredRows(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows,
