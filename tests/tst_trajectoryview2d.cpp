@@ -471,6 +471,33 @@ private slots:
         QVERIFY2(view.plot()->xAxis->range().size() > 1.5 * zoomed.size(), "a double-click should fit and follow again");
     }
 
+    void ghostStaysUnderTheOverlays_data()
+    {
+        QTest::addColumn<bool>("overlaysFirst");
+        QTest::newRow("overlays, then a ghost") << true;
+        QTest::newRow("a ghost, then overlays") << false;
+    }
+    void ghostStaysUnderTheOverlays()
+    {
+        // The ghost's opaque line must not hide the other foot's or a compared run's path,
+        // whichever of them the window hands the view first.
+        QFETCH(bool, overlaysFirst);
+        TrajectoryView2D view;
+        view.setResult(std::make_shared<const Result>(rectangleResult()));
+        const std::vector<Eigen::Vector3d> line{{0.0, 0.0, 0.0}, {10.0, 0.0, 0.0}};
+        const std::vector<PathOverlay> overlays{PathOverlay{QStringLiteral("Right foot"), Qt::red, line}};
+        if (overlaysFirst)
+            view.setOverlays(overlays);
+        view.setGhostPath(line);
+        if (!overlaysFirst)
+            view.setOverlays(overlays);
+        QCOMPARE(view.overlayCurves().size(), std::size_t(1));
+        QVERIFY(view.ghostCurve());
+        const int ghost = view.ghostCurve()->layer()->index();
+        QVERIFY(ghost < view.overlayCurves().front()->layer()->index());
+        QVERIFY(view.overlayCurves().front()->layer()->index() < view.plot()->layer(QStringLiteral("main"))->index());
+    }
+
     void ghostOfManyLapsIsOneEvenGrey()
     {
         // The ghost is drawn as quick line segments in an opaque grey: where its laps (and its

@@ -32,9 +32,12 @@ void PixelCurve::draw(QCPPainter* painter)
     painter->setBrush(Qt::NoBrush);
     const QVector<QPointF> kept = pixelSimplified(pixels, tolerance_px_);
     // QPainter strokes a wide polyline as one outline, which for a path of many laps crossing
-    // itself takes tens of milliseconds; line segments are quick. An opaque solid pen draws the
-    // same pixels either way (a translucent one would darken where its segments overlap).
-    if (mPen.style() != Qt::SolidLine || mPen.color().alpha() != 255) {
+    // itself takes tens of milliseconds; line segments are quick. An opaque solid pen draws
+    // nearly the same pixels either way (antialiased joints blend their soft edge twice; a
+    // translucent pen would darken where its segments overlap). Vector output (the PDF report)
+    // keeps the polyline: one path, not thousands of separate lines.
+    const bool vectorOutput = painter->modes().testFlag(QCPPainter::pmVectorized);
+    if (vectorOutput || mPen.style() != Qt::SolidLine || mPen.color().alpha() != 255) {
         drawCurveLine(painter, kept);
         return;
     }

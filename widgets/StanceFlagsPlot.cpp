@@ -505,6 +505,7 @@ void StanceFlagsPlot::ensureCurvesPlotted() const
     self->curvesStale_ = false;
     self->plotLanes();
     self->plotStatistic();
+    self->replot_->request();  // a grab while hidden may have used the request the result made
 }
 
 void StanceFlagsPlot::showEvent(QShowEvent* event)

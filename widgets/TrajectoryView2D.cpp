@@ -525,8 +525,11 @@ void TrajectoryView2D::setOverlays(const std::vector<PathOverlay>& overlays)
 void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& positions_m)
 {
     if (!ghost_) {
-        // Under everything else, so the current path, its markers and the reference stay on top.
-        plot_->addLayer(QStringLiteral("ghost"), plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
+        // Under everything else, so the current path, its markers, the reference and the overlays
+        // (the other foot, compared runs) stay on top of its opaque line.
+        QCPLayer* overlays = plot_->layer(QStringLiteral("overlays"));
+        plot_->addLayer(QStringLiteral("ghost"), overlays ? overlays : plot_->layer(QStringLiteral("main")),
+                        QCustomPlot::limBelow);
         auto* ghost = new PixelCurve(plot_->xAxis, plot_->yAxis);
         ghost->setTolerance(kGhostTolerance_px);
         ghost_ = ghost;
@@ -551,6 +554,7 @@ void TrajectoryView2D::setGhostPath(const std::vector<Eigen::Vector3d>& position
 
 void TrajectoryView2D::createOverlayLegend()
 {
+    // Below the current path, above the ghost of the last run when there is one.
     plot_->addLayer(QStringLiteral("overlays"), plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
     overlayLegend_ = new QCPLegend;
     plot_->axisRect()->insetLayout()->addElement(overlayLegend_, Qt::AlignTop | Qt::AlignLeft);

@@ -732,6 +732,7 @@ void MainWindow::showResult()
     if (!result) {
         trajectory2D_->clear();
         trajectory3D_->clear();
+        ghost_.reset();  // the 3D view dropped its ghost: the next one is handed over again
         return;
     }
     trajectory2D_->setResult(result);

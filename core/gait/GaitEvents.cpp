@@ -193,7 +193,9 @@ bool rateAgreesWithMotion(const std::vector<ImuSample>& samples, const std::vect
         else
             smallBounds += bound;
     });
-    if (std::abs(large) > smallBounds + margin)  // false for NaN: the exact sum decides
+    // False for NaN (an approximate angle beyond a thousand radians): the sums below decide. A sample
+    // whose bound is NaN (a non-finite rate or velocity) is not a moving one and is in no sum.
+    if (std::abs(large) > smallBounds + margin)
         return large > 0.0;
     double approximate = large;
     forEachMoving([&](std::size_t k, double bound) {

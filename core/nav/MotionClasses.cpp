@@ -68,8 +68,10 @@ SampleSpan stanceSamples(const std::vector<ImuSample>& samples, const Step& step
 StancePressure pressureOver(const std::vector<ImuSample>& samples, const SampleSpan& span)
 {
     std::vector<double> times_s, pressures_pa;
-    times_s.reserve(span.last - span.first);
-    pressures_pa.reserve(span.last - span.first);
+    if (span.last > span.first) {  // an empty span (a step ending before it starts) reserves nothing
+        times_s.reserve(span.last - span.first);
+        pressures_pa.reserve(span.last - span.first);
+    }
     for (std::size_t k = span.first; k < span.last; ++k) {
         if (samples[k].hasPressure()) {
             times_s.push_back(samples[k].time_s);
