@@ -2,7 +2,9 @@
 // model, and against the hand-labelled events of the IPOL MTw walks.
 
 #include "TestData.h"
+#include "gait/ApproximateRotation.h"
 #include "gait/GaitEvents.h"
+#include "nav/Attitude.h"
 #include "io/Import.h"
 #include "io/ResultWriters.h"
 #include "metrics/Evaluation.h"
@@ -12,6 +14,7 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <random>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -67,6 +70,45 @@ class TestGaitEvents : public QObject {
     Q_OBJECT
 
 private slots:
+    void approximateSineAndCosineStayWithinTheirBound()
+    {
+        // The gait events' axis sign relies on this bound (rateAgreesWithMotion).
+        std::mt19937 random(7);
+        std::uniform_real_distribution<double> angle(-25.0, 25.0);
+        double worst = 0.0;
+        for (int i = 0; i < 200000; ++i) {
+            const double x = i < 1000 ? -7.0 + 0.014 * i : angle(random);  // a sweep over the quadrants, then random
+            double sine = 0.0, cosine = 0.0;
+            approximateSinCos(x, sine, cosine);
+            worst = std::max({worst, std::abs(sine - std::sin(x)), std::abs(cosine - std::cos(x))});
+        }
+        qInfo("largest error %.3g", worst);
+        QVERIFY2(worst <= 2e-9, qPrintable(QString::number(worst)));
+        double sine = 0.0, cosine = 0.0;
+        approximateSinCos(2e3, sine, cosine);
+        QVERIFY(std::isnan(sine) && std::isnan(cosine));
+    }
+
+    void approximateRateRightOfMotionStaysWithinItsBound()
+    {
+        // Each entry of the approximate rotation within 12e-9 of the exact one, so the rate is
+        // within 12e-9 |w|_1 |v_h|_1 of the exact rotation's.
+        std::mt19937 random(11);
+        std::uniform_real_distribution<double> unit(-1.0, 1.0);
+        double worstShare = 0.0;
+        for (int i = 0; i < 100000; ++i) {
+            const Eigen::Vector3d rpy(M_PI * unit(random), 0.5 * M_PI * unit(random), M_PI * unit(random));
+            const Eigen::Vector3d gyr = 10.0 * Eigen::Vector3d(unit(random), unit(random), unit(random));
+            const Eigen::Vector3d velocity = 4.0 * Eigen::Vector3d(unit(random), unit(random), unit(random));
+            const double exact =
+                rateRightOfMotion(rotationFromRollPitchYaw(rpy.x(), rpy.y(), rpy.z()), gyr, velocity);
+            const double bound = gyr.lpNorm<1>() * (std::abs(velocity.x()) + std::abs(velocity.y()));
+            worstShare = std::max(worstShare, std::abs(approximateRateRightOfMotion(rpy, gyr, velocity) - exact) / bound);
+        }
+        qInfo("largest error %.3g of the bound", worstShare);
+        QVERIFY2(worstShare <= 12e-9, qPrintable(QString::number(worstShare)));
+    }
+
     void eventTimingTakesTheNearestDetectedEvent();
     void simulatedStridesAtEitherRate_data();
     void simulatedStridesAtEitherRate();
