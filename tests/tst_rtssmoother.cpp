@@ -2,6 +2,7 @@
 #include "detect/StanceDetector.h"
 #include "metrics/Evaluation.h"
 #include "nav/Alignment.h"
+#include "nav/BulkAllocator.h"
 #include "nav/Pipeline.h"
 #include "nav/RtsSmoother.h"
 #include "sim/WalkSimulator.h"
@@ -214,6 +215,62 @@ private slots:
         const std::size_t tenHours100Hz = 10 * 3600 * 100;
         QVERIFY(probe.projectedBytes(tenHours100Hz, tenHours100Hz / 2) < RtsSmoother::kMemoryBudget_bytes);
         QVERIFY(probe.projectedBytes(2 * tenHours100Hz, tenHours100Hz) > RtsSmoother::kMemoryBudget_bytes);
+    }
+
+    void largeBlocksAreReusedByTheNextRun()
+    {
+        bulk::releaseCached();
+        using Bulk = std::vector<double, BulkAllocator<double>>;
+        const std::size_t doubles = 3 * (bulk::kHugePage_bytes / sizeof(double)) + 5;  // 6 MB and a bit
+        const double* first = nullptr;
+        {
+            Bulk block(doubles);
+            first = block.data();
+            QCOMPARE(reinterpret_cast<std::uintptr_t>(first) % bulk::kHugePage_bytes, std::uintptr_t(0));
+        }
+        QCOMPARE(bulk::cachedBytes(), 4 * bulk::kHugePage_bytes);  // rounded up to whole huge pages
+        {
+            Bulk again(doubles - 1000);
+            QCOMPARE(again.data(), first);  // the freed block, not a fresh one the kernel must zero
+            QCOMPARE(bulk::cachedBytes(), std::size_t(0));
+            Bulk another(doubles);
+            QVERIFY(another.data() != first);
+        }
+        {
+            Bulk muchSmaller(bulk::kHugePage_bytes / sizeof(double));  // 2 MB: would waste half of either
+            QVERIFY(muchSmaller.data() != first);
+        }
+        // Never more than the bound, and nothing once released.
+        std::vector<Bulk> many;
+        for (std::size_t i = 0; i < bulk::kMaxCachedBlocks + 3; ++i)
+            many.emplace_back(doubles);
+        many.clear();
+        QVERIFY(bulk::cachedBytes() <= bulk::kMaxCachedBlocks * 4 * bulk::kHugePage_bytes);
+        bulk::releaseCached();
+        QCOMPARE(bulk::cachedBytes(), std::size_t(0));
+    }
+
+    void aRerunReusingTheBlocksGivesTheSameResult()
+    {
+        // Two laps of a 40 x 25 m rectangle store about 15 MB: blocks the next run takes over with
+        // the last run's numbers still in them, which it must overwrite before reading.
+        const std::vector<Eigen::Vector3d> lap = closedRectanglePath(40.0, 25.0);
+        std::vector<Eigen::Vector3d> path = lap;
+        path.insert(path.end(), lap.begin() + 1, lap.end());
+        const SimulatedWalk walk = simulateWalk(path, mtiClassSensor(100.0, 7));
+        QVERIFY(walk.recording.samples.size() > 20000);
+        bulk::releaseCached();
+        const Result fresh = run(walk.recording, Parameters(), EstimatorKind::Smoother);
+        QVERIFY(bulk::cachedBytes() > 0);
+        Parameters other;
+        other.r_zupt_mps *= 2.0;  // a different run leaves different numbers in the blocks
+        run(walk.recording, other, EstimatorKind::Smoother);
+        const Result reused = run(walk.recording, Parameters(), EstimatorKind::Smoother);
+        QCOMPARE(reused.position_m.size(), fresh.position_m.size());
+        for (std::size_t k = 0; k < fresh.position_m.size(); ++k) {
+            QCOMPARE(reused.position_m[k], fresh.position_m[k]);
+            QCOMPARE(reused.errorStd[k], fresh.errorStd[k]);
+        }
     }
 
     void storageIsWhatTheHeaderSays()

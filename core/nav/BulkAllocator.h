@@ -5,19 +5,36 @@
 #include <new>
 #include <utility>
 
-#include <sys/mman.h>
-
 namespace footpath {
+
+/// The large blocks behind BulkAllocator, which keep the few last freed ones for the next run: a
+/// slider re-runs the estimate on the same recording, and a fresh block costs the kernel's zeroing
+/// of every page on first touch (a quarter of a 30-minute walk's re-estimate in the window). At most
+/// kMaxCached_bytes (and kMaxCachedBlocks blocks) stay held, the most recently freed first.
+namespace bulk {
+constexpr std::size_t kHugePage_bytes = std::size_t(2) << 20;
+constexpr std::size_t kMaxCached_bytes = std::size_t(1) << 30;
+constexpr std::size_t kMaxCachedBlocks = 8;
+/// A block of at least bytes (a multiple of 2 MB), aligned to a huge page; nullptr if there is no
+/// memory. A cached block is reused if it is at most twice as large.
+void* allocate(std::size_t bytes);
+/// Returns a block from allocate() to the cache, or to the system if the cache is full.
+void deallocate(void* block) noexcept;
+/// Bytes held in freed blocks now (for tests and the memory figures).
+std::size_t cachedBytes();
+/// Frees every cached block.
+void releaseCached() noexcept;
+}  // namespace bulk
 
 /// Allocator for the large per-run arrays a pass over a recording fills once (the smoother's
 /// records): elements are default-initialised, not zeroed (every element is written before it is
 /// read, and zeroing 100 MB costs as much as filling it), and a block of several MB asks the kernel
 /// for transparent huge pages, so touching it first costs one page fault per 2 MB instead of per
-/// 4 kB (a 30-minute walk at 100 Hz stores about 110 MB; the faults were a sixth of its run).
+/// 4 kB (a 30-minute walk at 100 Hz stores about 110 MB; the faults were a sixth of its run), and
+/// is reused by the next run (bulk::allocate).
 template <typename T>
 struct BulkAllocator {
     using value_type = T;
-    static constexpr std::size_t kHugePage_bytes = std::size_t(2) << 20;
 
     BulkAllocator() = default;
     template <typename U>
@@ -26,19 +43,18 @@ struct BulkAllocator {
     T* allocate(std::size_t n)
     {
         const std::size_t bytes = n * sizeof(T);
-        if (bytes < 2 * kHugePage_bytes) {
-            if (void* p = std::malloc(bytes))
-                return static_cast<T*>(p);
-            throw std::bad_alloc();
-        }
-        const std::size_t rounded = (bytes + kHugePage_bytes - 1) / kHugePage_bytes * kHugePage_bytes;
-        void* p = std::aligned_alloc(kHugePage_bytes, rounded);
+        void* p = bytes < 2 * bulk::kHugePage_bytes ? std::malloc(bytes) : bulk::allocate(bytes);
         if (p == nullptr)
             throw std::bad_alloc();
-        madvise(p, rounded, MADV_HUGEPAGE);  // a hint: without huge pages it is ordinary memory
         return static_cast<T*>(p);
     }
-    void deallocate(T* p, std::size_t) noexcept { std::free(p); }
+    void deallocate(T* p, std::size_t n) noexcept
+    {
+        if (n * sizeof(T) < 2 * bulk::kHugePage_bytes)
+            std::free(p);
+        else
+            bulk::deallocate(p);
+    }
 
     /// resize() default-initialises instead of zeroing.
     template <typename U>
