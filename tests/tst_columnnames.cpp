@@ -59,7 +59,23 @@ private slots:
         // One cell over the limit is cut too: a binary file read as a header line.
         const std::string binary(100000, 'x');
         QCOMPARE(listedColumnNames({binary}, ColumnCount::Omitted), std::string(300, 'x') + " ...");
-        QCOMPARE(listedColumnNames({binary}, ColumnCount::Stated), std::string(300, 'x') + " ... (1 columns)");
+        QCOMPARE(listedColumnNames({binary}, ColumnCount::Stated), std::string(300, 'x') + " ... (1 column)");
+    }
+
+    void aCutNeverSplitsACharacter()
+    {
+        // 299 ASCII characters, then two-byte characters (ü is 0xC3 0xBC): byte 300 is the second
+        // byte of one, so the cut moves back to the character's start.
+        const std::string name = std::string(299, 'x') + "\xC3\xBC\xC3\xBC\xC3\xBC";
+        const std::string listed = listedColumnNames({name}, ColumnCount::Omitted);
+        QCOMPARE(listed, std::string(299, 'x') + " ...");
+        QVERIFY(QString::fromStdString(listed).toStdString() == listed);  // valid UTF-8 round-trips
+        // A three-byte character (€, 0xE2 0x82 0xAC) over the limit is kept whole or dropped whole.
+        for (std::size_t lead = 297; lead <= 300; ++lead) {
+            const std::string euro = std::string(lead, 'x') + "\xE2\x82\xAC\xE2\x82\xAC";
+            const std::string cut = listedColumnNames({euro}, ColumnCount::Omitted);
+            QVERIFY2(QString::fromStdString(cut).toStdString() == cut, qPrintable(QString::number(lead)));
+        }
     }
 };
 

@@ -171,9 +171,13 @@ std::string listedColumnNames(const std::vector<std::string>& names, ColumnCount
         listed += (listed.empty() ? "" : ", ") + name;
     if (listed.size() <= kMaxChars)
         return listed;
-    listed = listed.substr(0, kMaxChars) + " ...";
+    // Cut between characters: a byte 10xxxxxx continues a UTF-8 sequence.
+    std::size_t cut = kMaxChars;
+    while (cut > 0 && (static_cast<unsigned char>(listed[cut]) & 0xC0) == 0x80)
+        --cut;
+    listed = listed.substr(0, cut) + " ...";
     if (count == ColumnCount::Stated)
-        listed += " (" + std::to_string(names.size()) + " columns)";
+        listed += " (" + std::to_string(names.size()) + (names.size() == 1 ? " column)" : " columns)");
     return listed;
 }
 

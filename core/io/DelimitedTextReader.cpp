@@ -351,7 +351,8 @@ RowOutcome TextParser::parseRow(const std::string& line)
 {
     splitLine(line, delimiter_, cells_);
     if (cells_.size() < columns_.size())
-        return skip(cells_.size() + 1, "expected " + std::to_string(columns_.size()) + " columns, found "
+        return skip(cells_.size() + 1, "expected " + std::to_string(columns_.size())
+                                           + (columns_.size() == 1 ? " column, found " : " columns, found ")
                                            + std::to_string(cells_.size()));
     ImuSample sample;
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();
