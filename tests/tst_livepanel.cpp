@@ -272,6 +272,8 @@ void TestLivePanel::parameterChangeMidStreamReestimatesOffTheGuiThread()
     QVERIFY(!panel.isReestimating());
     QTest::qWait(200);  // the cancelled run ends meanwhile
     QVERIFY2(!state->text().startsWith(QStringLiteral("Re-estimating")), qPrintable(state->text()));
+    // It says why there is no estimate, as the status line does, not "Aligning".
+    QVERIFY2(state->text().startsWith(QStringLiteral("No live estimate: ")), qPrintable(state->text()));
     QCOMPARE(panel.estimator()->parameters(), refused);  // the cancelled run did not take over
 }
 

@@ -770,7 +770,9 @@ void LivePanel::showEstimateFigures()
         estimateState_->setText(session_->state() == SessionState::Idle ? tr("Not connected") : tr("Waiting for samples"));
         return;
     }
-    if (reestimator_->isRunning())
+    if (!estimator_->error().empty())  // parameters it refused: not aligning, not estimating
+        estimateState_->setText(tr("No live estimate: %1").arg(QString::fromStdString(estimator_->error())));
+    else if (reestimator_->isRunning())
         estimateState_->setText(tr("Re-estimating with the new parameters (the old estimate is shown meanwhile)"));
     else if (session_->state() == SessionState::Idle && estimator_->pendingSamples() == 0 && estimator_->aligned())
         estimateState_->setText(tr("Complete: every sample estimated, as the offline analysis does"));
