@@ -1,4 +1,5 @@
 #include "LegendChecks.h"
+#include "PixelCurve.h"
 #include "PlotInteraction.h"
 #include "TrajectoryView2D.h"
 #include "metrics/Evaluation.h"
@@ -141,6 +142,34 @@ double metresPerPixelRatio(QCustomPlot* plot)
 class TestTrajectoryView2D : public QObject {
     Q_OBJECT
 private slots:
+    void pixelMapIsTheAxesMap()
+    {
+        // The multiply-add map agrees with QCustomPlot's own to far below a pixel: on plain,
+        // reversed, swapped (vertical key) and logarithmic axes.
+        QCustomPlot plot;
+        plot.resize(640, 480);
+        plot.xAxis->setRange(-12.5, 87.25);
+        plot.yAxis->setRange(1e-3, 40.0);
+        plot.replot();  // lays out the axis rect
+        QCPGraph* graph = plot.addGraph();
+        QCPGraph* swapped = plot.addGraph(plot.yAxis, plot.xAxis);
+        for (const bool reversed : {false, true})
+            for (const bool logarithmic : {false, true}) {
+                plot.xAxis->setRangeReversed(reversed);
+                plot.yAxis->setScaleType(logarithmic ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
+                for (QCPGraph* g : {graph, swapped}) {
+                    const PixelMap map(g->keyAxis(), g->valueAxis());
+                    for (const double key : {-12.5, 0.0, 3.3, 87.25, 200.0})
+                        for (const double value : {1e-3, 0.5, 17.0, 40.0}) {
+                            const double k = g == graph ? key : value, v = g == graph ? value : key;
+                            const QPointF expected = g->coordsToPixels(k, v), mapped = map(k, v);
+                            QVERIFY2(std::abs(expected.x() - mapped.x()) < 1e-9 && std::abs(expected.y() - mapped.y()) < 1e-9,
+                                     qPrintable(QStringLiteral("%1 %2 reversed %3 log %4").arg(k).arg(v).arg(reversed).arg(logarithmic)));
+                        }
+                }
+            }
+    }
+
     void drawsThePathWithoutOpenGl()
     {
         TrajectoryView2D view;

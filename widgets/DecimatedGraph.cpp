@@ -1,5 +1,7 @@
 #include "DecimatedGraph.h"
 
+#include "PixelCurve.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -64,12 +66,12 @@ void DecimatedGraph::appendEnvelope(QVector<QCPGraphData>* lineData, const QCPGr
     // highest upper edge of its samples, so one point a column draws it. Drawn with the zig-zag
     // of every sample (or adaptive sampling's four points a column) the fill polygon has
     // thousands of edges, and filling it costs tens of milliseconds a band.
-    const QCPAxis* keys = mKeyAxis.data();
+    const PixelMap toPixels(mKeyAxis.data(), mValueAxis.data());
     const bool highest = reduction_ == Reduction::Highest;
     auto column = begin;
-    double columnPixel = std::floor(keys->coordToPixel(begin->key));
+    double columnPixel = std::floor(toPixels.keyPixel(begin->key));
     for (auto it = begin + 1; it != end; ++it) {
-        const double pixel = std::floor(keys->coordToPixel(it->key));
+        const double pixel = std::floor(toPixels.keyPixel(it->key));
         if (pixel != columnPixel) {
             lineData->append(*column);
             column = it;

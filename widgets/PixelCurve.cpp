@@ -4,6 +4,18 @@
 
 namespace footpath {
 
+PixelMap::Axis::Axis(const QCPAxis* axis_)
+    : axis(axis_), linear(axis_->scaleType() == QCPAxis::stLinear && axis_->range().size() > 0.0),
+      lower(axis_->range().lower), origin_px(axis_->coordToPixel(lower)),
+      scale(linear ? (axis_->coordToPixel(axis_->range().upper) - origin_px) / axis_->range().size() : 0.0)
+{
+}
+
+PixelMap::PixelMap(const QCPAxis* keyAxis, const QCPAxis* valueAxis)
+    : key_(keyAxis), value_(valueAxis), keyIsHorizontal_(keyAxis->orientation() == Qt::Horizontal)
+{
+}
+
 QVector<QPointF> pixelSimplified(const QVector<QPointF>& points, double tolerance_px)
 {
     QVector<QPointF> kept;
@@ -25,8 +37,9 @@ void PixelCurve::draw(QCPPainter* painter)
 {
     QVector<QPointF> pixels;
     pixels.reserve(mDataContainer->size());
+    const PixelMap toPixels(mKeyAxis.data(), mValueAxis.data());
     for (const QCPCurveData& point : *mDataContainer)
-        pixels.append(coordsToPixels(point.key, point.value));
+        pixels.append(toPixels(point.key, point.value));
     applyDefaultAntialiasingHint(painter);
     painter->setPen(mPen);
     painter->setBrush(Qt::NoBrush);

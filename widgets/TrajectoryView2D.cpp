@@ -222,9 +222,10 @@ private:
     std::vector<QVector<QLineF>> segmentsInPixels() const
     {
         std::vector<QVector<QLineF>> linesByLevel(levels_.empty() ? 1 : levelColours_.size());
-        QPointF previous = coordsToPixels(points_m_.front().x(), points_m_.front().y());
+        const PixelMap toPixels(mKeyAxis.data(), mValueAxis.data());
+        QPointF previous = toPixels(points_m_.front().x(), points_m_.front().y());
         for (std::size_t k = 1; k < points_m_.size(); ++k) {
-            const QPointF pixel = coordsToPixels(points_m_[k].x(), points_m_[k].y());
+            const QPointF pixel = toPixels(points_m_[k].x(), points_m_[k].y());
             const std::size_t level = levels_.empty() ? 0 : levels_[k];
             // A foot at rest puts hundreds of samples on one pixel: skip samples within a pixel of
             // the last drawn point; the next drawn segment spans the gap, so the line stays whole.
