@@ -83,7 +83,6 @@ double* storePackedCovariance(const ErrorStateEkf::Matrix15& p, double* out)
 {
     static constexpr PackedCovarianceLayout<N> layout;
     const double* matrix = p.data();
-#pragma GCC unroll 128
     for (const int source : layout.source)
         *out++ = matrix[source];
     return out;
@@ -298,10 +297,8 @@ void RtsSmoother::filteredRows(std::size_t k, Eigen::Matrix<double, C::size, C::
     static constexpr PackedRowsLayout<C> layout;
     const double* packed = record(k);
     double* rows = carriedRows.data();
-#pragma GCC unroll 256
     for (std::size_t e = 0; e < layout.rows.size(); ++e)
         rows[e] = packed[layout.rows[e]];
-#pragma GCC unroll 16
     for (std::size_t i = 0; i < layout.diagonal.size(); ++i)
         diagonal(static_cast<Eigen::Index>(i)) = packed[layout.diagonal[i]];
 }
