@@ -61,30 +61,15 @@ struct Carried {
     }
 };
 
-/// Where each entry of the packed upper triangle of the running states' block of P lies in the
-/// 15 x 15 matrix (column-major), column by column.
-template <int N>
-struct PackedCovarianceLayout {
-    std::array<int, N * (N + 1) / 2> source{};
-    constexpr PackedCovarianceLayout()
-    {
-        constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
-        std::size_t e = 0;
-        for (int j = 0; j < N; ++j)
-            for (int i = 0; i <= j; ++i)
-                source[e++] = filterIndex(j) * ErrorStateEkf::kStates + filterIndex(i);
-    }
-};
-
 /// The upper triangle of the running states' block of P, column by column, from out; returns the
-/// end. One table-driven copy: the walk over the triangle with the index mapping did not unroll.
+/// end. The running states' indices are known at compile time, so the loop unrolls.
 template <int N>
 double* storePackedCovariance(const ErrorStateEkf::Matrix15& p, double* out)
 {
-    static constexpr PackedCovarianceLayout<N> layout;
-    const double* matrix = p.data();
-    for (const int source : layout.source)
-        *out++ = matrix[source];
+    constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
+    for (int j = 0; j < N; ++j)
+        for (int i = 0; i <= j; ++i)
+            *out++ = p(filterIndex(i), filterIndex(j));
     return out;
 }
 
@@ -266,41 +251,21 @@ bool RtsSmoother::smooth(Result& result, const std::function<bool(double fractio
                              : smoothBackward<Carried<9, false>>(result, keepGoing);
 }
 
-namespace {
-
-/// Where each entry of P(k|k)'s carried rows (column-major, C::size x C::running) and of its
-/// diagonal lies in the packed upper triangle: filteredRows is then one table-driven copy, not a
-/// walk over the triangle with a test per entry (which the compiler did not unroll).
-template <class C>
-struct PackedRowsLayout {
-    std::array<int, C::size * C::running> rows{};
-    std::array<int, C::running> diagonal{};
-    constexpr PackedRowsLayout()
-    {
-        // Column j's upper triangle starts at j (j + 1) / 2.
-        const auto packedIndex = [](int i, int j) { return i <= j ? j * (j + 1) / 2 + i : i * (i + 1) / 2 + j; };
-        for (int j = 0; j < C::running; ++j)
-            for (int a = 0; a < C::size; ++a)
-                rows[static_cast<std::size_t>(j * C::size + a)] = packedIndex(C::runningIndex(a), j);
-        for (int i = 0; i < C::running; ++i)
-            diagonal[static_cast<std::size_t>(i)] = packedIndex(i, i);
-    }
-};
-
-}  // namespace
-
 template <class C>
 void RtsSmoother::filteredRows(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows,
                                Eigen::Matrix<double, C::running, 1>& diagonal) const
 {
     // P(k|k) is symmetric: its rows of the carried states are its columns of them.
-    static constexpr PackedRowsLayout<C> layout;
     const double* packed = record(k);
-    double* rows = carriedRows.data();
-    for (std::size_t e = 0; e < layout.rows.size(); ++e)
-        rows[e] = packed[layout.rows[e]];
-    for (std::size_t i = 0; i < layout.diagonal.size(); ++i)
-        diagonal(static_cast<Eigen::Index>(i)) = packed[layout.diagonal[i]];
+    for (int j = 0; j < C::running; ++j)
+        for (int i = 0; i <= j; ++i, ++packed) {
+            if (C::carriedIndex(i) >= 0)
+                carriedRows(C::carriedIndex(i), j) = *packed;
+            if (C::carriedIndex(j) >= 0)
+                carriedRows(C::carriedIndex(j), i) = *packed;
+            if (i == j)
+                diagonal(i) = *packed;
+        }
 }
 
 template <class C>
