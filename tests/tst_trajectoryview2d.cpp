@@ -343,6 +343,44 @@ private slots:
             QVERIFY(std::abs(corner[l].split(QLatin1Char(','))[1].toDouble()) <= 1.0);
     }
 
+    void stanceMarkersShowOnlyWhereTheyAreApart()
+    {
+        // 1500 strides of 1.4 m along 2.1 km: seen whole, the markers would be a pixel apart and
+        // hide the path; zoomed in to 30 m they are 30 px apart and shown (and listed) again.
+        Result result;
+        for (int k = 0; k <= 1500; ++k) {
+            const Eigen::Vector3d at(1.4 * k, 0.1 * std::sin(0.01 * k), 0.0);
+            result.time_s.push_back(1.1 * k);
+            result.position_m.push_back(at);
+            Step step;
+            step.position_m = at;
+            step.strideLength_m = k == 0 ? 0.0 : 1.4;
+            result.steps.push_back(step);
+        }
+        TrajectoryView2D view;
+        view.resize(600, 400);
+        view.showResult(result);
+        view.grab();
+        QCPGraph* stances = nullptr;
+        for (int g = 0; g < view.plot()->graphCount(); ++g)
+            if (view.plot()->graph(g)->name() == QStringLiteral("Stance"))
+                stances = view.plot()->graph(g);
+        QVERIFY(stances);
+        QCOMPARE(stances->data()->size(), 1501);
+        QVERIFY(!stances->visible());
+        QVERIFY(!view.plot()->legend->hasItemWithPlottable(stances));
+
+        view.plot()->xAxis->setRange(0.0, 30.0);
+        view.plot()->yAxis->setRange(-10.0, 10.0);
+        view.plot()->replot();
+        QVERIFY(stances->visible());
+        QVERIFY(view.plot()->legend->hasItemWithPlottable(stances));
+
+        view.showResult(rectangleResult());  // a short walk seen whole: its markers are shown
+        view.plot()->replot();
+        QVERIFY(stances->visible());
+    }
+
     void referenceOverlayIsPresentOnlyWhenGiven()
     {
         const Result& result = rectangleResult();

@@ -36,6 +36,7 @@ constexpr int kClickMaxMovement_px = 4;
 constexpr double kSpeedScaleQuantile = 0.99;
 
 const QColor kPathColour(40, 90, 170);
+constexpr double kMinStanceSpacing_px = 8.0;  // the 5-6 px stance markers closer than this merge into a line
 constexpr double kGhostTolerance_px = 3.0;  // the ghost's faint 2.5 px line: finer detail would not show
 
 // Functions, not globals: a QCPScatterStyle holds a QPixmap, which needs the application first.
@@ -371,7 +372,23 @@ void TrajectoryView2D::createLegendRow()
     legend->setColumnSpacing(18);
     legend->setMinimumSize(1, 0);  // its width never sets the widget's: it wraps instead (height: as needed)
     // Entries come and go with the overlays and the motion classes: fitted before every drawing.
+    connect(plot_, &QCustomPlot::beforeReplot, this, &TrajectoryView2D::showStanceMarkersIfApart);
     connect(plot_, &QCustomPlot::beforeReplot, this, &TrajectoryView2D::wrapLegendToWidth);
+}
+
+void TrajectoryView2D::showStanceMarkersIfApart()
+{
+    // Half an hour seen whole puts 1500 stances a pixel or two apart on a 300-pixel plot: the path
+    // became an orange line. Zoomed in that far apart, they come back. The axes share one scale.
+    const double perMetre_px = std::abs(plot_->xAxis->coordToPixel(1.0) - plot_->xAxis->coordToPixel(0.0));
+    const bool apart = medianStride_m_ == 0.0 || medianStride_m_ * perMetre_px >= kMinStanceSpacing_px;
+    if (apart == stances_->visible())
+        return;
+    stances_->setVisible(apart);
+    if (apart)
+        stances_->addToLegend();
+    else
+        stances_->removeFromLegend();
 }
 
 void TrajectoryView2D::wrapLegendToWidth()
@@ -594,9 +611,19 @@ void TrajectoryView2D::showPathAndMarkers(bool grown)
         path_->setPoints(positions);
     for (QCPGraph* graph : {stances_, start_, end_})
         graph->data()->clear();
+    std::vector<double> strides;
     if (result_) {
-        for (const Step& step : result_->steps)
+        for (const Step& step : result_->steps) {
             stances_->addData(step.position_m.x(), step.position_m.y());
+            if (step.strideLength_m > 0.0)
+                strides.push_back(step.strideLength_m);
+        }
+    }
+    medianStride_m_ = 0.0;
+    if (!strides.empty()) {
+        const auto middle = strides.begin() + static_cast<std::ptrdiff_t>(strides.size() / 2);
+        std::nth_element(strides.begin(), middle, strides.end());
+        medianStride_m_ = *middle;
     }
     if (!positions.empty()) {
         start_->addData(positions.front().x(), positions.front().y());
