@@ -370,6 +370,14 @@ private slots:
         QVERIFY(!stances->visible());
         QVERIFY(!view.plot()->legend->hasItemWithPlottable(stances));
 
+        // The next result is fitted before its first replot decides: no stale scale.
+        view.showResult(rectangleResult());
+        view.plot()->replot();
+        QVERIFY(stances->visible());
+        view.showResult(result);
+        view.plot()->replot();
+        QVERIFY(!stances->visible());
+
         view.plot()->xAxis->setRange(0.0, 30.0);
         view.plot()->yAxis->setRange(-10.0, 10.0);
         view.plot()->replot();
