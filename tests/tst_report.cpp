@@ -128,6 +128,28 @@ private slots:
 
     // The step table counts stance phases from 1, as the window's table does: the first row is
     // step 1 and the last the number of stance phases.
+    void aLongWalksPathFigureLeavesOutItsStanceMarkers()
+    {
+        // 600 m straight on: strides of 1.4 m are about 2 px apart on the page's path figure, so
+        // the stances are not drawn and the caption does not promise them; a short walk keeps both.
+        const auto captionOf = [](const std::vector<Eigen::Vector3d>& path, const QString& name) {
+            const SimulatedWalk walk = simulateWalk(path, WalkSimulatorConfig());
+            ReportContent content;
+            content.recordingPath = name;
+            content.recording = std::make_shared<const Recording>(walk.recording);
+            content.result = std::make_shared<const Result>(runPipeline(*content.recording, content.parameters).result);
+            QTemporaryDir dir;
+            const QString pdf = outputDir(dir) + "/" + name + ".pdf";
+            const QString error = writePdfReport(content, pdf);
+            return error.isEmpty() ? pdfWords(pdf) : error;
+        };
+        const QString longWalk = captionOf(straightLinePath(600.0), QStringLiteral("long"));
+        QVERIFY2(longWalk.contains("too close together at this scale to be marked"), qPrintable(longWalk.left(300)));
+        QVERIFY(!longWalk.contains("stance positions as dots"));
+        const QString shortWalk = captionOf(closedRectanglePath(10.0, 5.0), QStringLiteral("short"));
+        QVERIFY2(shortWalk.contains("stance positions as dots"), qPrintable(shortWalk.left(300)));
+    }
+
     void stepTableNumbersFromOne()
     {
         QTemporaryDir dir;

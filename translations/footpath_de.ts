@@ -489,6 +489,10 @@
         <source>Parameters (* and bold: differs from the default)</source>
         <translation>Parameter (* und fett: weicht vom Standardwert ab)</translation>
     </message>
+    <message>
+        <source>Figure 1. The foot path seen from above (reference dashed when present; the stances are too close together at this scale to be marked).</source>
+        <translation>Abbildung 1. Der Weg des Fußes von oben (Referenz gestrichelt, falls vorhanden; die Standphasen liegen in diesem Maßstab zu dicht, um sie zu markieren).</translation>
+    </message>
 </context>
 <context>
     <name>footpath::AnalysisSession</name>

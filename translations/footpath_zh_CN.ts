@@ -489,6 +489,10 @@
         <source>Parameters (* and bold: differs from the default)</source>
         <translation>参数（* 和粗体：与默认值不同）</translation>
     </message>
+    <message>
+        <source>Figure 1. The foot path seen from above (reference dashed when present; the stances are too close together at this scale to be marked).</source>
+        <translation>图 1. 俯视的足部轨迹（如有参考轨迹，以虚线表示；在此比例下支撑相过于密集，未予标出）。</translation>
+    </message>
 </context>
 <context>
     <name>footpath::AnalysisSession</name>

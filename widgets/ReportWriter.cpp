@@ -564,8 +564,13 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
     view2D.setPathLabel(c.pathLabel);
     view2D.setOverlays(c.otherPaths);
     view2D.setReference(alignReferenceToEstimate(c.recording->reference.positions_m, result.position_m));
-    page.figure(tr("Figure 1. The foot path seen from above (stance positions as dots; reference dashed when present)."),
-                page.mm(110), [&](const QRectF& r) { drawPlot(painter, view2D.plot(), r); });
+    // A long walk's stances are too close at the page's scale to be marked (as on screen).
+    const QString caption =
+        view2D.layOutForPrinting(900, 640) || result.steps.empty()
+            ? tr("Figure 1. The foot path seen from above (stance positions as dots; reference dashed when present).")
+            : tr("Figure 1. The foot path seen from above (reference dashed when present; the stances are too "
+                 "close together at this scale to be marked).");
+    page.figure(caption, page.mm(110), [&](const QRectF& r) { drawPlot(painter, view2D.plot(), r); });
     page.figure(tr("Figure 2. Height of the foot over time."), page.mm(50),
                 [&](const QRectF& r) { drawHeightOverTime(painter, result, r); });
     TrajectoryView3D view3D;

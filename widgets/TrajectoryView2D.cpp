@@ -376,6 +376,16 @@ void TrajectoryView2D::createLegendRow()
     connect(plot_, &QCustomPlot::beforeReplot, this, &TrajectoryView2D::wrapLegendToWidth);
 }
 
+bool TrajectoryView2D::layOutForPrinting(int width, int height)
+{
+    // A hidden widget's plot keeps its first viewport: set it, fit the path into it (the first
+    // replot's layout), then decide on the markers with the fitted ranges (the second's).
+    plot_->setViewport(QRect(0, 0, width, height));
+    for (int pass = 0; pass < 2; ++pass)
+        plot_->replot(QCustomPlot::rpImmediateRefresh);
+    return stances_->visible() && !stances_->data()->isEmpty();
+}
+
 void TrajectoryView2D::showStanceMarkersIfApart()
 {
     // Half an hour seen whole puts 1500 stances a pixel or two apart on a 300-pixel plot: the path
