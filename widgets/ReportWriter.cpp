@@ -566,7 +566,7 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
     view2D.setReference(alignReferenceToEstimate(c.recording->reference.positions_m, result.position_m));
     // A long walk's stances are too close at the page's scale to be marked (as on screen).
     const QString caption =
-        view2D.layOutForPrinting(900, 640) || result.steps.empty()
+        view2D.layOutForPrinting() || result.steps.empty()
             ? tr("Figure 1. The foot path seen from above (stance positions as dots; reference dashed when present).")
             : tr("Figure 1. The foot path seen from above (reference dashed when present; the stances are too "
                  "close together at this scale to be marked).");

@@ -376,11 +376,12 @@ void TrajectoryView2D::createLegendRow()
     connect(plot_, &QCustomPlot::beforeReplot, this, &TrajectoryView2D::wrapLegendToWidth);
 }
 
-bool TrajectoryView2D::layOutForPrinting(int width, int height)
+bool TrajectoryView2D::layOutForPrinting()
 {
-    // A hidden widget's plot keeps its first viewport: set it, fit the path into it (the first
-    // replot's layout), then decide on the markers with the fitted ranges (the second's).
-    plot_->setViewport(QRect(0, 0, width, height));
+    // A hidden widget's plot keeps its first viewport: set it to the widget's size, fit the path
+    // into it (the first replot's layout), then decide on the markers with the fitted ranges (the
+    // second's).
+    plot_->setViewport(QRect(QPoint(0, 0), size()));
     for (int pass = 0; pass < 2; ++pass)
         plot_->replot(QCustomPlot::rpImmediateRefresh);
     return stances_->visible() && !stances_->data()->isEmpty();
@@ -629,12 +630,7 @@ void TrajectoryView2D::showPathAndMarkers(bool grown)
                 strides.push_back(step.strideLength_m);
         }
     }
-    medianStride_m_ = 0.0;
-    if (!strides.empty()) {
-        const auto middle = strides.begin() + static_cast<std::ptrdiff_t>(strides.size() / 2);
-        std::nth_element(strides.begin(), middle, strides.end());
-        medianStride_m_ = *middle;
-    }
+    medianStride_m_ = quantile(std::move(strides), 0.5);  // 0 without strides: the markers are shown
     if (!positions.empty()) {
         start_->addData(positions.front().x(), positions.front().y());
         end_->addData(positions.back().x(), positions.back().y());

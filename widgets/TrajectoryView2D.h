@@ -76,10 +76,10 @@ public:
     double timeCursor() const { return timeCursor_s_; }
 
     QCustomPlot* plot() const { return plot_; }  ///< for the report and for tests
-    /// Lays the plot out at width x height pixels without showing it (the report draws a view that
-    /// was never on screen) and decides on the stance markers at that scale. Returns whether they
-    /// are drawn.
-    bool layOutForPrinting(int width, int height);
+    /// Lays the plot out at the widget's size without showing it (the report draws a view that was
+    /// never on screen) and decides on the stance markers at that scale. Returns whether they are
+    /// drawn.
+    bool layOutForPrinting();
     /// Hover readout (x, y, time of the nearest path sample), Shift+click marker, context menu, export.
     PlotInteraction* interaction() const { return interaction_; }
     /// The legend entries of the motion classes the path shows while coloured by motion (for tests).
