@@ -121,6 +121,41 @@ Result longWalk(std::size_t samples, double rate_hz)
     return result;
 }
 
+/// One lap of a 200 m x 150 m rectangle with a stance every 1.4 m: seen whole in a window, its
+/// stances are a few pixels apart.
+Result largeLap()
+{
+    Result result;
+    const std::vector<Eigen::Vector3d> corners{{0, 0, 0}, {200, 0, 0}, {200, 150, 0}, {0, 150, 0}, {0, 0, 0}};
+    double t = 0.0;
+    for (std::size_t c = 1; c < corners.size(); ++c) {
+        const Eigen::Vector3d side = corners[c] - corners[c - 1];
+        const int strides = static_cast<int>(std::round(side.norm() / 1.4));
+        for (int i = 0; i < strides; ++i) {
+            Step step;
+            step.position_m = corners[c - 1] + side * (double(i) / strides);
+            result.steps.push_back(step);
+            for (int k = 0; k < 10; ++k, t += 0.1) {
+                result.time_s.push_back(t);
+                result.position_m.push_back(corners[c - 1] + side * ((i + k / 10.0) / strides));
+            }
+        }
+    }
+    return result;
+}
+
+/// Pixels in the stance markers' orange (230, 120, 20), which nothing else in the view uses.
+int stanceColouredPixels(const QImage& image)
+{
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            count += c.red() > 200 && c.green() > 90 && c.green() < 150 && c.blue() < 70;
+        }
+    return count;
+}
+
 Result resultWithPositions(const std::vector<Eigen::Vector3d>& positions)
 {
     Result result;
@@ -235,6 +270,32 @@ private slots:
         QVERIFY2(std::hypot(stays.x(), stays.y()) < 1.0, "the point under the pointer moved");
         wheel(view, pointer, -2);
         QVERIFY(projectedBounds(view, path, target).width() < before.width());
+    }
+
+    void stancesTooCloseOnScreenAreNotMarkedUntilZoomedIn()
+    {
+        // Seen whole, a 700 m lap's 500 stances are 3-4 px apart: dots would bury the path in
+        // orange. The key then leaves the entry out (its icon is the same orange).
+        TrajectoryView3D view;
+        view.resize(640, 480);
+        view.setResult(std::make_shared<const Result>(largeLap()));
+        const QRectF target(QPointF(0, 0), QSizeF(view.size()));
+        QVERIFY(!view.marksStances(target));
+        QCOMPARE(stanceColouredPixels(rendered(view, view.size())), 0);
+        QVERIFY(pathColouredPixels(rendered(view, view.size())) > 500);
+
+        wheel(view, target.center().toPoint(), 8);  // 1.2^8: about 4 times closer
+        QVERIFY(view.marksStances(target));
+        QVERIFY(stanceColouredPixels(rendered(view, view.size())) > 100);
+        view.resetView();
+        QVERIFY(!view.marksStances(target));
+
+        // A short walk keeps its dots at any size a window has.
+        TrajectoryView3D shortWalk;
+        shortWalk.showResult(stairsResult());
+        for (const QSizeF size : {QSizeF(400, 300), QSizeF(1600, 1000)})
+            QVERIFY(shortWalk.marksStances(QRectF(QPointF(0, 0), size)));
+        QVERIFY(stanceColouredPixels(rendered(shortWalk, QSize(640, 480))) > 50);
     }
 
     void heightExaggerationScalesTheProjectedHeightOfStairs()

@@ -482,16 +482,20 @@
         <translation>Fußfreiheit (m)</translation>
     </message>
     <message>
-        <source>Figure 3. The path in 3D (reference dashed when present).</source>
-        <translation>Abbildung 3. Der Weg in 3D (Referenz gestrichelt, falls vorhanden).</translation>
-    </message>
-    <message>
         <source>Parameters (* and bold: differs from the default)</source>
         <translation>Parameter (* und fett: weicht vom Standardwert ab)</translation>
     </message>
     <message>
         <source>Figure 1. The foot path seen from above (reference dashed when present; the stances are too close together at this scale to be marked).</source>
         <translation>Abbildung 1. Der Weg des Fußes von oben (Referenz gestrichelt, falls vorhanden; die Standphasen liegen in diesem Maßstab zu dicht, um sie zu markieren).</translation>
+    </message>
+    <message>
+        <source>Figure 3. The path in 3D (stance positions as dots; reference dashed when present).</source>
+        <translation>Abbildung 3. Der Weg in 3D (Standphasen als Punkte; Referenz gestrichelt, falls vorhanden).</translation>
+    </message>
+    <message>
+        <source>Figure 3. The path in 3D (reference dashed when present; the stances are too close together at this scale to be marked).</source>
+        <translation>Abbildung 3. Der Weg in 3D (Referenz gestrichelt, falls vorhanden; die Standphasen liegen in diesem Maßstab zu dicht, um sie zu markieren).</translation>
     </message>
 </context>
 <context>

@@ -482,16 +482,20 @@
         <translation>离地高度 (m)</translation>
     </message>
     <message>
-        <source>Figure 3. The path in 3D (reference dashed when present).</source>
-        <translation>图 3. 三维路径（如有参考轨迹，以虚线表示）。</translation>
-    </message>
-    <message>
         <source>Parameters (* and bold: differs from the default)</source>
         <translation>参数（* 和粗体：与默认值不同）</translation>
     </message>
     <message>
         <source>Figure 1. The foot path seen from above (reference dashed when present; the stances are too close together at this scale to be marked).</source>
         <translation>图 1. 俯视的足部轨迹（如有参考轨迹，以虚线表示；在此比例下支撑相过于密集，未予标出）。</translation>
+    </message>
+    <message>
+        <source>Figure 3. The path in 3D (stance positions as dots; reference dashed when present).</source>
+        <translation>图 3. 三维路径（支撑相位置以圆点表示；如有参考轨迹，以虚线表示）。</translation>
+    </message>
+    <message>
+        <source>Figure 3. The path in 3D (reference dashed when present; the stances are too close together at this scale to be marked).</source>
+        <translation>图 3. 三维路径（如有参考轨迹，以虚线表示；在此比例下支撑相过于密集，未予标出）。</translation>
     </message>
 </context>
 <context>

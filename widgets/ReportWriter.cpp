@@ -579,8 +579,17 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
     view3D.setPathLabel(c.pathLabel);
     view3D.setOverlays(c.otherPaths);
     view3D.setReference(alignReferenceToEstimate(c.recording->reference.positions_m, result.position_m));
-    page.figure(tr("Figure 3. The path in 3D (reference dashed when present)."), page.mm(100), [&](const QRectF& r) {
-        drawScaled(painter, r, 760, [&view3D](QPainter& recorder, QSize size) {
+    // drawScaled renders the figure 760 units wide at the figure's proportions, whatever its scale.
+    constexpr int kFigure3Width = 760;
+    const double figure3Height = page.mm(100);
+    const QRectF figure3Drawn(0.0, 0.0, kFigure3Width, kFigure3Width * figure3Height / page.width());
+    const QString caption3 =
+        view3D.marksStances(figure3Drawn) || result.steps.empty()
+            ? tr("Figure 3. The path in 3D (stance positions as dots; reference dashed when present).")
+            : tr("Figure 3. The path in 3D (reference dashed when present; the stances are too close together "
+                 "at this scale to be marked).");
+    page.figure(caption3, figure3Height, [&](const QRectF& r) {
+        drawScaled(painter, r, kFigure3Width, [&view3D](QPainter& recorder, QSize size) {
             view3D.render(recorder, QRectF(QPointF(0, 0), QSizeF(size)));
         });
     });

@@ -4,6 +4,7 @@
 #include "MotionLanes.h"
 #include "PixelCurve.h"
 #include "PlotInteraction.h"
+#include "StanceMarkers.h"
 #include "TimeAxisNavigation.h"
 #include "metrics/Evaluation.h"
 
@@ -36,7 +37,6 @@ constexpr int kClickMaxMovement_px = 4;
 constexpr double kSpeedScaleQuantile = 0.99;
 
 const QColor kPathColour(40, 90, 170);
-constexpr double kMinStanceSpacing_px = 8.0;  // the 5-6 px stance markers closer than this merge into a line
 constexpr double kGhostTolerance_px = 3.0;  // the ghost's faint 2.5 px line: finer detail would not show
 
 // Functions, not globals: a QCPScatterStyle holds a QPixmap, which needs the application first.

@@ -1,6 +1,7 @@
 #include "TrajectoryView3D.h"
 
 #include "MotionLanes.h"
+#include "StanceMarkers.h"
 #include "TrajectoryView2D.h"  // nearestSampleAtTime, shared so both views mark the same sample
 
 #include <Eigen/Geometry>
@@ -421,7 +422,8 @@ TrajectoryView3D::ViewTransform TrajectoryView3D::viewTransform(const QRectF& ta
 
 QRectF TrajectoryView3D::sceneArea(const QRectF& target) const
 {
-    // The path is fitted above the key, so the key at the bottom does not cover it.
+    // The path is fitted above the key, so the key at the bottom does not cover it. The key is
+    // measured with its stance entry, which the markers' spacing at this scale decides on.
     if (target.width() <= 1.0 || target.height() <= 1.0)
         return target;  // the unit square resetView() measures the scene in
     const QRectF legend = legendLayout(font(), target, legendEntries()).box;
@@ -494,8 +496,10 @@ void TrajectoryView3D::render(QPainter& painter, const QRectF& target) const
     drawOverlays(painter, view);
     drawPaths(painter, view, grid);
     drawAxisArrows(painter, view, target);
-    drawMarkers(painter, view, grid);
-    drawLegend(painter, target);
+    const QPolygonF stances = projectedStances(view);
+    const bool marked = stanceMarkersApart(stances);
+    drawMarkers(painter, view, grid, marked ? stances : QPolygonF());
+    drawLegend(painter, target, marked);
     drawOverlayLegend(painter, target);
     painter.restore();
 }
@@ -619,15 +623,30 @@ void TrajectoryView3D::drawInPieces(QPainter& painter, const QPolygonF& polyline
         painter.drawPolyline(polyline.constData() + first, static_cast<int>(std::min(kPiece + 1, polyline.size() - first)));
 }
 
-void TrajectoryView3D::drawMarkers(QPainter& painter, const ViewTransform& view, const Grid& grid) const
+QPolygonF TrajectoryView3D::projectedStances(const ViewTransform& view) const
+{
+    QPolygonF stances;
+    if (!result_ || positions().empty())
+        return stances;
+    stances.reserve(static_cast<qsizetype>(result_->steps.size()));
+    for (const Step& step : result_->steps)
+        stances << view(step.position_m);
+    return stances;
+}
+
+bool TrajectoryView3D::marksStances(const QRectF& target) const
+{
+    ensureScene();
+    return stanceMarkersApart(projectedStances(viewTransform(target)));
+}
+
+void TrajectoryView3D::drawMarkers(QPainter& painter, const ViewTransform& view, const Grid& grid,
+                                   const QPolygonF& stances) const
 {
     if (!result_ || positions().empty())
         return;
     // One call for all stances: a long walk has thousands, and ellipses one by one cost more
     // than the whole path.
-    QPolygonF stances;
-    for (const Step& step : result_->steps)
-        stances << view(step.position_m);
     painter.setPen(QPen(kStanceColour, 5.2, Qt::SolidLine, Qt::RoundCap));
     painter.drawPoints(stances);
     drawStart(painter, view(positions().front()));
@@ -642,7 +661,7 @@ void TrajectoryView3D::drawMarkers(QPainter& painter, const ViewTransform& view,
     drawCursor(painter, view(cursor));
 }
 
-std::vector<std::pair<QString, TrajectoryView3D::LegendIcon>> TrajectoryView3D::legendEntries() const
+std::vector<std::pair<QString, TrajectoryView3D::LegendIcon>> TrajectoryView3D::legendEntries(bool withStances) const
 {
     using Icon = LegendIcon;
     const auto line = [](QPen pen) {
@@ -664,7 +683,8 @@ std::vector<std::pair<QString, TrajectoryView3D::LegendIcon>> TrajectoryView3D::
         entries.emplace_back(tr("Reference"), line(QPen(kReferenceColour, 1.5, Qt::DashLine)));
     if (!ghost_m_.empty())
         entries.emplace_back(tr("Before the last change"), line(QPen(kGhostColour, 2.0)));
-    entries.emplace_back(tr("Stance"), drawStance);
+    if (withStances)
+        entries.emplace_back(tr("Stance"), drawStance);
     entries.emplace_back(tr("Start"), drawStart);
     entries.emplace_back(tr("End"), drawEnd);
     if (!std::isnan(timeCursor_s_))
@@ -711,9 +731,9 @@ QRectF TrajectoryView3D::legendRect(const QSizeF& size) const
     return legendLayout(font(), QRectF(QPointF(0, 0), size), legendEntries()).box;
 }
 
-void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target) const
+void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target, bool withStances) const
 {
-    const auto entries = legendEntries();
+    const auto entries = legendEntries(withStances);
     const LegendLayout layout = legendLayout(painter.font(), target, entries);
     if (layout.box.isEmpty())
         return;  // a very small view needs its room for the path more than for the key

@@ -91,6 +91,10 @@ public:
     using QWidget::render;
     /// Draws the current view (without the toolbar) into any painter; paintEvent uses it too.
     void render(QPainter& painter, const QRectF& target) const;
+    /// Whether the stances are marked when the view is rendered into target: only while they stand
+    /// apart on screen (stanceMarkersApart); a long walk seen whole has them a pixel or two apart,
+    /// and zooming in brings them back. The key lists them only then.
+    bool marksStances(const QRectF& target) const;
     /// Where a point (metres, navigation frame) appears when the view is rendered into target.
     QPointF project(const Eigen::Vector3d& position_m, const QRectF& target) const;
 
@@ -128,9 +132,12 @@ private:
                                 const std::vector<std::size_t>& indices, double floorZ_m) const;
     static void drawInPieces(QPainter& painter, const QPolygonF& polyline);
     void drawPaths(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
-    void drawMarkers(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
+    /// The stances (the steps' positions) on screen, in walking order.
+    QPolygonF projectedStances(const ViewTransform& view) const;
+    /// Start, end, time cursor, and the stance dots given (none when they would merge).
+    void drawMarkers(QPainter& painter, const ViewTransform& view, const Grid& grid, const QPolygonF& stances) const;
     using LegendIcon = std::function<void(QPainter&, const QPointF&)>;
-    std::vector<std::pair<QString, LegendIcon>> legendEntries() const;
+    std::vector<std::pair<QString, LegendIcon>> legendEntries(bool withStances = true) const;
     struct LegendLayout {
         QFont font;
         QRectF box;  ///< empty: no room
@@ -141,7 +148,7 @@ private:
     /// One column in the view's font, or in a smaller one, or two columns: the first that fits.
     static LegendLayout legendLayout(const QFont& font, const QRectF& target,
                                      const std::vector<std::pair<QString, LegendIcon>>& entries);
-    void drawLegend(QPainter& painter, const QRectF& target) const;
+    void drawLegend(QPainter& painter, const QRectF& target, bool withStances) const;
     void drawMotionColouredPath(QPainter& painter, const ViewTransform& view) const;
     void drawOverlays(QPainter& painter, const ViewTransform& view) const;
     void drawGhost(QPainter& painter, const ViewTransform& view) const;
