@@ -21,6 +21,7 @@
 
 #include "AnalysisSession.h"
 #include "AppSettings.h"
+#include "DeferredReplot.h"
 #include "LiveViews.h"
 #include "MainWindow.h"
 #include "Recorder.h"
@@ -84,6 +85,12 @@ public:
                 replotted_.insert(plot);
                 replot_ms_[name] += plot->replotTime();
             });
+            // A view may redraw only the layers a new estimate changed (the signal rows' bands).
+            if (auto* deferred = plot->findChild<DeferredReplot*>(QString(), Qt::FindDirectChildrenOnly))
+                QObject::connect(deferred, &DeferredReplot::layersReplotted, this, [this, plot, name](double ms) {
+                    replotted_.insert(plot);
+                    replot_ms_[name] += ms;
+                });
         }
         window.installEventFilter(this);
     }

@@ -1,5 +1,6 @@
 #include "SignalPlots.h"
 #include "DecimatedGraph.h"
+#include "DeferredReplot.h"
 #include "LegendChecks.h"
 #include "WarningOverlay.h"
 #include "detect/StanceDetector.h"
@@ -257,6 +258,51 @@ private slots:
             QVERIFY2(bandPixelsAt(plots, row, standing_s) > rowHeight / 2, qPrintable(QString::number(static_cast<int>(row))));
             QVERIFY(bandPixelsAt(plots, row, swinging_s) <= 2);
         }
+    }
+
+    void aNewEstimateRedrawsOnlyTheBandsAndEventsYetLooksAsIfDrawnAfresh()
+    {
+        // A slider move: the same recording, other stances. The rows, legend and lane stay, so the
+        // curves' paint buffer is kept and only the bands and gait events are drawn again; the
+        // window must then look exactly as a plot drawn from scratch with the new result.
+        const Walk walk = simulatedWalk(false, false);
+        Parameters wider;
+        wider.zv_log_always = 5.5;  // the simulated swings' statistic rises through 4-6.5
+        const auto other = std::make_shared<const Result>(runPipeline(*walk.recording, wider).result);
+        QVERIFY(other->flags.stance != walk.result->flags.stance);
+        QVERIFY(walk.result->warnings.empty() && other->warnings.empty() && !other->gaitEvents.empty());
+
+        SignalPlots plots;
+        plots.setRecording(walk.recording);
+        plots.setResult(walk.result);
+        QVERIFY(showLaidOut(plots));
+        auto* deferred = plots.plot()->findChild<DeferredReplot*>();
+        QVERIFY(deferred != nullptr);
+        QTRY_VERIFY(!deferred->isPending());
+        const QImage before = plots.plot()->grab().toImage();
+        QSignalSpy wholeReplots(plots.plot(), &QCustomPlot::afterReplot);
+        QSignalSpy layerReplots(deferred, &DeferredReplot::layersReplotted);
+        plots.setResult(other);
+        QTRY_COMPARE(layerReplots.count(), 1);
+        QCOMPARE(wholeReplots.count(), 0);
+        const QImage after = plots.plot()->grab().toImage();
+
+        SignalPlots fresh;
+        fresh.setRecording(walk.recording);
+        fresh.setResult(other);
+        QVERIFY(showLaidOut(fresh));
+        QTRY_VERIFY(!fresh.plot()->findChild<DeferredReplot*>()->isPending());
+        const QImage expected = fresh.plot()->grab().toImage();
+        QCOMPARE(after.size(), expected.size());
+        QVERIFY(after != before);
+        QVERIFY(after == expected);
+
+        // A result without stances changes the legend: the whole plot is drawn again.
+        Result standing = *other;
+        std::fill(standing.flags.stance.begin(), standing.flags.stance.end(), std::uint8_t(0));
+        plots.setResult(std::make_shared<const Result>(standing));
+        QTRY_COMPARE(wholeReplots.count(), 1);
+        QVERIFY(!legendNames(plots, QStringLiteral("Stance")));
     }
 
     void warningsAreShadedInEveryRowWithALane()

@@ -28,9 +28,18 @@ namespace {
 using Channel = SignalPlots::Channel;
 using Row = SignalPlots::Row;
 
+/// Whether two lists of warnings show the same: kinds, spans and messages.
+bool sameWarningSpans(const std::vector<PlausibilityWarning>& a, const std::vector<PlausibilityWarning>& b)
+{
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const PlausibilityWarning& x, const PlausibilityWarning& y) {
+        return x.kind == y.kind && x.start_s == y.start_s && x.end_s == y.end_s && x.message == y.message;
+    });
+}
+
 constexpr double kValueMargin = 1.1;   // value axes get 5 % air above and below the data
 const QString kStanceLayer = QStringLiteral("stance");
 const QString kCursorLayer = QStringLiteral("cursor");
+const QString kGaitEventLayer = QStringLiteral("gaitEvents");
 const QColor kStanceBrush(250, 200, 110, 90);  // light amber: a pale grey band on paper
 
 struct ChannelInfo {
@@ -129,8 +138,11 @@ SignalPlots::SignalPlots(QWidget* parent)
     plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     plot_->addLayer(kStanceLayer, plot_->layer(QStringLiteral("main")), QCustomPlot::limBelow);
     plot_->addLayer(kCursorLayer, plot_->layer(QStringLiteral("legend")), QCustomPlot::limBelow);
-    // Its own paint buffer: moving the cursor redraws one line per row, not 180k-sample graphs.
-    plot_->layer(kCursorLayer)->setMode(QCPLayer::lmBuffered);
+    plot_->addLayer(kGaitEventLayer, plot_->layer(QStringLiteral("main")), QCustomPlot::limAbove);
+    // Paint buffers of their own: moving the cursor redraws one line per row, and a new estimate
+    // of the same recording its stance bands and gait events, not the 180k-sample curves between.
+    for (const QString& layer : {kCursorLayer, kStanceLayer, kGaitEventLayer})
+        plot_->layer(layer)->setMode(QCPLayer::lmBuffered);
 
     createRows();
     createGraphs();
@@ -198,6 +210,7 @@ void SignalPlots::createGaitEventMarks()
         graph->setLineStyle(QCPGraph::lsNone);
         graph->setScatterStyle(QCPScatterStyle(shape, colour, colour, 8));
         graph->setSelectable(QCP::stNone);
+        graph->setLayer(kGaitEventLayer);
         return graph;
     };
     heelStrikes_ = marks(tr("Heel strike"), QCPScatterStyle::ssTriangleInverted, QColor(40, 40, 40));
@@ -325,9 +338,17 @@ void SignalPlots::plotSignals(const Recording& recording)
 
 void SignalPlots::setResult(std::shared_ptr<const Result> result)
 {
+    const bool hadStances = !rows_.front().stance->isEmpty(), hadGaitEvents = !heelStrikes_->data()->isEmpty();
+    const bool sameWarnings = sameWarningSpans(warnings_->warnings(), result ? result->warnings : std::vector<PlausibilityWarning>());
     result_ = std::move(result);
     plotStanceShading();
     plotGaitEvents();
+    if (sameWarnings && hadStances == !rows_.front().stance->isEmpty() && hadGaitEvents == !heelStrikes_->data()->isEmpty()) {
+        // The rows, their legend and the warning lane stay as they are: only the bands and the
+        // event marks are drawn again, over the curves' kept buffer.
+        replot_->requestLayers({plot_->layer(kStanceLayer), plot_->layer(kGaitEventLayer)});
+        return;
+    }
     arrangeRows();  // the legend gains or loses its stance entry, the warning lane comes or goes
     replot_->request();
 }
