@@ -283,9 +283,11 @@ private slots:
         QVERIFY(!view.marksStances(target));
         QCOMPARE(stanceColouredPixels(rendered(view, view.size())), 0);
         QVERIFY(pathColouredPixels(rendered(view, view.size())) > 500);
+        const double keyWithoutStances = view.legendRect(view.size()).height();
 
         wheel(view, target.center().toPoint(), 8);  // 1.2^8: about 4 times closer
         QVERIFY(view.marksStances(target));
+        QVERIFY(view.legendRect(view.size()).height() > keyWithoutStances);  // a row more
         QVERIFY(stanceColouredPixels(rendered(view, view.size())) > 100);
         view.resetView();
         QVERIFY(!view.marksStances(target));

@@ -728,7 +728,8 @@ QRectF TrajectoryView3D::legendRect(const QSizeF& size) const
     ensureScene();
     if (positions().empty() && reference_m_.empty())
         return {};
-    return legendLayout(font(), QRectF(QPointF(0, 0), size), legendEntries()).box;
+    const QRectF target(QPointF(0, 0), size);
+    return legendLayout(font(), target, legendEntries(marksStances(target))).box;
 }
 
 void TrajectoryView3D::drawLegend(QPainter& painter, const QRectF& target, bool withStances) const
