@@ -390,9 +390,15 @@ bool TrajectoryView2D::layOutForPrinting()
 void TrajectoryView2D::showStanceMarkersIfApart()
 {
     // Half an hour seen whole puts 1500 stances a pixel or two apart on a 300-pixel plot: the path
-    // became an orange line. Zoomed in that far apart, they come back. The axes share one scale.
-    const double perMetre_px = std::abs(plot_->xAxis->coordToPixel(1.0) - plot_->xAxis->coordToPixel(0.0));
-    const bool apart = medianStride_m_ == 0.0 || medianStride_m_ * perMetre_px >= kMinStanceSpacing_px;
+    // became an orange line. Zoomed in that far apart, they come back (the 3D view's rule too).
+    // In walking order, from the steps: the graph keeps its points sorted by x.
+    const PixelMap toPixels(plot_->xAxis, plot_->yAxis);
+    QPolygonF markers;
+    if (result_) {
+        for (const Step& step : result_->steps)
+            markers << toPixels(step.position_m.x(), step.position_m.y());
+    }
+    const bool apart = stanceMarkersApart(markers);
     if (apart == stances_->visible())
         return;
     stances_->setVisible(apart);
@@ -622,15 +628,10 @@ void TrajectoryView2D::showPathAndMarkers(bool grown)
         path_->setPoints(positions);
     for (QCPGraph* graph : {stances_, start_, end_})
         graph->data()->clear();
-    std::vector<double> strides;
     if (result_) {
-        for (const Step& step : result_->steps) {
+        for (const Step& step : result_->steps)
             stances_->addData(step.position_m.x(), step.position_m.y());
-            if (step.strideLength_m > 0.0)
-                strides.push_back(step.strideLength_m);
-        }
     }
-    medianStride_m_ = quantile(std::move(strides), 0.5);  // 0 without strides: the markers are shown
     if (!positions.empty()) {
         start_->addData(positions.front().x(), positions.front().y());
         end_->addData(positions.back().x(), positions.back().y());

@@ -109,8 +109,8 @@ protected:
 private:
     void createLegendRow();
     void wrapLegendToWidth();
-    /// Draws (and lists) the stance markers only where the median stride is a few pixels or more
-    /// on screen: a long walk seen whole would be a row of dots hiding its path.
+    /// Draws (and lists) the stance markers only while they stand apart on screen
+    /// (stanceMarkersApart): a long walk seen whole would be a row of dots hiding its path.
     void showStanceMarkersIfApart();
     void createColourScale();
     void showColourScale(bool show);
@@ -143,7 +143,6 @@ private:
     QCPMarginGroup* colourScaleMargins_;
 
     std::shared_ptr<const Result> result_;
-    double medianStride_m_ = 0.0;  ///< of result_'s steps, for showStanceMarkersIfApart
     std::vector<Eigen::Vector3d> referencePositions_m_;
     Colouring colouring_ = Colouring::None;
     double timeCursor_s_;

@@ -43,18 +43,21 @@ struct BulkAllocator {
     T* allocate(std::size_t n)
     {
         const std::size_t bytes = n * sizeof(T);
-        void* p = bytes < 2 * bulk::kHugePage_bytes ? std::malloc(bytes) : bulk::allocate(bytes);
+        void* p = isBulk(n) ? bulk::allocate(bytes) : std::malloc(bytes);
         if (p == nullptr)
             throw std::bad_alloc();
         return static_cast<T*>(p);
     }
     void deallocate(T* p, std::size_t n) noexcept
     {
-        if (n * sizeof(T) < 2 * bulk::kHugePage_bytes)
-            std::free(p);
-        else
+        if (isBulk(n))
             bulk::deallocate(p);
+        else
+            std::free(p);
     }
+    /// Blocks of two huge pages or more come from bulk::, smaller ones from malloc; allocate and
+    /// deallocate must agree.
+    static bool isBulk(std::size_t n) { return n * sizeof(T) >= 2 * bulk::kHugePage_bytes; }
 
     /// resize() default-initialises instead of zeroing.
     template <typename U>
