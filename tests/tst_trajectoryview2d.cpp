@@ -389,6 +389,34 @@ private slots:
         QVERIFY(stances->visible());
     }
 
+    void stanceMarkersOfLapsAreSpacedInWalkingOrder()
+    {
+        // Twenty 300 m lines 8 m apart, walked to and fro, a stance every 1.4 m: a pixel or two
+        // apart seen whole. Taken in x order, as the graph keeps them, neighbours would lie on
+        // adjacent lines, 8 m (over 10 px) apart, and the dots would cover the path.
+        Result result;
+        for (int line = 0; line < 20; ++line)
+            for (int i = 0; i <= 214; ++i) {
+                const double along = 1.4 * (line % 2 == 0 ? i : 214 - i) + 0.01 * line;
+                Step step;
+                step.position_m = Eigen::Vector3d(along, 8.0 * line, 0.0);
+                step.strideLength_m = 1.4;
+                result.time_s.push_back(1.1 * double(result.steps.size()));
+                result.position_m.push_back(step.position_m);
+                result.steps.push_back(step);
+            }
+        TrajectoryView2D view;
+        view.resize(600, 400);
+        view.showResult(result);
+        view.grab();
+        QCPGraph* stances = nullptr;
+        for (int g = 0; g < view.plot()->graphCount(); ++g)
+            if (view.plot()->graph(g)->name() == QStringLiteral("Stance"))
+                stances = view.plot()->graph(g);
+        QVERIFY(stances);
+        QVERIFY(!stances->visible());
+    }
+
     void referenceOverlayIsPresentOnlyWhenGiven()
     {
         const Result& result = rectangleResult();
