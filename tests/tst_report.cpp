@@ -126,8 +126,6 @@ private slots:
         QVERIFY2(!negativeZero.hasMatch(), qPrintable(negativeZero.captured()));
     }
 
-    // The step table counts stance phases from 1, as the window's table does: the first row is
-    // step 1 and the last the number of stance phases.
     void aLongWalksPathFigureLeavesOutItsStanceMarkers()
     {
         // 600 m straight on: strides of 1.4 m are about 2 px apart on the page's path figures, so
@@ -152,6 +150,8 @@ private slots:
         QVERIFY(shortWalk.contains("Figure 3. The path in 3D (stance positions as dots"));
     }
 
+    // The step table counts stance phases from 1, as the window's table does: the first row is
+    // step 1 and the last the number of stance phases.
     void stepTableNumbersFromOne()
     {
         QTemporaryDir dir;

@@ -139,6 +139,19 @@ double metresPerPixelRatio(QCustomPlot* plot)
 
 }  // namespace
 
+namespace {
+
+/// The view's stance markers (the graph named "Stance"), or nullptr.
+QCPGraph* stanceGraph(const TrajectoryView2D& view)
+{
+    for (int g = 0; g < view.plot()->graphCount(); ++g)
+        if (view.plot()->graph(g)->name() == QStringLiteral("Stance"))
+            return view.plot()->graph(g);
+    return nullptr;
+}
+
+}  // namespace
+
 class TestTrajectoryView2D : public QObject {
     Q_OBJECT
 private slots:
@@ -361,10 +374,7 @@ private slots:
         view.resize(600, 400);
         view.showResult(result);
         view.grab();
-        QCPGraph* stances = nullptr;
-        for (int g = 0; g < view.plot()->graphCount(); ++g)
-            if (view.plot()->graph(g)->name() == QStringLiteral("Stance"))
-                stances = view.plot()->graph(g);
+        QCPGraph* stances = stanceGraph(view);
         QVERIFY(stances);
         QCOMPARE(stances->data()->size(), 1501);
         QVERIFY(!stances->visible());
@@ -409,10 +419,7 @@ private slots:
         view.resize(600, 400);
         view.showResult(result);
         view.grab();
-        QCPGraph* stances = nullptr;
-        for (int g = 0; g < view.plot()->graphCount(); ++g)
-            if (view.plot()->graph(g)->name() == QStringLiteral("Stance"))
-                stances = view.plot()->graph(g);
+        QCPGraph* stances = stanceGraph(view);
         QVERIFY(stances);
         QVERIFY(!stances->visible());
     }
