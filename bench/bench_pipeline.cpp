@@ -99,14 +99,14 @@ void BM_Pipeline(benchmark::State& state)
 {
     timeEstimates(state, thirtyMinuteWalk(), pipelineEstimate);
 }
-BENCHMARK(BM_Pipeline)->Unit(benchmark::kMillisecond)->MinTime(2.0)->Arg(0)->Arg(1)->Arg(2);
+BENCHMARK(BM_Pipeline)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0)->Arg(0)->Arg(1)->Arg(2);
 
 /// The whole offline pipeline on real walking data.
 void BM_PipelineRealWalk(benchmark::State& state)
 {
     timeEstimates(state, realMinuteWalk(), pipelineEstimate);
 }
-BENCHMARK(BM_PipelineRealWalk)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(0)->Arg(1)->Arg(2);
+BENCHMARK(BM_PipelineRealWalk)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0)->Arg(0)->Arg(1)->Arg(2);
 
 /// The same estimator written with dense N x N matrices (detector and alignment shared): the
 /// reference for the speed ratio, on the same data and settings as BM_PipelineRealWalk.

@@ -115,10 +115,12 @@ std::optional<RtsSmoother> smootherFor(const std::vector<ImuSample>& samples, co
 
 namespace {
 
-/// Runs the filter over every sample, then the smoother's backward pass when it is chosen; returns
-/// false if the callback cancelled.
+/// Runs the filter over every sample, then the smoother's backward pass when it is chosen, and
+/// afterStates once the states are final (with the smoother, while its variances are still being
+/// computed on another thread: afterStates must not touch errorStd); returns false if the callback
+/// cancelled.
 bool runFilter(const Recording& recording, const Parameters& params, const StanceFlags& flags,
-               const ProgressCallback& progress, Result& result)
+               const ProgressCallback& progress, Result& result, const std::function<void()>& afterStates)
 {
     const std::vector<ImuSample>& samples = recording.samples;
     const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
@@ -150,16 +152,18 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
             return false;
     }
     sources.finish(samples.back().time_s, result.methodNotes);
-    if (!smoother)
+    if (!smoother) {
+        afterStates();
         return true;
+    }
     result.forwardSpeed_mps.reserve(samples.size());
     for (const Eigen::Vector3d& velocity : result.velocity_mps)
         result.forwardSpeed_mps.push_back(static_cast<float>(velocity.norm()));
     result.rollPitchYaw_rad.resize(samples.size());
     result.errorStd.resize(samples.size());
-    return smoother->smooth(result, [&](double fraction) {
-        return !progress || progress(forwardShare + (1.0 - forwardShare) * fraction);
-    });
+    return smoother->smooth(
+        result, [&](double fraction) { return !progress || progress(forwardShare + (1.0 - forwardShare) * fraction); },
+        afterStates);
 }
 
 double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
@@ -269,14 +273,20 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
     const auto start = std::chrono::steady_clock::now();
     Result& result = output.result;
     result.flags = detectStance(recording.samples, params);
-    const bool completed = params.estimatorKind() == EstimatorKind::Feliz
-                               ? runFelizIntegrator(recording, params, progress, result)
-                               : runFilter(recording, params, result.flags, progress, result);
+    // postProcess reads no standard deviations, so it overlaps the smoother's variances (runFilter).
+    const auto finishStates = [&] { postProcess(recording, params, result); };
+    bool completed = false;
+    if (params.estimatorKind() == EstimatorKind::Feliz) {
+        completed = runFelizIntegrator(recording, params, progress, result);
+        if (completed)
+            finishStates();
+    } else {
+        completed = runFilter(recording, params, result.flags, progress, result, finishStates);
+    }
     if (!completed) {
         result.cancelled = true;
         return output;
     }
-    postProcess(recording, params, result);
     result.summary.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (progress)
         progress(1.0);

@@ -2,7 +2,11 @@
 
 #include "nav/Attitude.h"
 
+#include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
+#include <future>
 
 namespace footpath {
 
@@ -212,11 +216,9 @@ PropagationStep RtsSmoother::propagationInto(std::size_t k) const
 }
 
 template <int N>
-void RtsSmoother::writeSmoothed(Result& result, std::size_t k, const Eigen::Matrix<double, N, 1>& correction,
-                                const Eigen::Matrix<double, N, 1>& variance) const
+void RtsSmoother::writeSmoothedState(Result& result, std::size_t k, const Eigen::Matrix<double, N, 1>& correction) const
 {
     using E = ErrorStateEkf;
-    constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
     // The running states in the filter's order: attitude, (gyro bias,) position, velocity, (acc bias).
     constexpr int pos = N == E::kStates ? E::kPos : E::kPos - 3;
     constexpr int vel = pos + 3;
@@ -231,29 +233,64 @@ void RtsSmoother::writeSmoothed(Result& result, std::size_t k, const Eigen::Matr
         result.gyroBias_radps[k] += correction.template segment<3>(E::kGyroBias);
         result.accBias_mps2[k] += correction.template segment<3>(E::kAccBias);
     }
-    if (k < result.errorStd.size()) {
-        Eigen::Matrix<float, 15, 1>& sigma = result.errorStd[k];
-        if constexpr (N != E::kStates)
-            sigma.setZero();
-        for (int i = 0; i < N; ++i)
-            sigma(filterIndex(i)) = static_cast<float>(std::sqrt(std::max(0.0, variance(i))));
-    }
 }
 
-bool RtsSmoother::smooth(Result& result, const std::function<bool(double fraction)>& keepGoing) const
+bool RtsSmoother::smooth(Result& result, const std::function<bool(double fraction)>& keepGoing,
+                         const std::function<void()>& afterStates) const
+{
+    if (samples_ == 0 || result.position_m.size() != samples_) {
+        if (afterStates)
+            afterStates();
+        return true;
+    }
+    // The variances on a second thread: the passes share nothing but what capture() stored. The
+    // fraction reported is the mean of the two passes'; keepGoing is asked on this thread only.
+    std::atomic_bool stop{false};
+    std::atomic<double> variancesDone{0.0};
+    auto variances = std::async(std::launch::async, [this, &result, &stop, &variancesDone] {
+        return smoothVariances(result.errorStd, [&stop, &variancesDone](double fraction) {
+            variancesDone.store(fraction, std::memory_order_relaxed);
+            return !stop.load(std::memory_order_relaxed);
+        });
+    });
+    const auto keepGoingAt = [&](double statesDone) {
+        return !keepGoing || keepGoing(0.5 * (statesDone + variancesDone.load(std::memory_order_relaxed)));
+    };
+    bool completed = smoothStates(result, keepGoingAt);
+    if (completed && afterStates)
+        afterStates();
+    using namespace std::chrono_literals;
+    while (completed && variances.wait_for(20ms) != std::future_status::ready)
+        completed = keepGoingAt(1.0);
+    stop = !completed;
+    return variances.get() && completed;
+}
+
+bool RtsSmoother::smoothStates(Result& result, const std::function<bool(double fraction)>& keepGoing) const
 {
     if (samples_ == 0 || result.position_m.size() != samples_)
         return true;
     if (active_.size() == 15)
-        return positionObserved_ ? smoothBackward<Carried<15, true>>(result, keepGoing)
-                                 : smoothBackward<Carried<15, false>>(result, keepGoing);
-    return positionObserved_ ? smoothBackward<Carried<9, true>>(result, keepGoing)
-                             : smoothBackward<Carried<9, false>>(result, keepGoing);
+        return positionObserved_ ? smoothStatesAs<Carried<15, true>>(result, keepGoing)
+                                 : smoothStatesAs<Carried<15, false>>(result, keepGoing);
+    return positionObserved_ ? smoothStatesAs<Carried<9, true>>(result, keepGoing)
+                             : smoothStatesAs<Carried<9, false>>(result, keepGoing);
+}
+
+bool RtsSmoother::smoothVariances(std::vector<Eigen::Matrix<float, 15, 1>>& errorStd,
+                                  const std::function<bool(double fraction)>& keepGoing) const
+{
+    if (samples_ == 0 || errorStd.size() != samples_)
+        return true;
+    if (active_.size() == 15)
+        return positionObserved_ ? smoothVariancesAs<Carried<15, true>>(errorStd, keepGoing)
+                                 : smoothVariancesAs<Carried<15, false>>(errorStd, keepGoing);
+    return positionObserved_ ? smoothVariancesAs<Carried<9, true>>(errorStd, keepGoing)
+                             : smoothVariancesAs<Carried<9, false>>(errorStd, keepGoing);
 }
 
 template <class C>
-void RtsSmoother::filteredRows(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows,
-                               Eigen::Matrix<double, C::running, 1>& diagonal) const
+void RtsSmoother::carriedRowsOf(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows) const
 {
     // P(k|k) is symmetric: its rows of the carried states are its columns of them.
     const double* packed = record(k);
@@ -263,152 +300,233 @@ void RtsSmoother::filteredRows(std::size_t k, Eigen::Matrix<double, C::size, C::
                 carriedRows(C::carriedIndex(i), j) = *packed;
             if (C::carriedIndex(j) >= 0)
                 carriedRows(C::carriedIndex(j), i) = *packed;
-            if (i == j)
-                diagonal(i) = *packed;
         }
 }
 
 template <class C>
-void RtsSmoother::transitionBackward(Eigen::Matrix<double, C::size, 1>& adjoint,
-                                     Eigen::Matrix<double, C::size, C::size>& information,
-                                     const PropagationStep& step) const
+void RtsSmoother::filteredVarianceOf(std::size_t k, Eigen::Matrix<double, C::running, 1>& diagonal) const
 {
-    // mu = Phi^T mu and L = Phi^T L Phi with Phi = I + the blocks of eq. 26: (att, gyro bias) and
-    // (vel, acc bias) dt C, (pos, vel) dt I, (vel, att) -dt S(a_n); of these only the blocks
-    // between carried states (C::pos is -1 when position is not carried). Each block reads a block
-    // the later ones change, so the order matters: biases, then attitude, then velocity.
-    if (!(step.dt_s > 0.0))
-        return;
-    const Eigen::Matrix3d velFromAtt = -step.dt_s * skew(step.navSpecificForce);
-    const Eigen::Matrix3d velFromAttT = velFromAtt.transpose();
-    auto& l = information;
-    if constexpr (C::biases) {
-        const Eigen::Matrix3d biasGain = step.dt_s * step.bodyToNav;
-        const Eigen::Matrix3d biasGainT = biasGain.transpose();
-        adjoint.template segment<3>(C::gyroBias) += biasGainT * adjoint.template segment<3>(C::att);
-        adjoint.template segment<3>(C::accBias) += biasGainT * adjoint.template segment<3>(C::vel);
-        l.template middleCols<3>(C::gyroBias) += l.template middleCols<3>(C::att).lazyProduct(biasGain);
-        l.template middleCols<3>(C::accBias) += l.template middleCols<3>(C::vel).lazyProduct(biasGain);
-        l.template middleCols<3>(C::att) += l.template middleCols<3>(C::vel).lazyProduct(velFromAtt);
-        if constexpr (C::pos >= 0)
-            l.template middleCols<3>(C::vel) += step.dt_s * l.template middleCols<3>(C::pos);
-        l.template middleRows<3>(C::gyroBias) += biasGainT.lazyProduct(l.template middleRows<3>(C::att));
-        l.template middleRows<3>(C::accBias) += biasGainT.lazyProduct(l.template middleRows<3>(C::vel));
-    } else {
-        l.template middleCols<3>(C::att) += l.template middleCols<3>(C::vel).lazyProduct(velFromAtt);
-        if constexpr (C::pos >= 0)
-            l.template middleCols<3>(C::vel) += step.dt_s * l.template middleCols<3>(C::pos);
-    }
-    adjoint.template segment<3>(C::att) += velFromAttT * adjoint.template segment<3>(C::vel);
-    l.template middleRows<3>(C::att) += velFromAttT.lazyProduct(l.template middleRows<3>(C::vel));
-    if constexpr (C::pos >= 0) {
-        adjoint.template segment<3>(C::vel) += step.dt_s * adjoint.template segment<3>(C::pos);
-        l.template middleRows<3>(C::vel) += step.dt_s * l.template middleRows<3>(C::pos);
+    const double* packed = record(k);
+    for (int j = 0; j < C::running; ++j) {
+        packed += j;  // the column's entries above the diagonal
+        diagonal(j) = *packed++;
     }
 }
 
 namespace {
 
-/// One update run backwards (the class comment's mu~ and L~) on the carried states of C, with Rows
-/// rows: fixed for the usual ZUPT (3) and ZUPT+ZARU (6) updates that select states, so Eigen
-/// unrolls them; Eigen::Dynamic for any other.
-template <class C, int Rows>
-void updateBackward(const double* record, Eigen::Matrix<double, C::size, 1>& adjoint,
-                    Eigen::Matrix<double, C::size, C::size>& information)
+/// Phi = I + the blocks of eq. 26: (att, gyro bias) and (vel, acc bias) dt C, (pos, vel) dt I,
+/// (vel, att) -dt S(a_n); the backward pass needs only the blocks between carried states (C::pos
+/// is -1 when position is not carried).
+template <class C>
+struct TransitionBlocks {
+    // Also transposed, as matrices: a product with a transpose expression sums in another order.
+    Eigen::Matrix3d velFromAtt, velFromAttT, biasGain, biasGainT;  // biasGain: with bias states only
+    double dt_s;
+    explicit TransitionBlocks(const PropagationStep& step)
+        : velFromAtt(-step.dt_s * skew(step.navSpecificForce)), velFromAttT(velFromAtt.transpose()), dt_s(step.dt_s)
+    {
+        if constexpr (C::biases) {
+            biasGain = step.dt_s * step.bodyToNav;
+            biasGainT = biasGain.transpose();
+        }
+    }
+};
+
+/// mu = Phi^T mu. Each block reads a block the later ones change, so the order matters: biases,
+/// then attitude, then velocity.
+template <class C>
+void transitionAdjointBackward(Eigen::Matrix<double, C::size, 1>& adjoint, const TransitionBlocks<C>& phi)
 {
-    constexpr int N = C::running, M = C::size;
-    constexpr int MaxRows = Rows == Eigen::Dynamic ? kMaxRows : Rows;
+    if constexpr (C::biases) {
+        adjoint.template segment<3>(C::gyroBias) += phi.biasGainT * adjoint.template segment<3>(C::att);
+        adjoint.template segment<3>(C::accBias) += phi.biasGainT * adjoint.template segment<3>(C::vel);
+    }
+    adjoint.template segment<3>(C::att) += phi.velFromAttT * adjoint.template segment<3>(C::vel);
+    if constexpr (C::pos >= 0)
+        adjoint.template segment<3>(C::vel) += phi.dt_s * adjoint.template segment<3>(C::pos);
+}
+
+/// L = Phi^T L Phi: first L Phi (columns), then Phi^T times it (rows), in transitionAdjointBackward's order.
+template <class C>
+void transitionInformationBackward(Eigen::Matrix<double, C::size, C::size>& l, const TransitionBlocks<C>& phi)
+{
+    if constexpr (C::biases) {
+        l.template middleCols<3>(C::gyroBias) += l.template middleCols<3>(C::att).lazyProduct(phi.biasGain);
+        l.template middleCols<3>(C::accBias) += l.template middleCols<3>(C::vel).lazyProduct(phi.biasGain);
+        l.template middleCols<3>(C::att) += l.template middleCols<3>(C::vel).lazyProduct(phi.velFromAtt);
+        if constexpr (C::pos >= 0)
+            l.template middleCols<3>(C::vel) += phi.dt_s * l.template middleCols<3>(C::pos);
+        l.template middleRows<3>(C::gyroBias) += phi.biasGainT.lazyProduct(l.template middleRows<3>(C::att));
+        l.template middleRows<3>(C::accBias) += phi.biasGainT.lazyProduct(l.template middleRows<3>(C::vel));
+    } else {
+        l.template middleCols<3>(C::att) += l.template middleCols<3>(C::vel).lazyProduct(phi.velFromAtt);
+        if constexpr (C::pos >= 0)
+            l.template middleCols<3>(C::vel) += phi.dt_s * l.template middleCols<3>(C::pos);
+    }
+    l.template middleRows<3>(C::att) += phi.velFromAttT.lazyProduct(l.template middleRows<3>(C::vel));
+    if constexpr (C::pos >= 0)
+        l.template middleRows<3>(C::vel) += phi.dt_s * l.template middleRows<3>(C::pos);
+}
+
+/// One stored update (the class comment's mu~ and L~) on the carried states of C, with Rows rows:
+/// fixed for the usual ZUPT (3) and ZUPT+ZARU (6) updates that select states, so Eigen unrolls
+/// them; Eigen::Dynamic for any other.
+template <class C, int Rows>
+struct StoredUpdate {
+    static constexpr int N = C::running, M = C::size;
+    static constexpr int MaxRows = Rows == Eigen::Dynamic ? kMaxRows : Rows;
     using CarriedGain = Eigen::Matrix<double, M, Rows, 0, M, MaxRows>;
     using RowsMatrix = Eigen::Matrix<double, Rows, Rows, 0, MaxRows, MaxRows>;
     using RowsVector = Eigen::Matrix<double, Rows, 1, 0, MaxRows, 1>;
-    auto& l = information;
-    const int m = static_cast<int>(record[0]);
-    const bool selects = record[1] != 0.0;
-    const double* h = record + 2;
-    const double* gainData = h + (selects ? m : m * N);
-    const Eigen::Map<const RowsVector> weightedInnovation(gainData + N * m, m);
-    const Eigen::Map<const RowsMatrix> inverseS(gainData + N * m + m, m, m);
-    CarriedGain gain(M, m);  // K's rows of the carried states: mu and L are zero in the others
-    for (int j = 0; j < m; ++j)
-        for (int a = 0; a < M; ++a)
-            gain(a, j) = gainData[N * j + C::runningIndex(a)];
+    using CarriedH = Eigen::Matrix<double, Rows, M, Eigen::RowMajor, MaxRows, M>;
 
-    // B = L K and C = K^T B + S^-1, from L and mu before the update.
-    const CarriedGain b = l.lazyProduct(gain);
-    const RowsMatrix c = gain.transpose().lazyProduct(b) + inverseS;
-    const RowsVector t = weightedInnovation - gain.transpose().lazyProduct(adjoint);
-    // mu += H^T t, L = L - B H - (B H)^T + H^T C H.
-    if (selects) {
-        for (int j = 0; j < m; ++j) {
-            const int state = C::carriedIndex(static_cast<int>(h[j]));
-            adjoint(state) += t(j);
-            l.col(state) -= b.col(j);
-            l.row(state) -= b.col(j).transpose();
-        }
-        for (int j = 0; j < m; ++j)
-            for (int i = 0; i < m; ++i)
-                l(C::carriedIndex(static_cast<int>(h[i])), C::carriedIndex(static_cast<int>(h[j]))) += c(i, j);
-    } else {
-        Eigen::Matrix<double, Rows, M, Eigen::RowMajor, MaxRows, M> hm(m, M);
-        for (int r = 0; r < m; ++r)
+    int rows;
+    bool selects;
+    const double* h;
+    const double* gainData;
+    CarriedGain gain;  // K's rows of the carried states: mu and L are zero in the others
+
+    explicit StoredUpdate(const double* record)
+        : rows(static_cast<int>(record[0])), selects(record[1] != 0.0), h(record + 2),
+          gainData(h + (selects ? rows : rows * N)), gain(M, rows)
+    {
+        for (int j = 0; j < rows; ++j)
+            for (int a = 0; a < M; ++a)
+                gain(a, j) = gainData[N * j + C::runningIndex(a)];
+    }
+    Eigen::Map<const RowsVector> weightedInnovation() const { return {gainData + N * rows, rows}; }
+    Eigen::Map<const RowsMatrix> inverseS() const { return {gainData + N * rows + rows, rows, rows}; }
+    /// The carried state row j selects (selects only).
+    int selected(int j) const { return C::carriedIndex(static_cast<int>(h[j])); }
+    CarriedH carriedH() const
+    {
+        CarriedH hm(rows, M);
+        for (int r = 0; r < rows; ++r)
             for (int a = 0; a < M; ++a)
                 hm(r, a) = h[r * N + C::runningIndex(a)];
-        adjoint += hm.transpose().lazyProduct(t);
-        const Eigen::Matrix<double, M, M> bh = b.lazyProduct(hm);
-        l -= bh + bh.transpose();
-        l += hm.transpose().lazyProduct(c.lazyProduct(hm));
+        return hm;
     }
-    // The steps above keep L symmetric only in exact arithmetic, and its antisymmetric part,
-    // which they do not damp, grows from rounding to overflow over a few thousand strides
-    // (a 30-minute walk's smoothed variances were infinite before its 20th minute). The
-    // correction does not depend on L; the variances do.
-    l = 0.5 * (l + l.transpose()).eval();
+
+    /// mu += H^T t with t = S^-1 z - K^T mu.
+    void adjointBackward(Eigen::Matrix<double, M, 1>& adjoint) const
+    {
+        const RowsVector t = weightedInnovation() - gain.transpose().lazyProduct(adjoint);
+        if (selects) {
+            for (int j = 0; j < rows; ++j)
+                adjoint(selected(j)) += t(j);
+        } else {
+            adjoint += carriedH().transpose().lazyProduct(t);
+        }
+    }
+
+    /// L = L - B H - (B H)^T + H^T C H with B = L K and C = K^T B + S^-1.
+    void informationBackward(Eigen::Matrix<double, M, M>& l) const
+    {
+        const CarriedGain b = l.lazyProduct(gain);
+        const RowsMatrix c = gain.transpose().lazyProduct(b) + inverseS();
+        if (selects) {
+            for (int j = 0; j < rows; ++j) {
+                l.col(selected(j)) -= b.col(j);
+                l.row(selected(j)) -= b.col(j).transpose();
+            }
+            for (int j = 0; j < rows; ++j)
+                for (int i = 0; i < rows; ++i)
+                    l(selected(i), selected(j)) += c(i, j);
+        } else {
+            const CarriedH hm = carriedH();
+            const Eigen::Matrix<double, M, M> bh = b.lazyProduct(hm);
+            l -= bh + bh.transpose();
+            l += hm.transpose().lazyProduct(c.lazyProduct(hm));
+        }
+        // The steps above keep L symmetric only in exact arithmetic, and its antisymmetric part,
+        // which they do not damp, grows from rounding to overflow over a few thousand strides
+        // (a 30-minute walk's smoothed variances were infinite before its 20th minute). The
+        // correction does not depend on L; the variances do.
+        l = 0.5 * (l + l.transpose()).eval();
+    }
+};
+
+/// Runs visit(update) on sample k's stored updates, last one first, each as the StoredUpdate
+/// its rows call for.
+template <class C, class Visit>
+void forEachUpdateBackward(const double* first, const double* end, Visit&& visit)
+{
+    // Each record ends with its length.
+    while (end > first) {
+        const double* record = end - static_cast<std::size_t>(end[-1]);
+        end = record;
+        const bool selects = record[1] != 0.0;
+        if (selects && record[0] == 3.0)
+            visit(StoredUpdate<C, 3>(record));
+        else if (selects && record[0] == 6.0)
+            visit(StoredUpdate<C, 6>(record));
+        else
+            visit(StoredUpdate<C, Eigen::Dynamic>(record));
+    }
 }
 
 }  // namespace
 
-template <class C>
-void RtsSmoother::updatesBackward(std::size_t k, Eigen::Matrix<double, C::size, 1>& adjoint,
-                                  Eigen::Matrix<double, C::size, C::size>& information) const
+template <class C, class Visit>
+void RtsSmoother::updatesBackward(std::size_t k, Visit&& visit) const
 {
-    // Last update first: each record ends with its length.
-    for (std::size_t end = updateStart_[k + 1]; end > updateStart_[k];) {
-        const std::size_t begin = end - static_cast<std::size_t>(updateData_[end - 1]);
-        end = begin;
-        const double* record = updateData_.data() + begin;
-        const bool selects = record[1] != 0.0;
-        if (selects && record[0] == 3.0)
-            updateBackward<C, 3>(record, adjoint, information);
-        else if (selects && record[0] == 6.0)
-            updateBackward<C, 6>(record, adjoint, information);
-        else
-            updateBackward<C, Eigen::Dynamic>(record, adjoint, information);
-    }
+    forEachUpdateBackward<C>(updateData_.data() + updateStart_[k], updateData_.data() + updateStart_[k + 1],
+                             std::forward<Visit>(visit));
 }
 
 template <class C>
-bool RtsSmoother::smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing) const
+bool RtsSmoother::smoothStatesAs(Result& result, const std::function<bool(double fraction)>& keepGoing) const
 {
     constexpr int N = C::running, M = C::size;
     const std::size_t n = samples_;
-    // After the last sample nothing is measured: mu and L start at zero.
+    // After the last sample nothing is measured: mu starts at zero.
     Eigen::Matrix<double, M, 1> adjoint = Eigen::Matrix<double, M, 1>::Zero();
-    Eigen::Matrix<double, M, M> information = Eigen::Matrix<double, M, M>::Zero();
     Eigen::Matrix<double, M, N> carriedRows;  // P(k|k) in the carried states' rows
-    Eigen::Matrix<double, N, 1> filteredVariance;
     for (std::size_t k = n; k-- > 0;) {
         if (k >= 2)  // the pass walks memory backwards, which the hardware prefetcher follows poorly
             prefetch(record(k - 2), recordStride());
         if (k + 1 < n)
-            transitionBackward<C>(adjoint, information, propagationInto(k + 1));
-        filteredRows<C>(k, carriedRows, filteredVariance);
+            if (const PropagationStep step = propagationInto(k + 1); step.dt_s > 0.0)
+                transitionAdjointBackward<C>(adjoint, TransitionBlocks<C>(step));
+        carriedRowsOf<C>(k, carriedRows);
+        writeSmoothedState<N>(result, k, carriedRows.transpose().lazyProduct(adjoint));
+        updatesBackward<C>(k, [&adjoint](const auto& update) { update.adjointBackward(adjoint); });
+        if (keepGoing && k % kProgressInterval == 0 && !keepGoing(static_cast<double>(n - k) / static_cast<double>(n)))
+            return false;
+    }
+    return true;
+}
+
+template <class C>
+bool RtsSmoother::smoothVariancesAs(std::vector<Eigen::Matrix<float, 15, 1>>& errorStd,
+                                    const std::function<bool(double fraction)>& keepGoing) const
+{
+    constexpr int N = C::running, M = C::size;
+    constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
+    const std::size_t n = samples_;
+    // After the last sample nothing is measured: L starts at zero.
+    Eigen::Matrix<double, M, M> information = Eigen::Matrix<double, M, M>::Zero();
+    Eigen::Matrix<double, M, N> carriedRows;  // P(k|k) in the carried states' rows
+    Eigen::Matrix<double, N, 1> filteredVariance;
+    for (std::size_t k = n; k-- > 0;) {
+        if (k >= 2)
+            prefetch(record(k - 2), recordStride());
+        if (k + 1 < n)
+            if (const PropagationStep step = propagationInto(k + 1); step.dt_s > 0.0)
+                transitionInformationBackward<C>(information, TransitionBlocks<C>(step));
+        carriedRowsOf<C>(k, carriedRows);
+        filteredVarianceOf<C>(k, filteredVariance);
         // diag(P L P) as the columns of P's carried rows dotted with those of L times them.
         const Eigen::Matrix<double, M, N> informationTimesRows = information.lazyProduct(carriedRows);
-        Eigen::Matrix<double, N, 1> variance;
-        for (int i = 0; i < N; ++i)
-            variance(i) = filteredVariance(i) - carriedRows.col(i).dot(informationTimesRows.col(i));
-        writeSmoothed<N>(result, k, carriedRows.transpose().lazyProduct(adjoint), variance);
-        updatesBackward<C>(k, adjoint, information);
+        Eigen::Matrix<float, 15, 1>& sigma = errorStd[k];
+        if constexpr (N != ErrorStateEkf::kStates)
+            sigma.setZero();
+        for (int i = 0; i < N; ++i) {
+            const double variance = filteredVariance(i) - carriedRows.col(i).dot(informationTimesRows.col(i));
+            sigma(filterIndex(i)) = static_cast<float>(std::sqrt(std::max(0.0, variance)));
+        }
+        updatesBackward<C>(k, [&information](const auto& update) { update.informationBackward(information); });
         if (keepGoing && k % kProgressInterval == 0 && !keepGoing(static_cast<double>(n - k) / static_cast<double>(n)))
             return false;
     }

@@ -57,9 +57,18 @@ public:
     void capture(const ErrorStateEkf& ekf);
     /// The backward pass over the captured samples: replaces the per-sample states and errorStd of
     /// result (which must hold one entry per captured sample; attitude and errorStd are written
-    /// for every sample) by the smoothed ones. Returns false if keepGoing (asked now and then) said
-    /// stop; result is then partly smoothed.
-    bool smooth(Result& result, const std::function<bool(double fraction)>& keepGoing = {}) const;
+    /// for every sample) by the smoothed ones. The variances are computed on a second thread
+    /// (smoothStates and smoothVariances share nothing but what capture() stored); afterStates,
+    /// if given, runs on this thread as soon as the states are smoothed, while the variances may
+    /// still be, so it must not touch errorStd. Returns false if keepGoing (asked now and then, on
+    /// this thread) said stop; result is then partly smoothed and afterStates may not have run.
+    bool smooth(Result& result, const std::function<bool(double fraction)>& keepGoing = {},
+                const std::function<void()>& afterStates = {}) const;
+    /// The smoothed states alone: position, velocity, biases and attitude (written for every sample).
+    bool smoothStates(Result& result, const std::function<bool(double fraction)>& keepGoing = {}) const;
+    /// The smoothed standard deviations alone, into errorStd (one entry per captured sample).
+    bool smoothVariances(std::vector<Eigen::Matrix<float, 15, 1>>& errorStd,
+                         const std::function<bool(double fraction)>& keepGoing = {}) const;
 
     /// Storage for each sample, and for each update of rows state-selecting rows on top.
     std::size_t bytesPerSample() const;
@@ -74,24 +83,24 @@ private:
     const double* record(std::size_t k) const { return records_.data() + k * recordStride(); }
     Eigen::Matrix3d attitude(std::size_t k) const;
     void storeUpdate(const MeasurementUpdate& update);
-    /// The backward pass on fixed-size blocks of the carried states C (RtsSmoother.cpp: the
+    /// The two backward passes on fixed-size blocks of the carried states C (RtsSmoother.cpp: the
     /// running states, without position unless an update measures it), which Eigen unrolls.
     template <class C>
-    bool smoothBackward(Result& result, const std::function<bool(double fraction)>& keepGoing) const;
-    /// P(k|k)'s rows of the carried states and its diagonal.
+    bool smoothStatesAs(Result& result, const std::function<bool(double fraction)>& keepGoing) const;
     template <class C>
-    void filteredRows(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows,
-                      Eigen::Matrix<double, C::running, 1>& diagonal) const;
+    bool smoothVariancesAs(std::vector<Eigen::Matrix<float, 15, 1>>& errorStd,
+                           const std::function<bool(double fraction)>& keepGoing) const;
+    /// P(k|k)'s rows of the carried states; its diagonal.
+    template <class C>
+    void carriedRowsOf(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows) const;
+    template <class C>
+    void filteredVarianceOf(std::size_t k, Eigen::Matrix<double, C::running, 1>& diagonal) const;
     PropagationStep propagationInto(std::size_t k) const;
-    template <class C>
-    void transitionBackward(Eigen::Matrix<double, C::size, 1>& adjoint,
-                            Eigen::Matrix<double, C::size, C::size>& information, const PropagationStep& step) const;
-    template <class C>
-    void updatesBackward(std::size_t k, Eigen::Matrix<double, C::size, 1>& adjoint,
-                         Eigen::Matrix<double, C::size, C::size>& information) const;
+    /// Calls visit with each stored update of sample k, last one first (RtsSmoother.cpp, StoredUpdate).
+    template <class C, class Visit>
+    void updatesBackward(std::size_t k, Visit&& visit) const;
     template <int N>
-    void writeSmoothed(Result& result, std::size_t k, const Eigen::Matrix<double, N, 1>& correction,
-                       const Eigen::Matrix<double, N, 1>& variance) const;
+    void writeSmoothedState(Result& result, std::size_t k, const Eigen::Matrix<double, N, 1>& correction) const;
 
     std::vector<int> active_;  ///< error-state indices the filter runs (all 15, or 9 without biases)
     std::array<int, ErrorStateEkf::kStates> runningIndexOf_;  ///< index in active_ of each state, or -1
