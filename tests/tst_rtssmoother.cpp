@@ -9,6 +9,9 @@
 
 #include <QtTest>
 
+#include <cstring>
+#include <memory>
+
 using namespace footpath;
 
 namespace {
@@ -43,16 +46,25 @@ double largestStepError(const Result& result, const std::vector<Eigen::Vector3d>
     return largest;
 }
 
-/// The filter and smoother run by hand over a walk, the ZUPT made either by the block update (H
-/// selects the velocity) or as a general update through updateRows with the same H written out,
-/// which the smoother stores and runs backwards as a dense matrix.
-Result smoothByHand(const Recording& recording, bool zuptAsGeneralUpdate)
-{
-    const Parameters params;
-    const StanceFlags flags = detectStance(recording.samples, params);
-    ErrorStateEkf ekf(params, alignInitialAttitude(recording.samples, flags.stance, params).bodyToNav);
-    RtsSmoother smoother(params, ekf);
+/// The filter run by hand over a walk with a smoother capturing it, the ZUPT made either by the
+/// block update (H selects the velocity) or as a general update through updateRows with the same H
+/// written out, which the smoother stores and runs backwards as a dense matrix. The result holds
+/// the filtered states, ready for the backward pass.
+struct HandRun {
+    Parameters params;
+    std::unique_ptr<ErrorStateEkf> ekf;
+    std::unique_ptr<RtsSmoother> smoother;
     Result result;
+};
+
+std::unique_ptr<HandRun> filterByHand(const Recording& recording, bool zuptAsGeneralUpdate)
+{
+    auto run = std::make_unique<HandRun>();
+    const Parameters& params = run->params;
+    const StanceFlags flags = detectStance(recording.samples, params);
+    run->ekf = std::make_unique<ErrorStateEkf>(params, alignInitialAttitude(recording.samples, flags.stance, params).bodyToNav);
+    ErrorStateEkf& ekf = *run->ekf;
+    run->smoother = std::make_unique<RtsSmoother>(params, ekf);
     Eigen::MatrixXd h = Eigen::MatrixXd::Zero(3, ErrorStateEkf::kStates);
     h.middleCols<3>(ErrorStateEkf::kVel).setIdentity();
     const Eigen::VectorXd variance = Eigen::VectorXd::Constant(3, params.r_zupt_mps * params.r_zupt_mps);
@@ -64,12 +76,28 @@ Result smoothByHand(const Recording& recording, bool zuptAsGeneralUpdate)
             ekf.updateRows(h, ekf.state().velocity_mps, variance);
         else if (flags.stance[k])
             ekf.updateZeroVelocity();
-        recordState(result, sample.time_s, ekf.state());
-        result.errorStd.emplace_back();
-        smoother.capture(ekf);
+        recordState(run->result, sample.time_s, ekf.state());
+        run->result.errorStd.emplace_back();
+        run->smoother->capture(ekf);
     }
-    smoother.smooth(result);
-    return result;
+    return run;
+}
+
+Result smoothByHand(const Recording& recording, bool zuptAsGeneralUpdate)
+{
+    const std::unique_ptr<HandRun> run = filterByHand(recording, zuptAsGeneralUpdate);
+    run->smoother->smooth(run->result);
+    return std::move(run->result);
+}
+
+/// Whether a and b hold the same states and standard deviations to the last bit.
+bool sameToTheBit(const Result& a, const Result& b)
+{
+    const auto same = [](const auto& x, const auto& y) {
+        return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0;
+    };
+    return same(a.position_m, b.position_m) && same(a.velocity_mps, b.velocity_mps)
+           && same(a.rollPitchYaw_rad, b.rollPitchYaw_rad) && same(a.errorStd, b.errorStd);
 }
 
 Parameters fifteenStates()
@@ -172,6 +200,31 @@ private slots:
         QVERIFY2(correction > 1e-3, "the smoother should move the path");  // so agreeing means something
         QVERIFY2(position < 1e-9, qPrintable(QString::number(position)));
         QVERIFY2(sigma < 1e-6, qPrintable(QString::number(sigma)));
+    }
+
+    void theVariancesThreadChangesNoDigit()
+    {
+        // smooth() runs the variances on a second thread beside the states and afterStates; one
+        // pass after the other must give the same bits, and afterStates sees the smoothed states.
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), mtiClassSensor(100.0, 5));
+        for (const bool general : {false, true}) {
+            const std::unique_ptr<HandRun> parallel = filterByHand(walk.recording, general);
+            const std::unique_ptr<HandRun> sequential = filterByHand(walk.recording, general);
+            QVERIFY(sequential->smoother->smoothStates(sequential->result));
+            QVERIFY(sequential->smoother->smoothVariances(sequential->result.errorStd));
+            int afterStatesRuns = 0;
+            bool statesFinalThen = false;
+            QVERIFY(parallel->smoother->smooth(parallel->result, {}, [&] {
+                ++afterStatesRuns;
+                statesFinalThen = parallel->result.position_m == sequential->result.position_m
+                                  && parallel->result.rollPitchYaw_rad == sequential->result.rollPitchYaw_rad;
+            }));
+            QCOMPARE(afterStatesRuns, 1);
+            QVERIFY(statesFinalThen);
+            QVERIFY(sameToTheBit(parallel->result, sequential->result));
+            QVERIFY2(parallel->result.position_m != filterByHand(walk.recording, general)->result.position_m,
+                     "the backward pass should change the states");
+        }
     }
 
     void smoothedVariancesStayFiniteOnALongWalk()
