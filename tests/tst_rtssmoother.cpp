@@ -205,7 +205,8 @@ private slots:
     void theVariancesThreadChangesNoDigit()
     {
         // smooth() runs the variances on a second thread beside the states and afterStates; one
-        // pass after the other must give the same bits, and afterStates sees the smoothed states.
+        // pass after the other, and both in one pass, must give the same bits, and afterStates
+        // sees the smoothed states.
         const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), mtiClassSensor(100.0, 5));
         for (const bool general : {false, true}) {
             const std::unique_ptr<HandRun> parallel = filterByHand(walk.recording, general);
@@ -222,6 +223,10 @@ private slots:
             QCOMPARE(afterStatesRuns, 1);
             QVERIFY(statesFinalThen);
             QVERIFY(sameToTheBit(parallel->result, sequential->result));
+            // One thread: one pass carrying mu and L together.
+            const std::unique_ptr<HandRun> together = filterByHand(walk.recording, general);
+            QVERIFY(together->smoother->smooth(together->result, {}, {}, RtsSmoother::Threads::One));
+            QVERIFY(sameToTheBit(together->result, sequential->result));
             QVERIFY2(parallel->result.position_m != filterByHand(walk.recording, general)->result.position_m,
                      "the backward pass should change the states");
         }

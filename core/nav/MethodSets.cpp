@@ -77,14 +77,15 @@ bool applyToken(const std::string& token, Parameters& params, bool& statesNamed)
     return true;
 }
 
-ComparisonRow evaluateSet(const Recording& recording, const MethodSet& set, const std::atomic<bool>* cancel)
+ComparisonRow evaluateSet(const Recording& recording, const MethodSet& set, const std::atomic<bool>* cancel,
+                          RtsSmoother::Threads threads)
 {
     ComparisonRow row;
     row.set = set;
     ProgressCallback progress;
     if (cancel)
         progress = [cancel](double) { return !cancel->load(); };
-    row.output = runPipeline(recording, set.params, progress);
+    row.output = runPipeline(recording, set.params, progress, threads);
     const Result& result = row.output.result;
     if (!row.output.error.empty() || result.cancelled || result.position_m.empty())
         return row;
@@ -216,10 +217,11 @@ std::vector<ComparisonRow> runComparison(const Recording& recording, const std::
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     const std::size_t workers =
         std::min<std::size_t>(sets.size(), threads > 0 ? static_cast<std::size_t>(threads) : cores);
+    const RtsSmoother::Threads perRun = workers > 1 ? RtsSmoother::Threads::One : RtsSmoother::Threads::Two;
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
         for (std::size_t i = next++; i < sets.size(); i = next++)
-            rows[i] = evaluateSet(recording, sets[i], cancel);
+            rows[i] = evaluateSet(recording, sets[i], cancel, perRun);
     };
     std::vector<std::thread> pool;
     for (std::size_t w = 1; w < workers; ++w)

@@ -120,7 +120,8 @@ namespace {
 /// computed on another thread: afterStates must not touch errorStd); returns false if the callback
 /// cancelled.
 bool runFilter(const Recording& recording, const Parameters& params, const StanceFlags& flags,
-               const ProgressCallback& progress, Result& result, const std::function<void()>& afterStates)
+               const ProgressCallback& progress, Result& result, const std::function<void()>& afterStates,
+               RtsSmoother::Threads threads)
 {
     const std::vector<ImuSample>& samples = recording.samples;
     const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
@@ -163,7 +164,7 @@ bool runFilter(const Recording& recording, const Parameters& params, const Stanc
     result.errorStd.resize(samples.size());
     return smoother->smooth(
         result, [&](double fraction) { return !progress || progress(forwardShare + (1.0 - forwardShare) * fraction); },
-        afterStates);
+        afterStates, threads);
 }
 
 double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
@@ -264,7 +265,8 @@ void postProcess(const Recording& recording, const Parameters& params, Result& r
     result.warnings = checkPlausibility(result, params);
 }
 
-PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress)
+PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress,
+                           RtsSmoother::Threads threads)
 {
     PipelineOutput output;
     output.error = checkInput(recording, params);
@@ -281,7 +283,7 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
         if (completed)
             finishStates();
     } else {
-        completed = runFilter(recording, params, result.flags, progress, result, finishStates);
+        completed = runFilter(recording, params, result.flags, progress, result, finishStates, threads);
     }
     if (!completed) {
         result.cancelled = true;

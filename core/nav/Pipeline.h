@@ -27,9 +27,11 @@ struct PipelineOutput {
 /// The whole Guo 2015 pipeline as a pure function: stance detection, initial alignment, strapdown
 /// mechanization with the EKF (ZUPT/ZARU as enabled), then the per-step table and summary.
 /// Re-entrant: nothing is shared between calls, so the GUI may start a new run while an old one
-/// is being cancelled.
+/// is being cancelled. With the smoother the run uses a second thread for its variances unless
+/// threads is One (for a caller that runs several estimates at once, AutoTune and runComparison:
+/// their cores are busy already); the numbers are the same either way.
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
-                           const ProgressCallback& progress = {});
+                           const ProgressCallback& progress = {}, RtsSmoother::Threads threads = RtsSmoother::Threads::Two);
 
 /// Reserves room for n samples in result's per-sample vectors (time, state, attitude, biases).
 void reserveResult(Result& result, std::size_t n);

@@ -236,12 +236,18 @@ void RtsSmoother::writeSmoothedState(Result& result, std::size_t k, const Eigen:
 }
 
 bool RtsSmoother::smooth(Result& result, const std::function<bool(double fraction)>& keepGoing,
-                         const std::function<void()>& afterStates) const
+                         const std::function<void()>& afterStates, Threads threads) const
 {
-    if (samples_ == 0 || result.position_m.size() != samples_) {
+    if (samples_ == 0 || result.position_m.size() != samples_ || result.errorStd.size() != samples_) {
         if (afterStates)
             afterStates();
         return true;
+    }
+    if (threads == Threads::One) {
+        const bool completed = backwardPass(Pass::Both, &result, &result.errorStd, keepGoing);
+        if (completed && afterStates)
+            afterStates();
+        return completed;
     }
     // The variances on a second thread: the passes share nothing but what capture() stored. The
     // fraction reported is the mean of the two passes'; keepGoing is asked on this thread only.
@@ -270,11 +276,7 @@ bool RtsSmoother::smoothStates(Result& result, const std::function<bool(double f
 {
     if (samples_ == 0 || result.position_m.size() != samples_)
         return true;
-    if (active_.size() == 15)
-        return positionObserved_ ? smoothStatesAs<Carried<15, true>>(result, keepGoing)
-                                 : smoothStatesAs<Carried<15, false>>(result, keepGoing);
-    return positionObserved_ ? smoothStatesAs<Carried<9, true>>(result, keepGoing)
-                             : smoothStatesAs<Carried<9, false>>(result, keepGoing);
+    return backwardPass(Pass::States, &result, nullptr, keepGoing);
 }
 
 bool RtsSmoother::smoothVariances(std::vector<Eigen::Matrix<float, 15, 1>>& errorStd,
@@ -282,11 +284,25 @@ bool RtsSmoother::smoothVariances(std::vector<Eigen::Matrix<float, 15, 1>>& erro
 {
     if (samples_ == 0 || errorStd.size() != samples_)
         return true;
+    return backwardPass(Pass::Variances, nullptr, &errorStd, keepGoing);
+}
+
+bool RtsSmoother::backwardPass(Pass pass, Result* result, std::vector<Eigen::Matrix<float, 15, 1>>* errorStd,
+                               const std::function<bool(double fraction)>& keepGoing) const
+{
+    // Each pass on the carried states the filter's states and updates call for (Carried).
+    const auto on = [&](auto carried) {
+        using C = decltype(carried);
+        switch (pass) {
+        case Pass::States: return backwardPassAs<C, true, false>(result, errorStd, keepGoing);
+        case Pass::Variances: return backwardPassAs<C, false, true>(result, errorStd, keepGoing);
+        case Pass::Both: break;
+        }
+        return backwardPassAs<C, true, true>(result, errorStd, keepGoing);
+    };
     if (active_.size() == 15)
-        return positionObserved_ ? smoothVariancesAs<Carried<15, true>>(errorStd, keepGoing)
-                                 : smoothVariancesAs<Carried<15, false>>(errorStd, keepGoing);
-    return positionObserved_ ? smoothVariancesAs<Carried<9, true>>(errorStd, keepGoing)
-                             : smoothVariancesAs<Carried<9, false>>(errorStd, keepGoing);
+        return positionObserved_ ? on(Carried<15, true>()) : on(Carried<15, false>());
+    return positionObserved_ ? on(Carried<9, true>()) : on(Carried<9, false>());
 }
 
 template <class C>
@@ -301,16 +317,6 @@ void RtsSmoother::carriedRowsOf(std::size_t k, Eigen::Matrix<double, C::size, C:
             if (C::carriedIndex(j) >= 0)
                 carriedRows(C::carriedIndex(j), i) = *packed;
         }
-}
-
-template <class C>
-void RtsSmoother::filteredVarianceOf(std::size_t k, Eigen::Matrix<double, C::running, 1>& diagonal) const
-{
-    const double* packed = record(k);
-    for (int j = 0; j < C::running; ++j) {
-        packed += j;  // the column's entries above the diagonal
-        diagonal(j) = *packed++;
-    }
 }
 
 namespace {
@@ -447,6 +453,27 @@ struct StoredUpdate {
     }
 };
 
+/// A sample's smoothed standard deviations into sigma, from L and P(k|k): packed is its record
+/// (RtsSmoother::capture: the upper triangle column by column first; its diagonal is read from
+/// there rather than unpacked beforehand, which the single pass of both mu and L also felt),
+/// carriedRows P's carried rows.
+template <class C>
+void writeSmoothedStd(const double* packed, const Eigen::Matrix<double, C::size, C::size>& information,
+                      const Eigen::Matrix<double, C::size, C::running>& carriedRows, Eigen::Matrix<float, 15, 1>& sigma)
+{
+    constexpr int N = C::running, M = C::size;
+    constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
+    // diag(P L P) as the columns of P's carried rows dotted with those of L times them.
+    const Eigen::Matrix<double, M, N> informationTimesRows = information.lazyProduct(carriedRows);
+    if constexpr (N != ErrorStateEkf::kStates)
+        sigma.setZero();
+    for (int i = 0; i < N; ++i) {
+        packed += i;  // column i's entries above the diagonal
+        const double variance = *packed++ - carriedRows.col(i).dot(informationTimesRows.col(i));
+        sigma(filterIndex(i)) = static_cast<float>(std::sqrt(std::max(0.0, variance)));
+    }
+}
+
 /// Runs visit(update) on sample k's stored updates, last one first, each as the StoredUpdate
 /// its rows call for.
 template <class C, class Visit>
@@ -475,58 +502,39 @@ void RtsSmoother::updatesBackward(std::size_t k, Visit&& visit) const
                              std::forward<Visit>(visit));
 }
 
-template <class C>
-bool RtsSmoother::smoothStatesAs(Result& result, const std::function<bool(double fraction)>& keepGoing) const
+template <class C, bool States, bool Variances>
+bool RtsSmoother::backwardPassAs(Result* result, std::vector<Eigen::Matrix<float, 15, 1>>* errorStd,
+                                 const std::function<bool(double fraction)>& keepGoing) const
 {
     constexpr int N = C::running, M = C::size;
     const std::size_t n = samples_;
-    // After the last sample nothing is measured: mu starts at zero.
+    // After the last sample nothing is measured: mu and L start at zero. A pass carries only the
+    // one it needs; each sample's steps on mu and on L read nothing of the other.
     Eigen::Matrix<double, M, 1> adjoint = Eigen::Matrix<double, M, 1>::Zero();
+    Eigen::Matrix<double, M, M> information = Eigen::Matrix<double, M, M>::Zero();
     Eigen::Matrix<double, M, N> carriedRows;  // P(k|k) in the carried states' rows
     for (std::size_t k = n; k-- > 0;) {
         if (k >= 2)  // the pass walks memory backwards, which the hardware prefetcher follows poorly
             prefetch(record(k - 2), recordStride());
         if (k + 1 < n)
-            if (const PropagationStep step = propagationInto(k + 1); step.dt_s > 0.0)
-                transitionAdjointBackward<C>(adjoint, TransitionBlocks<C>(step));
+            if (const PropagationStep step = propagationInto(k + 1); step.dt_s > 0.0) {
+                const TransitionBlocks<C> phi(step);
+                if constexpr (States)
+                    transitionAdjointBackward<C>(adjoint, phi);
+                if constexpr (Variances)
+                    transitionInformationBackward<C>(information, phi);
+            }
         carriedRowsOf<C>(k, carriedRows);
-        writeSmoothedState<N>(result, k, carriedRows.transpose().lazyProduct(adjoint));
-        updatesBackward<C>(k, [&adjoint](const auto& update) { update.adjointBackward(adjoint); });
-        if (keepGoing && k % kProgressInterval == 0 && !keepGoing(static_cast<double>(n - k) / static_cast<double>(n)))
-            return false;
-    }
-    return true;
-}
-
-template <class C>
-bool RtsSmoother::smoothVariancesAs(std::vector<Eigen::Matrix<float, 15, 1>>& errorStd,
-                                    const std::function<bool(double fraction)>& keepGoing) const
-{
-    constexpr int N = C::running, M = C::size;
-    constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
-    const std::size_t n = samples_;
-    // After the last sample nothing is measured: L starts at zero.
-    Eigen::Matrix<double, M, M> information = Eigen::Matrix<double, M, M>::Zero();
-    Eigen::Matrix<double, M, N> carriedRows;  // P(k|k) in the carried states' rows
-    Eigen::Matrix<double, N, 1> filteredVariance;
-    for (std::size_t k = n; k-- > 0;) {
-        if (k >= 2)
-            prefetch(record(k - 2), recordStride());
-        if (k + 1 < n)
-            if (const PropagationStep step = propagationInto(k + 1); step.dt_s > 0.0)
-                transitionInformationBackward<C>(information, TransitionBlocks<C>(step));
-        carriedRowsOf<C>(k, carriedRows);
-        filteredVarianceOf<C>(k, filteredVariance);
-        // diag(P L P) as the columns of P's carried rows dotted with those of L times them.
-        const Eigen::Matrix<double, M, N> informationTimesRows = information.lazyProduct(carriedRows);
-        Eigen::Matrix<float, 15, 1>& sigma = errorStd[k];
-        if constexpr (N != ErrorStateEkf::kStates)
-            sigma.setZero();
-        for (int i = 0; i < N; ++i) {
-            const double variance = filteredVariance(i) - carriedRows.col(i).dot(informationTimesRows.col(i));
-            sigma(filterIndex(i)) = static_cast<float>(std::sqrt(std::max(0.0, variance)));
-        }
-        updatesBackward<C>(k, [&information](const auto& update) { update.informationBackward(information); });
+        if constexpr (States)
+            writeSmoothedState<N>(*result, k, carriedRows.transpose().lazyProduct(adjoint));
+        if constexpr (Variances)
+            writeSmoothedStd<C>(record(k), information, carriedRows, (*errorStd)[k]);
+        updatesBackward<C>(k, [&adjoint, &information](const auto& update) {
+            if constexpr (States)
+                update.adjointBackward(adjoint);
+            if constexpr (Variances)
+                update.informationBackward(information);
+        });
         if (keepGoing && k % kProgressInterval == 0 && !keepGoing(static_cast<double>(n - k) / static_cast<double>(n)))
             return false;
     }

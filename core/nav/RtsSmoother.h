@@ -62,8 +62,11 @@ public:
     /// if given, runs on this thread as soon as the states are smoothed, while the variances may
     /// still be, so it must not touch errorStd. Returns false if keepGoing (asked now and then, on
     /// this thread) said stop; result is then partly smoothed and afterStates may not have run.
+    /// Threads::One: one pass for both, then afterStates, for a caller that keeps every core busy
+    /// already (AutoTune); the same numbers.
+    enum class Threads { One, Two };
     bool smooth(Result& result, const std::function<bool(double fraction)>& keepGoing = {},
-                const std::function<void()>& afterStates = {}) const;
+                const std::function<void()>& afterStates = {}, Threads threads = Threads::Two) const;
     /// The smoothed states alone: position, velocity, biases and attitude (written for every sample).
     bool smoothStates(Result& result, const std::function<bool(double fraction)>& keepGoing = {}) const;
     /// The smoothed standard deviations alone, into errorStd (one entry per captured sample).
@@ -83,24 +86,26 @@ private:
     const double* record(std::size_t k) const { return records_.data() + k * recordStride(); }
     Eigen::Matrix3d attitude(std::size_t k) const;
     void storeUpdate(const MeasurementUpdate& update);
-    /// The two backward passes on fixed-size blocks of the carried states C (RtsSmoother.cpp: the
-    /// running states, without position unless an update measures it), which Eigen unrolls.
-    template <class C>
-    bool smoothStatesAs(Result& result, const std::function<bool(double fraction)>& keepGoing) const;
-    template <class C>
-    bool smoothVariancesAs(std::vector<Eigen::Matrix<float, 15, 1>>& errorStd,
-                           const std::function<bool(double fraction)>& keepGoing) const;
-    /// P(k|k)'s rows of the carried states; its diagonal.
+    /// What a backward pass computes: the states (mu), the variances (L) or both.
+    enum class Pass { States, Variances, Both };
+    bool backwardPass(Pass pass, Result* result, std::vector<Eigen::Matrix<float, 15, 1>>* errorStd,
+                      const std::function<bool(double fraction)>& keepGoing) const;
+    /// The backward pass on fixed-size blocks of the carried states C (RtsSmoother.cpp: the running
+    /// states, without position unless an update measures it), which Eigen unrolls; it writes
+    /// result's states if States, errorStd if Variances.
+    template <class C, bool States, bool Variances>
+    bool backwardPassAs(Result* result, std::vector<Eigen::Matrix<float, 15, 1>>* errorStd,
+                        const std::function<bool(double fraction)>& keepGoing) const;
+    /// P(k|k)'s rows of the carried states.
     template <class C>
     void carriedRowsOf(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows) const;
-    template <class C>
-    void filteredVarianceOf(std::size_t k, Eigen::Matrix<double, C::running, 1>& diagonal) const;
     PropagationStep propagationInto(std::size_t k) const;
     /// Calls visit with each stored update of sample k, last one first (RtsSmoother.cpp, StoredUpdate).
     template <class C, class Visit>
     void updatesBackward(std::size_t k, Visit&& visit) const;
     template <int N>
     void writeSmoothedState(Result& result, std::size_t k, const Eigen::Matrix<double, N, 1>& correction) const;
+
 
     std::vector<int> active_;  ///< error-state indices the filter runs (all 15, or 9 without biases)
     std::array<int, ErrorStateEkf::kStates> runningIndexOf_;  ///< index in active_ of each state, or -1

@@ -77,12 +77,13 @@ std::vector<Evaluation> evaluateAll(const std::vector<const Recording*>& recordi
         evaluation.warnings.resize(recordings.size());
     }
     const std::size_t tasks = candidates.size() * recordings.size();
+    const RtsSmoother::Threads perRun = threads > 1 ? RtsSmoother::Threads::One : RtsSmoother::Threads::Two;
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
         const ProgressCallback keepGoing = [cancel](double) { return !(cancel && cancel->load()); };
         for (std::size_t task = next++; task < tasks; task = next++) {
             const std::size_t c = task / recordings.size(), r = task % recordings.size();
-            const PipelineOutput output = runPipeline(*recordings[r], candidates[c], keepGoing);
+            const PipelineOutput output = runPipeline(*recordings[r], candidates[c], keepGoing, perRun);
             if (!output.error.empty() || output.result.cancelled)
                 continue;
             evaluations[c].scores[r] = tuneScore(*recordings[r], output.result, criterion);
