@@ -454,9 +454,8 @@ struct StoredUpdate {
 };
 
 /// A sample's smoothed standard deviations into sigma, from L and P(k|k): packed is its record
-/// (RtsSmoother::capture: the upper triangle column by column first; its diagonal is read from
-/// there rather than unpacked beforehand, which the single pass of both mu and L also felt),
-/// carriedRows P's carried rows.
+/// (RtsSmoother::capture: the upper triangle column by column first, whose diagonal is read here
+/// straight from the record), carriedRows P's carried rows.
 template <class C>
 void writeSmoothedStd(const double* packed, const Eigen::Matrix<double, C::size, C::size>& information,
                       const Eigen::Matrix<double, C::size, C::running>& carriedRows, Eigen::Matrix<float, 15, 1>& sigma)
@@ -529,7 +528,7 @@ bool RtsSmoother::backwardPassAs(Result* result, std::vector<Eigen::Matrix<float
             writeSmoothedState<N>(*result, k, carriedRows.transpose().lazyProduct(adjoint));
         if constexpr (Variances)
             writeSmoothedStd<C>(record(k), information, carriedRows, (*errorStd)[k]);
-        updatesBackward<C>(k, [&adjoint, &information](const auto& update) {
+        updatesBackward<C>(k, [&](const auto& update) {
             if constexpr (States)
                 update.adjointBackward(adjoint);
             if constexpr (Variances)
