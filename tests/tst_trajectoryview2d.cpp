@@ -137,13 +137,13 @@ double metresPerPixelRatio(QCustomPlot* plot)
     return xPerPixel / yPerPixel;
 }
 
-}  // namespace
-
-namespace {
-
-/// The view's stance markers (the graph named "Stance"), or nullptr.
-QCPGraph* stanceGraph(const TrajectoryView2D& view)
+/// The view's stance markers (the graph named "Stance") once it has shown result at 600 x 400,
+/// or nullptr.
+QCPGraph* stanceGraphShowing(TrajectoryView2D& view, const Result& result)
 {
+    view.resize(600, 400);
+    view.showResult(result);
+    view.grab();
     for (int g = 0; g < view.plot()->graphCount(); ++g)
         if (view.plot()->graph(g)->name() == QStringLiteral("Stance"))
             return view.plot()->graph(g);
@@ -371,10 +371,7 @@ private slots:
             result.steps.push_back(step);
         }
         TrajectoryView2D view;
-        view.resize(600, 400);
-        view.showResult(result);
-        view.grab();
-        QCPGraph* stances = stanceGraph(view);
+        QCPGraph* stances = stanceGraphShowing(view, result);
         QVERIFY(stances);
         QCOMPARE(stances->data()->size(), 1501);
         QVERIFY(!stances->visible());
@@ -416,10 +413,7 @@ private slots:
                 result.steps.push_back(step);
             }
         TrajectoryView2D view;
-        view.resize(600, 400);
-        view.showResult(result);
-        view.grab();
-        QCPGraph* stances = stanceGraph(view);
+        QCPGraph* stances = stanceGraphShowing(view, result);
         QVERIFY(stances);
         QVERIFY(!stances->visible());
     }

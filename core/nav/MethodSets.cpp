@@ -217,7 +217,7 @@ std::vector<ComparisonRow> runComparison(const Recording& recording, const std::
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     const std::size_t workers =
         std::min<std::size_t>(sets.size(), threads > 0 ? static_cast<std::size_t>(threads) : cores);
-    const RtsSmoother::Threads perRun = workers > 1 ? RtsSmoother::Threads::One : RtsSmoother::Threads::Two;
+    const RtsSmoother::Threads perRun = threadsPerRun(workers);
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
         for (std::size_t i = next++; i < sets.size(); i = next++)

@@ -33,6 +33,13 @@ struct PipelineOutput {
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
                            const ProgressCallback& progress = {}, RtsSmoother::Threads threads = RtsSmoother::Threads::Two);
 
+/// The threads each of concurrentRuns runs at once may use: two alone, one when the runs already
+/// share the cores (AutoTune, runComparison; a second thread each made tuning 11 % slower).
+inline RtsSmoother::Threads threadsPerRun(std::size_t concurrentRuns)
+{
+    return concurrentRuns > 1 ? RtsSmoother::Threads::One : RtsSmoother::Threads::Two;
+}
+
 /// Reserves room for n samples in result's per-sample vectors (time, state, attitude, biases).
 void reserveResult(Result& result, std::size_t n);
 

@@ -77,7 +77,7 @@ std::vector<Evaluation> evaluateAll(const std::vector<const Recording*>& recordi
         evaluation.warnings.resize(recordings.size());
     }
     const std::size_t tasks = candidates.size() * recordings.size();
-    const RtsSmoother::Threads perRun = threads > 1 ? RtsSmoother::Threads::One : RtsSmoother::Threads::Two;
+    const RtsSmoother::Threads perRun = threadsPerRun(static_cast<std::size_t>(std::max(threads, 1)));
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
         const ProgressCallback keepGoing = [cancel](double) { return !(cancel && cancel->load()); };
