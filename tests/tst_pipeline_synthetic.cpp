@@ -282,6 +282,43 @@ private slots:
         QCOMPARE(calls, 2);
     }
 
+    void theDetectorsThreadChangesNoDigit()
+    {
+        // runPipeline decides the stance flags on a second thread while the filter follows them
+        // (Threads::Two); decided first (Threads::One) they must give the same bits, for every
+        // detector and estimator, and for a walk that starts mid-swing (the alignment waits for
+        // its first stance).
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), mtiClassSensor(100.0, 7));
+        Recording midSwing = walk.recording;
+        midSwing.samples.erase(midSwing.samples.begin(), midSwing.samples.begin() + 260);  // 2 s still, a stance, 0.15 s
+        std::vector<std::pair<const char*, Parameters>> settings{{"defaults", Parameters()},
+                                                                  {"15 states, ZARU", withBiasStates()}};
+        for (const DetectorKind detector : {DetectorKind::PaperC1C2C3, DetectorKind::Mbgtd}) {
+            Parameters params;
+            params.detector = static_cast<int>(detector);
+            settings.emplace_back(detector == DetectorKind::Mbgtd ? "MBGTD" : "paper detector", params);
+        }
+        for (const EstimatorKind estimator : {EstimatorKind::Ekf, EstimatorKind::Feliz}) {
+            Parameters params;
+            params.estimator = static_cast<int>(estimator);
+            settings.emplace_back(estimator == EstimatorKind::Ekf ? "filter alone" : "Feliz", params);
+        }
+        for (const Recording* recording : {&walk.recording, static_cast<const Recording*>(&midSwing)}) {
+            for (const auto& [setting, params] : settings) {
+                const Result two = runPipeline(*recording, params, {}, RtsSmoother::Threads::Two).result;
+                const Result one = runPipeline(*recording, params, {}, RtsSmoother::Threads::One).result;
+                QVERIFY2(!two.steps.empty(), setting);
+                QVERIFY2(recording == &walk.recording || !two.flags.stance.front(), setting);
+                QVERIFY2(two.flags.stance == one.flags.stance && two.flags.logStatistic == one.flags.logStatistic,
+                         setting);
+                QVERIFY2(two.position_m == one.position_m && two.velocity_mps == one.velocity_mps, setting);
+                QVERIFY2(two.rollPitchYaw_rad == one.rollPitchYaw_rad && two.errorStd == one.errorStd, setting);
+                QVERIFY2(two.steps.size() == one.steps.size() && two.warnings.size() == one.warnings.size(), setting);
+                QCOMPARE(two.summary.pathLength_m, one.summary.pathLength_m);
+            }
+        }
+    }
+
     void progressReachesOne()
     {
         const SimulatedWalk walk = simulateWalk(straightLinePath(5.0), mtiClassSensor());

@@ -1,6 +1,8 @@
 #include "TestData.h"
 #include "detect/StanceDetector.h"
+#include "detect/StanceFlagsAhead.h"
 #include "io/Import.h"
+#include "nav/Alignment.h"
 
 #include <QDirIterator>
 #include <QtTest>
@@ -184,6 +186,28 @@ std::vector<std::pair<const char*, Parameters>> statisticDetectorSettings()
             {"windows off the sample grid", offTheGrid}};
 }
 
+/// Rest and swing in turn (0.5 s and 0.6 s at 100 Hz) for count samples: many stances, many of the
+/// statistic detectors' batches.
+std::vector<ImuSample> alternatingWalk(std::size_t count)
+{
+    std::vector<ImuSample> samples = restingSamples(count, 100.0);
+    for (std::size_t k = 0; k < count; ++k) {
+        if (k % 110 < 50)
+            continue;
+        const double phase = static_cast<double>(k % 110 - 50) / 60.0 * 2.0 * M_PI;
+        samples[k].gyr_radps = Eigen::Vector3d(0.2, 3.0 * std::sin(phase), 0.1);
+        samples[k].acc_mps2 = Eigen::Vector3d(4.0 * std::sin(2.0 * phase), 0.5, 9.81 + 6.0 * std::cos(phase));
+    }
+    return samples;
+}
+
+std::vector<std::pair<const char*, Parameters>> everyDetector()
+{
+    std::vector<std::pair<const char*, Parameters>> settings = statisticDetectorSettings();
+    settings.emplace_back("paper C1/C2/C3", guo2015Parameters());
+    return settings;
+}
+
 }  // namespace
 
 class TestStanceDetector : public QObject {
@@ -344,6 +368,74 @@ private slots:
                 QVERIFY2(live.logStatistic == offline.logStatistic, where.constData());
                 QVERIFY2(live.logThreshold == offline.logThreshold, where.constData());
             }
+        }
+    }
+
+    void flagsDecidedAheadAreFinalWhenTheReaderGetsThem()
+    {
+        // The filter follows the detector's thread sample by sample (runPipeline): each sample's
+        // flags it is allowed to read must already be detectStance's, for every detector.
+        const std::vector<ImuSample> samples = alternatingWalk(20000);
+        for (const auto& [setting, params] : everyDetector()) {
+            const StanceFlags expected = detectStance(samples, params);
+            std::size_t stanceStarts = 0;
+            for (std::size_t k = 1; k < samples.size(); ++k)
+                stanceStarts += expected.stance[k] && !expected.stance[k - 1];
+            QVERIFY2(stanceStarts > 20, setting);  // flags that change in most of the detector's batches
+            for (const auto mode : {StanceFlagsAhead::Mode::Concurrent, StanceFlagsAhead::Mode::First}) {
+                StanceFlags flags;
+                StanceFlagsAhead ahead(samples, params, flags, mode);
+                QCOMPARE(ahead.waitForAlignment(samples, 1.0), std::size_t(0));  // starts at rest
+                std::size_t differing = 0;
+                for (std::size_t k = 0; k < samples.size(); ++k) {
+                    ahead.waitFor(k + 1);
+                    const SampleStanceFlags read = flagsAt(flags, k);
+                    differing += read.stance != expected.stance[k] || read.c != expected.c[k]
+                                 || read.logStatistic != expected.logStatistic[k]
+                                 || read.logThreshold != expected.logThreshold[k];
+                }
+                QVERIFY2(differing == 0, setting);
+                ahead.waitForAll();
+                QVERIFY2(flags.stance == expected.stance && flags.c1 == expected.c1 && flags.c2 == expected.c2
+                             && flags.c3 == expected.c3,
+                         setting);
+            }
+        }
+    }
+
+    void alignmentWaitsForTheFirstStanceAndItsPeriod()
+    {
+        // A walk that starts moving: the alignment reads the flags up to its first stance and the
+        // alignment period after it; one that never rests: every flag, and it starts at 0.
+        std::vector<ImuSample> samples = alternatingWalk(5000);
+        samples.erase(samples.begin(), samples.begin() + 60);  // starts mid-swing
+        const Parameters params;
+        const StanceFlags expected = detectStance(samples, params);
+        StanceFlags flags;
+        StanceFlagsAhead ahead(samples, params, flags, StanceFlagsAhead::Mode::Concurrent);
+        const std::size_t first = ahead.waitForAlignment(samples, params.alignment_s);
+        QVERIFY(first > 0);
+        QCOMPARE(first, alignmentStart(expected.stance));
+
+        std::vector<ImuSample> moving = restingSamples(3000, 100.0);
+        for (std::size_t k = 0; k < moving.size(); ++k)
+            moving[k].gyr_radps = Eigen::Vector3d(0.0, 4.0 + std::sin(0.1 * static_cast<double>(k)), 0.0);
+        StanceFlags none;
+        StanceFlagsAhead never(moving, guo2015Parameters(), none, StanceFlagsAhead::Mode::Concurrent);
+        QCOMPARE(never.waitForAlignment(moving, 1.0), std::size_t(0));
+        QCOMPARE(std::count(none.stance.begin(), none.stance.end(), 1), 0);
+    }
+
+    void aReaderThatLeavesEarlyStopsTheDetector()
+    {
+        // A cancelled run destroys the flags before the detector is done: it must stop and be
+        // joined, not run on into freed memory (ThreadSanitizer and AddressSanitizer builds).
+        const std::vector<ImuSample> samples = alternatingWalk(200000);
+        for (int run = 0; run < 20; ++run) {
+            StanceFlags flags;
+            StanceFlagsAhead ahead(samples, Parameters(), flags, StanceFlagsAhead::Mode::Concurrent);
+            if (run % 2 == 1)
+                ahead.waitFor(1);
         }
     }
 

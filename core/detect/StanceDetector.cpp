@@ -146,9 +146,19 @@ double stanceDetectorLatency_s(const Parameters& params)
 
 StanceFlags detectStance(const std::vector<ImuSample>& samples, const Parameters& params)
 {
-    if (params.detectorKind() == DetectorKind::PaperC1C2C3)
-        return detectPaperStance(samples, params);
-    return StatisticStanceDetector::detect(samples, params);
+    StanceFlags flags;
+    detectStanceInto(samples, params, flags, {});
+    return flags;
+}
+
+bool detectStanceInto(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags,
+                      const DecidedCallback& decided)
+{
+    if (params.detectorKind() != DetectorKind::PaperC1C2C3)
+        return StatisticStanceDetector::detectInto(samples, params, flags, decided);
+    // Its centred windows and median filter run over whole vectors: the flags are final at once.
+    flags = detectPaperStance(samples, params);
+    return !decided || decided(samples.size());
 }
 
 StanceFlags detectPaperStance(const std::vector<ImuSample>& samples, const Parameters& params)

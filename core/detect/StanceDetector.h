@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -15,6 +16,17 @@ namespace footpath {
 /// The stance flags of the chosen detector (params.detector): the paper's C1/C2/C3 detector below, or
 /// one of the statistic detectors of detect/StatisticDetectors.h. Offline and non-causal.
 StanceFlags detectStance(const std::vector<ImuSample>& samples, const Parameters& params);
+
+/// Told that the flags of the first decidedSamples samples are final; returns false to stop.
+using DecidedCallback = std::function<bool(std::size_t decidedSamples)>;
+
+/// detectStance into flags, calling decided each time more leading samples' flags are final (the
+/// statistic detectors every batch of samples, the paper's detector once), the last time with
+/// samples.size(). A reader on another thread may use the flags decided so far while the rest are
+/// being decided (runPipeline runs the filter behind the detector): flags are sized before the first
+/// call and not reallocated afterwards. Returns false if decided said stop.
+bool detectStanceInto(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags,
+                      const DecidedCallback& decided);
 
 /// Guo 2015 section 2.3: C1 (|a| within [acc_min, acc_max]), C2 (std of |a| over the centred
 /// window below acc_std_max; the paper's text says "above", eq. 20 and the physics say below),
@@ -62,6 +74,20 @@ inline void setFlags(StanceFlags& flags, std::size_t k, const SampleStanceFlags&
     flags.stance[k] = sample.stance;
     flags.logStatistic[k] = sample.logStatistic;
     flags.logThreshold[k] = sample.logThreshold;
+}
+
+/// Sample k's entry of each per-sample vector.
+inline SampleStanceFlags flagsAt(const StanceFlags& flags, std::size_t k)
+{
+    SampleStanceFlags sample;
+    sample.c1 = flags.c1[k];
+    sample.c2 = flags.c2[k];
+    sample.c3 = flags.c3[k];
+    sample.c = flags.c[k];
+    sample.stance = flags.stance[k];
+    sample.logStatistic = flags.logStatistic[k];
+    sample.logThreshold = flags.logThreshold[k];
+    return sample;
 }
 
 /// A stance detector run causally, on samples as they arrive: each sample's flags are handed out

@@ -131,6 +131,13 @@ void StatisticStanceDetector::finish(std::deque<SampleStanceFlags>& decided)
 StanceFlags StatisticStanceDetector::detect(const std::vector<ImuSample>& samples, const Parameters& params)
 {
     StanceFlags flags;
+    detectInto(samples, params, flags, {});
+    return flags;
+}
+
+bool StatisticStanceDetector::detectInto(const std::vector<ImuSample>& samples, const Parameters& params,
+                                         StanceFlags& flags, const DecidedCallback& decided)
+{
     resizeFlags(flags, samples.size());
     std::size_t next = 0;  // every sample is decided once, in order
     const auto emit = [&flags, &next](const SampleStanceFlags& sample) { setFlags(flags, next++, sample); };
@@ -138,9 +145,11 @@ StanceFlags StatisticStanceDetector::detect(const std::vector<ImuSample>& sample
     for (std::size_t end = 0; end < samples.size();) {
         end = std::min(samples.size(), end + kOfflineBatch);
         detector.advance(samples.data(), 0, end, false, emit);
+        if (decided && !decided(next))
+            return false;
     }
     detector.advance(samples.data(), 0, samples.size(), true, emit);
-    return flags;
+    return !decided || decided(next);
 }
 
 /// Every stage, over the samples [base, end) of the stream (those before base are no longer read),

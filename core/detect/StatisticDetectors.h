@@ -146,6 +146,9 @@ public:
     /// The flags of a whole recording: the stages of push() and finish(), reading the samples in
     /// place instead of copying them.
     static StanceFlags detect(const std::vector<ImuSample>& samples, const Parameters& params);
+    /// detect() into flags, telling decided after each batch (detectStanceInto).
+    static bool detectInto(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags,
+                           const DecidedCallback& decided);
 
     static double latency_s(const Parameters& params);
 

@@ -22,8 +22,8 @@ StaticMeans averageStatic(const std::vector<ImuSample>& samples, const std::vect
                           std::size_t first, double alignment_s, bool requireStance)
 {
     StaticMeans means;
-    const double end = samples[first].time_s + alignment_s;
-    for (std::size_t k = first; k < samples.size() && samples[k].time_s <= end; ++k) {
+    const std::size_t end = alignmentPeriodEnd(samples, first, alignment_s);
+    for (std::size_t k = first; k < end; ++k) {
         if (requireStance && (k >= stance.size() || !stance[k]))
             continue;
         means.acc += samples[k].acc_mps2;
@@ -41,6 +41,15 @@ StaticMeans averageStatic(const std::vector<ImuSample>& samples, const std::vect
 }
 
 }  // namespace
+
+std::size_t alignmentPeriodEnd(const std::vector<ImuSample>& samples, std::size_t first, double alignment_s)
+{
+    const double end_s = samples[first].time_s + alignment_s;
+    std::size_t k = first;
+    while (k < samples.size() && samples[k].time_s <= end_s)
+        ++k;
+    return k;
+}
 
 std::size_t alignmentStart(const std::vector<std::uint8_t>& stance)
 {

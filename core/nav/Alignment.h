@@ -40,12 +40,16 @@ std::size_t alignmentStart(const std::vector<std::uint8_t>& stance);
 AlignmentResult alignInitialAttitude(const std::vector<ImuSample>& samples, const std::vector<std::uint8_t>& stance,
                                      const Parameters& params);
 
-/// Heading (yaw about z up, counter-clockwise from x = north) from one magnetometer reading and the
-/// level attitude, minus the declination (positive east).
+/// One past the last sample of the alignment period that starts at sample first: the samples at
+/// most alignment_s after it, those alignInitialAttitude averages (and whose flags it reads).
+std::size_t alignmentPeriodEnd(const std::vector<ImuSample>& samples, std::size_t first, double alignment_s);
+
 /// The state a sample before alignmentStart() gets: the initial one (start position, at rest, the
 /// aligned attitude), recorded as filterSample records a filtered one.
 void holdAtStart(const ErrorStateEkf& ekf, double time_s, Result& result);
 
+/// Heading (yaw about z up, counter-clockwise from x = north) from one magnetometer reading and the
+/// level attitude, minus the declination (positive east).
 double magneticHeading(const Eigen::Vector3d& magBody, double roll, double pitch, double declination_rad);
 
 }  // namespace footpath

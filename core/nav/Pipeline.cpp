@@ -1,6 +1,7 @@
 #include "nav/Pipeline.h"
 
 #include "detect/StanceDetector.h"
+#include "detect/StanceFlagsAhead.h"
 #include "gait/GaitEvents.h"
 #include "metrics/Evaluation.h"
 #include "nav/Alignment.h"
@@ -73,30 +74,16 @@ void recordState(Result& result, double time_s, const NavState& state)
 
 namespace {
 
-SampleStanceFlags flagsAt(const StanceFlags& flags, std::size_t k)
-{
-    SampleStanceFlags sample;
-    sample.c1 = flags.c1[k];
-    sample.c2 = flags.c2[k];
-    sample.c3 = flags.c3[k];
-    sample.c = flags.c[k];
-    sample.stance = flags.stance[k];
-    sample.logStatistic = flags.logStatistic[k];
-    sample.logThreshold = flags.logThreshold[k];
-    return sample;
-}
-
-}  // namespace
-
-std::optional<RtsSmoother> smootherFor(const std::vector<ImuSample>& samples, const Parameters& params,
-                                       const StanceFlags& flags, ErrorStateEkf& ekf, std::vector<MethodNote>& notes,
-                                       std::size_t budget_bytes)
+/// smootherFor with room for stanceSamples updates of sample (a bound will do: room is reserved,
+/// not touched).
+std::optional<RtsSmoother> smootherWithRoomFor(const std::vector<ImuSample>& samples, const Parameters& params,
+                                               std::size_t stanceSamples, ErrorStateEkf& ekf,
+                                               std::vector<MethodNote>& notes, std::size_t budget_bytes)
 {
     std::optional<RtsSmoother> smoother;
     if (params.estimatorKind() != EstimatorKind::Smoother)
         return smoother;
     smoother.emplace(params, ekf);
-    const auto stanceSamples = static_cast<std::size_t>(std::count(flags.stance.begin(), flags.stance.end(), 1));
     const std::size_t needed = smoother->projectedBytes(samples.size(), stanceSamples);
     if (needed <= budget_bytes) {
         smoother->reserve(samples.size(), stanceSamples);
@@ -113,28 +100,57 @@ std::optional<RtsSmoother> smootherFor(const std::vector<ImuSample>& samples, co
     return smoother;
 }
 
+/// The smoother for a run whose stance flags may still be being decided: room for every sample
+/// to be a stance sample while that fits the budget, otherwise smootherFor on the final flags (so
+/// the decision is smootherFor's either way).
+std::optional<RtsSmoother> smootherAhead(const std::vector<ImuSample>& samples, const Parameters& params,
+                                         StanceFlagsAhead& ahead, const StanceFlags& flags, ErrorStateEkf& ekf,
+                                         std::vector<MethodNote>& notes)
+{
+    std::vector<MethodNote> boundNotes;  // a bound that does not fit says nothing about the run
+    std::optional<RtsSmoother> smoother = smootherWithRoomFor(samples, params, samples.size(), ekf, boundNotes,
+                                                              RtsSmoother::kMemoryBudget_bytes);
+    if (smoother || params.estimatorKind() != EstimatorKind::Smoother)
+        return smoother;
+    ahead.waitForAll();
+    return smootherFor(samples, params, flags, ekf, notes);
+}
+
+}  // namespace
+
+std::optional<RtsSmoother> smootherFor(const std::vector<ImuSample>& samples, const Parameters& params,
+                                       const StanceFlags& flags, ErrorStateEkf& ekf, std::vector<MethodNote>& notes,
+                                       std::size_t budget_bytes)
+{
+    const auto stanceSamples = static_cast<std::size_t>(std::count(flags.stance.begin(), flags.stance.end(), 1));
+    return smootherWithRoomFor(samples, params, stanceSamples, ekf, notes, budget_bytes);
+}
+
 namespace {
 
 /// Runs the filter over every sample, then the smoother's backward pass when it is chosen, and
 /// afterStates once the states are final (with the smoother, while its variances are still being
 /// computed on another thread: afterStates must not touch errorStd); returns false if the callback
 /// cancelled.
-bool runFilter(const Recording& recording, const Parameters& params, const StanceFlags& flags,
+bool runFilter(const Recording& recording, const Parameters& params, StanceFlagsAhead& ahead,
                const ProgressCallback& progress, Result& result, const std::function<void()>& afterStates,
                RtsSmoother::Threads threads)
 {
     const std::vector<ImuSample>& samples = recording.samples;
+    const StanceFlags& flags = result.flags;
+    // After a mid-walk start, the first stance.
+    const std::size_t start = ahead.waitForAlignment(samples, params.alignment_s);
     const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
     ErrorStateEkf ekf(params, alignment.bodyToNav);
     MeasurementSources sources(params);
-    std::optional<RtsSmoother> smoother = smootherFor(samples, params, flags, ekf, result.methodNotes);
+    std::optional<RtsSmoother> smoother = smootherAhead(samples, params, ahead, flags, ekf, result.methodNotes);
     // The forward pass is most of the work without the smoother, about half with it.
     const double forwardShare = smoother ? 0.5 : 1.0;
     reserveResult(result, samples.size());
     if (!smoother)
         result.errorStd.reserve(samples.size());
-    const std::size_t start = alignmentStart(flags.stance);  // after a mid-walk start, the first stance
     for (std::size_t k = 0; k < samples.size(); ++k) {
+        ahead.waitFor(k + 1);
         const ImuSample& sample = samples[k];
         const std::optional<double> previousTime_s =
             k > start ? std::optional<double>(samples[k - 1].time_s) : std::nullopt;
@@ -274,16 +290,20 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
         return output;
     const auto start = std::chrono::steady_clock::now();
     Result& result = output.result;
-    result.flags = detectStance(recording.samples, params);
+    // With a second thread the filter runs behind the detector.
+    StanceFlagsAhead ahead(recording.samples, params, result.flags,
+                           threads == RtsSmoother::Threads::Two ? StanceFlagsAhead::Mode::Concurrent
+                                                                : StanceFlagsAhead::Mode::First);
     // postProcess reads no standard deviations, so it overlaps the smoother's variances (runFilter).
     const auto finishStates = [&] { postProcess(recording, params, result); };
     bool completed = false;
     if (params.estimatorKind() == EstimatorKind::Feliz) {
+        ahead.waitForAll();
         completed = runFelizIntegrator(recording, params, progress, result);
         if (completed)
             finishStates();
     } else {
-        completed = runFilter(recording, params, result.flags, progress, result, finishStates, threads);
+        completed = runFilter(recording, params, ahead, progress, result, finishStates, threads);
     }
     if (!completed) {
         result.cancelled = true;

@@ -27,7 +27,8 @@ struct PipelineOutput {
 /// The whole Guo 2015 pipeline as a pure function: stance detection, initial alignment, strapdown
 /// mechanization with the EKF (ZUPT/ZARU as enabled), then the per-step table and summary.
 /// Re-entrant: nothing is shared between calls, so the GUI may start a new run while an old one
-/// is being cancelled. With the smoother the run uses a second thread for its variances unless
+/// is being cancelled. The run uses a second thread, one after the other, for the stance detector
+/// (the filter follows behind it: StanceFlagsAhead) and with the smoother for its variances, unless
 /// threads is One (for a caller that runs several estimates at once, AutoTune and runComparison:
 /// their cores are busy already); the numbers are the same either way.
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params,

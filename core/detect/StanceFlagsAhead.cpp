@@ -1,0 +1,75 @@
+#include "detect/StanceFlagsAhead.h"
+
+#include "detect/StanceDetector.h"
+#include "nav/Alignment.h"
+
+namespace footpath {
+
+StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const Parameters& params,
+                                   StanceFlags& flags, Mode mode)
+    : flags_(flags)
+    , samples_(samples.size())
+{
+    if (mode == Mode::First) {
+        detectStanceInto(samples, params, flags, {});
+        known_ = decided_ = samples_;
+        return;
+    }
+    // Sized here, before the thread starts, so the reader never sees the vectors reallocated.
+    resizeFlags(flags, samples.size());
+    detector_ = std::thread([this, &samples, &params, &flags] {
+        try {
+            detectStanceInto(samples, params, flags, [this](std::size_t decided) { return publish(decided); });
+        } catch (...) {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            failure_ = std::current_exception();
+            published_.notify_all();
+        }
+    });
+}
+
+StanceFlagsAhead::~StanceFlagsAhead()
+{
+    if (!detector_.joinable())
+        return;
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        stop_ = true;
+    }
+    detector_.join();
+}
+
+bool StanceFlagsAhead::publish(std::size_t decided)
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    decided_ = decided;
+    published_.notify_all();
+    return !stop_;
+}
+
+void StanceFlagsAhead::waitForSlow(std::size_t count)
+{
+    std::unique_lock<std::mutex> lock(mutex_);
+    published_.wait(lock, [&] { return decided_ >= count || failure_; });
+    if (failure_)
+        std::rethrow_exception(failure_);
+    known_ = decided_;
+}
+
+std::size_t StanceFlagsAhead::waitForAlignment(const std::vector<ImuSample>& samples, double alignment_s)
+{
+    // alignmentStart: the first stance sample, or 0 when there is none (all flags read by then).
+    std::size_t first = 0;
+    while (first < samples_) {
+        waitFor(first + 1);
+        if (flags_.stance[first])
+            break;
+        ++first;
+    }
+    if (first == samples_)
+        return 0;
+    waitFor(alignmentPeriodEnd(samples, first, alignment_s));
+    return first;
+}
+
+}  // namespace footpath

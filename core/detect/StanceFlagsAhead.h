@@ -1,0 +1,61 @@
+#pragma once
+
+#include "Recording.h"
+#include "Result.h"
+#include "nav/Parameters.h"
+
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace footpath {
+
+/// A recording's stance flags, decided on a second thread while a reader follows behind them: the
+/// filter reads a sample's flags only when it reaches that sample, and the detector is about a tenth
+/// of a run (the 30-minute walk: 9 of 100 ms), so the two overlap instead of adding up. The
+/// detector writes into flags (detectStanceInto); waitFor() says when a prefix may be read.
+/// Without a second thread (a caller that keeps every core busy already) the flags are decided in
+/// the constructor. Either way they are the same flags as detectStance's.
+class StanceFlagsAhead {
+public:
+    enum class Mode { Concurrent, First };
+    /// samples, params and flags must outlive this object; flags is written until allDecided().
+    StanceFlagsAhead(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags, Mode mode);
+    /// Stops the detector at its next batch and waits for it (a cancelled run).
+    ~StanceFlagsAhead();
+    StanceFlagsAhead(const StanceFlagsAhead&) = delete;
+    StanceFlagsAhead& operator=(const StanceFlagsAhead&) = delete;
+
+    /// Blocks until the flags of the first count samples are final (count at most the samples').
+    /// Rethrows what the detector threw (out of memory).
+    void waitFor(std::size_t count)
+    {
+        if (count > known_)
+            waitForSlow(count);
+    }
+    /// Blocks until every flag is final.
+    void waitForAll() { waitFor(samples_); }
+    /// The first stance sample (alignmentStart) once its flags and those of the alignment period
+    /// after it (alignmentPeriodEnd) are final: what alignInitialAttitude reads.
+    std::size_t waitForAlignment(const std::vector<ImuSample>& samples, double alignment_s);
+
+private:
+    void waitForSlow(std::size_t count);
+    /// The detector's thread: publishes each decided prefix; false once the reader has gone.
+    bool publish(std::size_t decided);
+
+    const StanceFlags& flags_;
+    const std::size_t samples_;
+    std::size_t known_ = 0;  ///< the reader's copy of decided_, so most waitFor() calls lock nothing
+    std::mutex mutex_;
+    std::condition_variable published_;
+    std::size_t decided_ = 0;  ///< guarded by mutex_, as are the two below
+    bool stop_ = false;
+    std::exception_ptr failure_;
+    std::thread detector_;
+};
+
+}  // namespace footpath
