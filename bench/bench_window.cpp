@@ -41,6 +41,8 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
+
+#include <sys/resource.h>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -181,6 +183,13 @@ struct Workspace {
     }
 };
 
+long minorPageFaults()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_minflt;
+}
+
 std::unique_ptr<Workspace>& workspaceHolder()
 {
     static std::unique_ptr<Workspace> workspace;
@@ -209,6 +218,7 @@ void BM_SliderMove(benchmark::State& state)
     QCoreApplication::processEvents();  // the tab switch's own paint is not part of the move
     double estimate_ms = 0.0, views_ms = 0.0, handOver_ms = 0.0, pipeline_ms = 0.0;
     QMap<QString, double> replot_ms;
+    const long faultsBefore = minorPageFaults();
     for (auto _ : state) {
         space.watch->reset();
         const double start_ms = space.watch->now_ms();
@@ -234,6 +244,9 @@ void BM_SliderMove(benchmark::State& state)
     state.counters["estimate_ms"] = benchmark::Counter(estimate_ms, benchmark::Counter::kAvgIterations);
     state.counters["views_ms"] = benchmark::Counter(views_ms, benchmark::Counter::kAvgIterations);
     state.counters["pipeline_ms"] = benchmark::Counter(pipeline_ms, benchmark::Counter::kAvgIterations);
+    // Pages the kernel had to map (and zero) for the moves, all threads: memory not reused.
+    state.counters["page_faults"] =
+        benchmark::Counter(static_cast<double>(minorPageFaults() - faultsBefore), benchmark::Counter::kAvgIterations);
     state.counters["samples"] = static_cast<double>(thirtyMinuteWalk().samples.size());
 }
 BENCHMARK(BM_SliderMove)->Arg(0)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);

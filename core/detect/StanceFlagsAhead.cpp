@@ -3,6 +3,8 @@
 #include "detect/StanceDetector.h"
 #include "nav/Alignment.h"
 
+#include <system_error>
+
 namespace footpath {
 
 StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const Parameters& params,
@@ -10,22 +12,30 @@ StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const 
     : flags_(flags)
     , samples_(samples.size())
 {
-    if (mode == Mode::First) {
-        detectStanceInto(samples, params, flags, {});
-        known_ = decided_ = samples_;
-        return;
-    }
-    // Sized here, before the thread starts, so the reader never sees the vectors reallocated.
-    resizeFlags(flags, samples.size());
-    detector_ = std::thread([this, &samples, &params, &flags] {
+    if (mode == Mode::Concurrent) {
+        // Sized here, before the thread starts, so the reader never sees the vectors reallocated.
+        resizeFlags(flags, samples.size());
         try {
-            detectStanceInto(samples, params, flags, [this](std::size_t decided) { return publish(decided); });
-        } catch (...) {
-            const std::lock_guard<std::mutex> lock(mutex_);
-            failure_ = std::current_exception();
-            published_.notify_all();
+            detector_ = std::thread([this, &samples, &params, &flags] { detectOnThisThread(samples, params, flags); });
+            return;
+        } catch (const std::system_error&) {
+            // No thread to be had (a process at its limit): decided first, as with Mode::First.
         }
-    });
+    }
+    detectStanceInto(samples, params, flags, {});
+    known_ = decided_ = samples_;
+}
+
+void StanceFlagsAhead::detectOnThisThread(const std::vector<ImuSample>& samples, const Parameters& params,
+                                          StanceFlags& flags)
+{
+    try {
+        detectStanceInto(samples, params, flags, [this](std::size_t decided) { return publish(decided); });
+    } catch (...) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        failure_ = std::current_exception();
+        published_.notify_all();
+    }
 }
 
 StanceFlagsAhead::~StanceFlagsAhead()

@@ -17,12 +17,13 @@ namespace footpath {
 /// filter reads a sample's flags only when it reaches that sample, and the detector is about a tenth
 /// of a run (the 30-minute walk: 9 of 100 ms), so the two overlap instead of adding up. The
 /// detector writes into flags (detectStanceInto); waitFor() says when a prefix may be read.
-/// Without a second thread (a caller that keeps every core busy already) the flags are decided in
-/// the constructor. Either way they are the same flags as detectStance's.
+/// Mode::First (a caller that keeps every core busy already), or when no thread can be started,
+/// decides the flags in the constructor. Either way they are the same flags as detectStance's.
 class StanceFlagsAhead {
 public:
     enum class Mode { Concurrent, First };
-    /// samples, params and flags must outlive this object; flags is written until allDecided().
+    /// samples, params and flags must outlive this object, which writes flags until every one is
+    /// decided (waitForAll) or it is destroyed.
     StanceFlagsAhead(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags, Mode mode);
     /// Stops the detector at its next batch and waits for it (a cancelled run).
     ~StanceFlagsAhead();
@@ -43,8 +44,10 @@ public:
     std::size_t waitForAlignment(const std::vector<ImuSample>& samples, double alignment_s);
 
 private:
+    /// The detector's thread: the flags, each decided prefix published, or what it threw.
+    void detectOnThisThread(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags);
     void waitForSlow(std::size_t count);
-    /// The detector's thread: publishes each decided prefix; false once the reader has gone.
+    /// Publishes a decided prefix; false once the reader has gone.
     bool publish(std::size_t decided);
 
     const StanceFlags& flags_;
