@@ -7,6 +7,7 @@
 #include "TimeBands.h"
 
 #include <QKeyEvent>
+#include <QtConcurrent/QtConcurrentMap>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
@@ -156,7 +157,112 @@ bool isConstant(const Result& result, Row row)
     return true;
 }
 
+/// One component's curve and ±1σ band as the row's graphs take them, and the range of their
+/// finite values for the row's axis.
+struct ComponentSeries {
+    QVector<QCPGraphData> curve, lower, upper, sigma;
+    double lowest = std::numeric_limits<double>::infinity();
+    double highest = -std::numeric_limits<double>::infinity();
+};
+
+/// Built from a result on any thread: ensureRowsPlotted builds the components side by side.
+ComponentSeries buildComponentSeries(const Result& result, Row which, int component, bool bands, bool constantBias)
+{
+    ComponentSeries series;
+    const std::size_t n = result.time_s.size();
+    const std::size_t stride = std::max<std::size_t>(1, n / kMaxBandPoints);
+    const double gap = std::numeric_limits<double>::quiet_NaN();
+    QVector<QCPGraphData>& curve = series.curve;
+    QVector<QCPGraphData>& lower = series.lower;
+    QVector<QCPGraphData>& upper = series.upper;
+    QVector<QCPGraphData>& sigma = series.sigma;
+    curve.reserve(constantBias ? 2 : static_cast<qsizetype>(n) + 64);
+    if (bands) {
+        for (QVector<QCPGraphData>* band : {&lower, &upper, &sigma})
+            band->reserve(static_cast<qsizetype>(n / stride) + 64);
+    }
+    const bool angle = which == Row::Attitude && n > 0;
+    const double centre = angle ? circularMean_deg(result, component) : 0.0;
+    const StateSeries state(result, which, component);
+    const auto widen = [&series](double value) {
+        if (std::isfinite(value)) {
+            series.lowest = std::min(series.lowest, value);
+            series.highest = std::max(series.highest, value);
+        }
+    };
+    std::size_t nextBandSample = 0;  // every stride-th sample and the last
+    for (std::size_t k = 0; k < n; ++k) {
+        if (constantBias && k != 0 && k + 1 != n)
+            continue;  // a flat line (the row is collapsed): its two ends draw the same
+        const double raw = state(k);
+        const double value = angle && std::abs(raw - centre) > 180.0 ? nearCentre_deg(raw, centre) : raw;
+        const double time_s = result.time_s[k];
+        if (!curve.isEmpty() && wraps(which, curve.back().value, value)) {
+            curve.append(QCPGraphData(0.5 * (curve.back().key + time_s), gap));  // QCustomPlot leaves a gap at NaN
+        }
+        curve.append(QCPGraphData(time_s, value));
+        widen(value);
+        if (!bands || (k != nextBandSample && k + 1 != n))
+            continue;
+        if (k == nextBandSample)
+            nextBandSample += stride;
+        // A σ that is not finite (a covariance that overflowed) leaves a gap in the band
+        // rather than a band to the end of the axis that rescales the whole row.
+        const double computed = stateSigma(result, which, k, component);
+        const double s = std::isfinite(computed) ? computed : gap;
+        if (!lower.isEmpty() && wraps(which, lower.back().value + sigma.back().value, value)) {
+            const double between_s = 0.5 * (lower.back().key + time_s);
+            lower.append(QCPGraphData(between_s, gap));
+            upper.append(QCPGraphData(between_s, gap));
+            sigma.append(QCPGraphData(between_s, sigma.back().value));
+        }
+        lower.append(QCPGraphData(time_s, value - s));
+        upper.append(QCPGraphData(time_s, value + s));
+        sigma.append(QCPGraphData(time_s, s));
+        widen(value - s);
+        widen(value + s);
+    }
+    return series;
+}
+
 }  // namespace
+
+struct StatePlots::RowFill {
+    std::array<ComponentSeries, kMaxComponents> components;
+    std::size_t samples = 0;
+    bool hasBands = false;
+    bool constantBias = false;  ///< a bias the filter did not estimate: a flat line, collapsed
+};
+
+std::array<StatePlots::RowFill, StatePlots::kRowCount> StatePlots::fillRows(const Result* result)
+{
+    std::array<RowFill, kRowCount> fills;
+    struct Job {
+        std::size_t row;
+        int component;
+    };
+    std::vector<Job> jobs;
+    const std::size_t n = result ? result->time_s.size() : 0;
+    for (std::size_t r = 0; r < kRowCount; ++r) {
+        RowFill& fill = fills[r];
+        fill.samples = n;
+        fill.hasBands = n > 0 && result->errorStd.size() >= n;
+        fill.constantBias = n > 0 && kRowInfos[r].isBias && isConstant(*result, static_cast<Row>(r));
+        for (int c = 0; c < kRowInfos[r].components; ++c)
+            jobs.push_back({r, c});
+    }
+    // The components of a 30-minute walk are 180,000 samples each: built on the pool's threads and
+    // this one side by side (the rows' fill was most of a parameter change's time in this view).
+    const auto build = [&](const Job& job) {
+        const RowFill& fill = fills[job.row];
+        fills[job.row].components[static_cast<std::size_t>(job.component)] =
+            n == 0 ? ComponentSeries{}
+                   : buildComponentSeries(*result, static_cast<Row>(job.row), job.component,
+                                          fill.hasBands && !fill.constantBias, fill.constantBias);
+    };
+    QtConcurrent::blockingMap(jobs, build);
+    return fills;
+}
 
 StatePlots::StatePlots(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this)), replot_(new DeferredReplot(plot_))
 {
@@ -275,10 +381,9 @@ void StatePlots::ensureRowsPlotted() const
     // tens of milliseconds for a tab nobody looks at, so they are filled when shown or asked for.
     auto* self = const_cast<StatePlots*>(this);
     self->rowsStale_ = false;
-    for (std::size_t r = 0; r < kRowCount; ++r) {
-        self->plotRow(r);
-        self->rescaleRow(r);
-    }
+    std::array<RowFill, kRowCount> fills = fillRows(result_.get());
+    for (std::size_t r = 0; r < kRowCount; ++r)
+        self->plotRow(r, fills[r]);
     self->refreshLegend();
 }
 
@@ -288,71 +393,33 @@ void StatePlots::showEvent(QShowEvent* event)
     QWidget::showEvent(event);
 }
 
-void StatePlots::plotRow(std::size_t r)
+void StatePlots::plotRow(std::size_t r, RowFill& fill)
 {
     RowParts& row = rows_[r];
-    const Row which = static_cast<Row>(r);
-    const std::size_t n = result_ ? result_->time_s.size() : 0;
-    const bool hasBands = n > 0 && result_->errorStd.size() >= n;
-    const bool constantBias = n > 0 && kRowInfos[r].isBias && isConstant(*result_, which);
-    const bool bands = hasBands && !constantBias;
-    const std::size_t stride = std::max<std::size_t>(1, n / kMaxBandPoints);
-    const double gap = std::numeric_limits<double>::quiet_NaN();
     for (int c = 0; c < row.componentCount; ++c) {
+        ComponentSeries& series = fill.components[static_cast<std::size_t>(c)];
         Component& component = row.components[static_cast<std::size_t>(c)];
-        // Filled as QCPGraphData and handed over whole: the container shares the vector instead of
-        // copying 180k pairs again.
-        QVector<QCPGraphData> curve, lower, upper, sigma;
-        curve.reserve(constantBias ? 2 : static_cast<qsizetype>(n) + 64);
-        if (bands) {
-            for (QVector<QCPGraphData>* band : {&lower, &upper, &sigma})
-                band->reserve(static_cast<qsizetype>(n / stride) + 64);
-        }
-        const bool angle = which == Row::Attitude && n > 0;
-        const double centre = angle ? circularMean_deg(*result_, c) : 0.0;
-        const StateSeries state(*result_, which, c);
-        std::size_t nextBandSample = 0;  // every stride-th sample and the last
-        for (std::size_t k = 0; k < n; ++k) {
-            if (constantBias && k != 0 && k + 1 != n)
-                continue;  // a flat line (the row is collapsed): its two ends draw the same
-            const double raw = state(k);
-            const double value = angle && std::abs(raw - centre) > 180.0 ? nearCentre_deg(raw, centre) : raw;
-            const double time_s = result_->time_s[k];
-            if (!curve.isEmpty() && wraps(which, curve.back().value, value)) {
-                curve.append(QCPGraphData(0.5 * (curve.back().key + time_s), gap));  // QCustomPlot leaves a gap at NaN
-            }
-            curve.append(QCPGraphData(time_s, value));
-            if (!bands || (k != nextBandSample && k + 1 != n))
-                continue;
-            if (k == nextBandSample)
-                nextBandSample += stride;
-            // A σ that is not finite (a covariance that overflowed) leaves a gap in the band
-            // rather than a band to the end of the axis that rescales the whole row.
-            const double computed = stateSigma(*result_, which, k, c);
-            const double s = std::isfinite(computed) ? computed : gap;
-            if (!lower.isEmpty() && wraps(which, lower.back().value + sigma.back().value, value)) {
-                const double between_s = 0.5 * (lower.back().key + time_s);
-                lower.append(QCPGraphData(between_s, gap));
-                upper.append(QCPGraphData(between_s, gap));
-                sigma.append(QCPGraphData(between_s, sigma.back().value));
-            }
-            lower.append(QCPGraphData(time_s, value - s));
-            upper.append(QCPGraphData(time_s, value + s));
-            sigma.append(QCPGraphData(time_s, s));
-        }
-        component.curve->data()->set(curve, true);
-        component.lower->data()->set(lower, true);
-        component.upper->data()->set(upper, true);
-        component.sigma->data()->set(sigma, true);
+        // Handed over whole: the container shares the vector instead of copying 180k pairs again.
+        component.curve->data()->set(series.curve, true);
+        component.lower->data()->set(series.lower, true);
+        component.upper->data()->set(series.upper, true);
+        component.sigma->data()->set(series.sigma, true);
     }
     QString note;
-    if (constantBias)
+    if (fill.constantBias)
         note = tr("Not estimated (constant)");
-    else if (n > 0 && !hasBands)
+    else if (fill.samples > 0 && !fill.hasBands)
         note = tr("No ±1σ band: this estimator keeps no covariance");
     row.note->setText(note);
     row.note->setVisible(!note.isEmpty());
-    showCollapsed(r, constantBias);
+    showCollapsed(r, fill.constantBias);
+    row.lowest = std::numeric_limits<double>::infinity();
+    row.highest = -row.lowest;
+    for (int c = 0; c < row.componentCount; ++c) {
+        row.lowest = std::min(row.lowest, fill.components[static_cast<std::size_t>(c)].lowest);
+        row.highest = std::max(row.highest, fill.components[static_cast<std::size_t>(c)].highest);
+    }
+    rescaleRow(r);
 }
 
 void StatePlots::refreshLegend()
@@ -389,17 +456,8 @@ void StatePlots::showCollapsed(std::size_t r, bool collapsed)
 
 void StatePlots::rescaleRow(std::size_t r)
 {
-    RowParts& row = rows_[r];
-    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-    for (int c = 0; c < row.componentCount; ++c) {
-        const Component& component = row.components[static_cast<std::size_t>(c)];
-        for (const QCPGraph* graph : {component.curve, component.lower, component.upper})
-            for (const QCPGraphData& point : *graph->data())
-                if (std::isfinite(point.value)) {
-                    lowest = std::min(lowest, point.value);
-                    highest = std::max(highest, point.value);
-                }
-    }
+    const RowParts& row = rows_[r];
+    const double lowest = row.lowest, highest = row.highest;
     if (lowest > highest) {
         valueAxis(row.rect)->setRange(-1.0, 1.0);
         return;

@@ -93,12 +93,19 @@ private:
         std::array<Component, kMaxComponents> components;
         int componentCount = 0;
         bool collapsed = false;  ///< a state not estimated: a lane saying so
+        double lowest = 1.0, highest = -1.0;  ///< finite values of its curves and bands; none yet
     };
+
+    /// One row's graphs' data, built apart from the widgets (StatePlots.cpp).
+    struct RowFill;
 
     void createRow(std::size_t r);
     /// Fills the rows from result_ if a result came since they were last filled.
     void ensureRowsPlotted() const;
-    void plotRow(std::size_t r);
+    /// Every row's data from result (none when null), the components built side by side.
+    static std::array<RowFill, kRowCount> fillRows(const Result* result);
+    void plotRow(std::size_t r, RowFill& fill);
+    /// Fits the row's value axis to its curves and bands (the range plotRow found).
     void rescaleRow(std::size_t r);
     void showCollapsed(std::size_t r, bool collapsed);
     void refreshLegend();
