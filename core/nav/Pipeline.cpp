@@ -74,8 +74,8 @@ void recordState(Result& result, double time_s, const NavState& state)
 
 namespace {
 
-/// smootherFor with room for stanceSamples updates of sample (a bound will do: room is reserved,
-/// not touched).
+/// smootherFor, with room for the updates of stanceSamples stance samples (a bound will do: the
+/// room is reserved, not touched).
 std::optional<RtsSmoother> smootherWithRoomFor(const std::vector<ImuSample>& samples, const Parameters& params,
                                                std::size_t stanceSamples, ErrorStateEkf& ekf,
                                                std::vector<MethodNote>& notes, std::size_t budget_bytes)
