@@ -9,14 +9,15 @@ namespace footpath {
 
 StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const Parameters& params,
                                    StanceFlags& flags, Mode mode)
-    : flags_(flags)
+    : params_(params)
+    , flags_(flags)
     , samples_(samples.size())
 {
     if (mode == Mode::Concurrent) {
         // Sized here, before the thread starts, so the reader never sees the vectors reallocated.
         resizeFlags(flags, samples.size());
         try {
-            detector_ = std::thread([this, &samples, &params, &flags] { detectOnThisThread(samples, params, flags); });
+            detector_ = std::thread([this, &samples, &flags] { detectOnThisThread(samples, flags); });
             return;
         } catch (const std::system_error&) {
             // No thread to be had (a process at its limit): decided first, as with Mode::First.
@@ -26,11 +27,10 @@ StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const 
     known_ = decided_ = samples_;
 }
 
-void StanceFlagsAhead::detectOnThisThread(const std::vector<ImuSample>& samples, const Parameters& params,
-                                          StanceFlags& flags)
+void StanceFlagsAhead::detectOnThisThread(const std::vector<ImuSample>& samples, StanceFlags& flags)
 {
     try {
-        detectStanceInto(samples, params, flags, [this](std::size_t decided) { return publish(decided); });
+        detectStanceInto(samples, params_, flags, [this](std::size_t decided) { return publish(decided); });
     } catch (...) {
         const std::lock_guard<std::mutex> lock(mutex_);
         failure_ = std::current_exception();

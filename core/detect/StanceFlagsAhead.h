@@ -22,8 +22,8 @@ namespace footpath {
 class StanceFlagsAhead {
 public:
     enum class Mode { Concurrent, First };
-    /// samples, params and flags must outlive this object, which writes flags until every one is
-    /// decided (waitForAll) or it is destroyed.
+    /// samples and flags must outlive this object, which writes flags until every one is decided
+    /// (waitForAll) or it is destroyed; params is copied.
     StanceFlagsAhead(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags, Mode mode);
     /// Stops the detector at its next batch and waits for it (a cancelled run).
     ~StanceFlagsAhead();
@@ -45,11 +45,12 @@ public:
 
 private:
     /// The detector's thread: the flags, each decided prefix published, or what it threw.
-    void detectOnThisThread(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags);
+    void detectOnThisThread(const std::vector<ImuSample>& samples, StanceFlags& flags);
     void waitForSlow(std::size_t count);
     /// Publishes a decided prefix; false once the reader has gone.
     bool publish(std::size_t decided);
 
+    const Parameters params_;
     const StanceFlags& flags_;
     const std::size_t samples_;
     std::size_t known_ = 0;  ///< the reader's copy of decided_, so most waitFor() calls lock nothing
