@@ -393,11 +393,11 @@ void StatePlots::showEvent(QShowEvent* event)
     QWidget::showEvent(event);
 }
 
-void StatePlots::plotRow(std::size_t r, RowFill& fill)
+void StatePlots::plotRow(std::size_t r, const RowFill& fill)
 {
     RowParts& row = rows_[r];
     for (int c = 0; c < row.componentCount; ++c) {
-        ComponentSeries& series = fill.components[static_cast<std::size_t>(c)];
+        const ComponentSeries& series = fill.components[static_cast<std::size_t>(c)];
         Component& component = row.components[static_cast<std::size_t>(c)];
         // Handed over whole: the container shares the vector instead of copying 180k pairs again.
         component.curve->data()->set(series.curve, true);

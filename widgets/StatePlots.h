@@ -104,7 +104,7 @@ private:
     void ensureRowsPlotted() const;
     /// Every row's data from result (none when null), the components built side by side.
     static std::array<RowFill, kRowCount> fillRows(const Result* result);
-    void plotRow(std::size_t r, RowFill& fill);
+    void plotRow(std::size_t r, const RowFill& fill);
     /// Fits the row's value axis to its curves and bands (the range plotRow found).
     void rescaleRow(std::size_t r);
     void showCollapsed(std::size_t r, bool collapsed);
