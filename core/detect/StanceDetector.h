@@ -23,8 +23,8 @@ using DecidedCallback = std::function<bool(std::size_t decidedSamples)>;
 /// detectStance into flags, calling decided each time more leading samples' flags are final (the
 /// statistic detectors every batch of samples, the paper's detector once), the last time with
 /// samples.size(). A reader on another thread may use the flags decided so far while the rest are
-/// being decided (runPipeline runs the filter behind the detector): flags are sized before the first
-/// call and not reallocated afterwards. Returns false if decided said stop.
+/// being decided (runPipeline runs the filter behind the detector): from the first call on, flags
+/// keep their size and storage. Returns false if decided said stop.
 bool detectStanceInto(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags,
                       const DecidedCallback& decided);
 

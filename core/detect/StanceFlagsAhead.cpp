@@ -3,6 +3,8 @@
 #include "detect/StanceDetector.h"
 #include "nav/Alignment.h"
 
+#include <stdexcept>
+#include <string>
 #include <system_error>
 
 namespace footpath {
@@ -14,8 +16,6 @@ StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const 
     , samples_(samples.size())
 {
     if (mode == Mode::Concurrent) {
-        // Sized here, before the thread starts, so the reader never sees the vectors reallocated.
-        resizeFlags(flags, samples.size());
         try {
             detector_ = std::thread([this, &samples, &flags] { detectOnThisThread(samples, flags); });
             return;
@@ -29,13 +29,24 @@ StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const 
 
 void StanceFlagsAhead::detectOnThisThread(const std::vector<ImuSample>& samples, StanceFlags& flags)
 {
+    std::exception_ptr failure;
     try {
-        detectStanceInto(samples, params_, flags, [this](std::size_t decided) { return publish(decided); });
-    } catch (...) {
+        const bool finished =
+            detectStanceInto(samples, params_, flags, [this](std::size_t decided) { return publish(decided); });
         const std::lock_guard<std::mutex> lock(mutex_);
-        failure_ = std::current_exception();
-        published_.notify_all();
+        if (finished && decided_ < samples_) {
+            // A detector that skipped samples: the reader would wait for them for ever.
+            failure = std::make_exception_ptr(std::logic_error(
+                "the stance detector decided " + std::to_string(decided_) + " of " + std::to_string(samples_) + " samples"));
+        }
+    } catch (...) {
+        failure = std::current_exception();
     }
+    if (!failure)
+        return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    failure_ = failure;
+    published_.notify_all();
 }
 
 StanceFlagsAhead::~StanceFlagsAhead()
@@ -55,6 +66,15 @@ bool StanceFlagsAhead::publish(std::size_t decided)
     decided_ = decided;
     published_.notify_all();
     return !stop_;
+}
+
+bool StanceFlagsAhead::allDecided()
+{
+    if (known_ < samples_) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        known_ = decided_;
+    }
+    return known_ == samples_;
 }
 
 void StanceFlagsAhead::waitForSlow(std::size_t count)

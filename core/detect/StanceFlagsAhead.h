@@ -39,9 +39,8 @@ public:
     }
     /// Blocks until every flag is final.
     void waitForAll() { waitFor(samples_); }
-    /// Whether the flags are being decided on another thread (Mode::First and no thread: all
-    /// final since the constructor).
-    bool concurrent() const { return detector_.joinable(); }
+    /// Whether every flag is final now (without waiting).
+    bool allDecided();
     /// The first stance sample (alignmentStart) once its flags and those of the alignment period
     /// after it (alignmentPeriodEnd) are final: what alignInitialAttitude reads.
     std::size_t waitForAlignment(const std::vector<ImuSample>& samples, double alignment_s);

@@ -102,13 +102,13 @@ std::optional<RtsSmoother> smootherWithRoomFor(const std::vector<ImuSample>& sam
 
 /// The smoother for a run whose stance flags may still be being decided: room for every sample
 /// to be a stance sample while that fits the budget, otherwise smootherFor on the final flags (so
-/// the decision is smootherFor's either way). Flags decided first give the exact room: the bound
+/// the decision is smootherFor's either way). Flags already final give the exact room: the bound
 /// made the self-tuning's many short runs (one thread each) 15 % slower (bench_tune 4.5 -> 5.4 s).
 std::optional<RtsSmoother> smootherAhead(const std::vector<ImuSample>& samples, const Parameters& params,
                                          StanceFlagsAhead& ahead, const StanceFlags& flags, ErrorStateEkf& ekf,
                                          std::vector<MethodNote>& notes)
 {
-    if (!ahead.concurrent())
+    if (ahead.allDecided())
         return smootherFor(samples, params, flags, ekf, notes);
     std::vector<MethodNote> boundNotes;  // a bound that does not fit says nothing about the run
     std::optional<RtsSmoother> smoother = smootherWithRoomFor(samples, params, samples.size(), ekf, boundNotes,
@@ -293,20 +293,23 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
         return output;
     const auto start = std::chrono::steady_clock::now();
     Result& result = output.result;
-    // With a second thread the filter runs behind the detector.
-    StanceFlagsAhead ahead(recording.samples, params, result.flags,
-                           threads == RtsSmoother::Threads::Two ? StanceFlagsAhead::Mode::Concurrent
-                                                                : StanceFlagsAhead::Mode::First);
-    // postProcess reads no standard deviations, so it overlaps the smoother's variances (runFilter).
-    const auto finishStates = [&] { postProcess(recording, params, result); };
     bool completed = false;
-    if (params.estimatorKind() == EstimatorKind::Feliz) {
-        ahead.waitForAll();
-        completed = runFelizIntegrator(recording, params, progress, result);
-        if (completed)
-            finishStates();
-    } else {
-        completed = runFilter(recording, params, ahead, progress, result, finishStates, threads);
+    {
+        // With a second thread the filter runs behind the detector, which may write result.flags
+        // until this scope ends (a cancelled run): output is returned only after that.
+        StanceFlagsAhead ahead(recording.samples, params, result.flags,
+                               threads == RtsSmoother::Threads::Two ? StanceFlagsAhead::Mode::Concurrent
+                                                                    : StanceFlagsAhead::Mode::First);
+        // postProcess reads no standard deviations, so it overlaps the smoother's variances (runFilter).
+        const auto finishStates = [&] { postProcess(recording, params, result); };
+        if (params.estimatorKind() == EstimatorKind::Feliz) {
+            ahead.waitForAll();
+            completed = runFelizIntegrator(recording, params, progress, result);
+            if (completed)
+                finishStates();
+        } else {
+            completed = runFilter(recording, params, ahead, progress, result, finishStates, threads);
+        }
     }
     if (!completed) {
         result.cancelled = true;
