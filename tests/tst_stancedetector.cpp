@@ -385,7 +385,7 @@ private slots:
             for (const auto mode : {StanceFlagsAhead::Mode::Concurrent, StanceFlagsAhead::Mode::First}) {
                 StanceFlags flags;
                 StanceFlagsAhead ahead(samples, params, flags, mode);
-                QCOMPARE(ahead.waitForAlignment(samples, 1.0), std::size_t(0));  // starts at rest
+                QCOMPARE(waitForAlignmentFlags(ahead, samples, flags.stance, 1.0), std::size_t(0));  // starts at rest
                 std::size_t differing = 0;
                 for (std::size_t k = 0; k < samples.size(); ++k) {
                     ahead.waitFor(k + 1);
@@ -413,7 +413,7 @@ private slots:
         const StanceFlags expected = detectStance(samples, params);
         StanceFlags flags;
         StanceFlagsAhead ahead(samples, params, flags, StanceFlagsAhead::Mode::Concurrent);
-        const std::size_t first = ahead.waitForAlignment(samples, params.alignment_s);
+        const std::size_t first = waitForAlignmentFlags(ahead, samples, flags.stance, params.alignment_s);
         QVERIFY(first > 0);
         QCOMPARE(first, alignmentStart(expected.stance));
 
@@ -422,7 +422,7 @@ private slots:
             moving[k].gyr_radps = Eigen::Vector3d(0.0, 4.0 + std::sin(0.1 * static_cast<double>(k)), 0.0);
         StanceFlags none;
         StanceFlagsAhead never(moving, guo2015Parameters(), none, StanceFlagsAhead::Mode::Concurrent);
-        QCOMPARE(never.waitForAlignment(moving, 1.0), std::size_t(0));
+        QCOMPARE(waitForAlignmentFlags(never, moving, none.stance, 1.0), std::size_t(0));
         QCOMPARE(std::count(none.stance.begin(), none.stance.end(), 1), 0);
     }
 

@@ -1,7 +1,6 @@
 #include "detect/StanceFlagsAhead.h"
 
 #include "detect/StanceDetector.h"
-#include "nav/Alignment.h"
 
 #include <stdexcept>
 #include <string>
@@ -12,7 +11,6 @@ namespace footpath {
 StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const Parameters& params,
                                    StanceFlags& flags, Mode mode)
     : params_(params)
-    , flags_(flags)
     , samples_(samples.size())
 {
     if (mode == Mode::Concurrent) {
@@ -84,22 +82,6 @@ void StanceFlagsAhead::waitForSlow(std::size_t count)
     if (failure_)
         std::rethrow_exception(failure_);
     known_ = decided_;
-}
-
-std::size_t StanceFlagsAhead::waitForAlignment(const std::vector<ImuSample>& samples, double alignment_s)
-{
-    // alignmentStart: the first stance sample, or 0 when there is none (all flags read by then).
-    std::size_t first = 0;
-    while (first < samples_) {
-        waitFor(first + 1);
-        if (flags_.stance[first])
-            break;
-        ++first;
-    }
-    if (first == samples_)
-        return 0;
-    waitFor(alignmentPeriodEnd(samples, first, alignment_s));
-    return first;
 }
 
 }  // namespace footpath

@@ -41,9 +41,6 @@ public:
     void waitForAll() { waitFor(samples_); }
     /// Whether every flag is final now (without waiting).
     bool allDecided();
-    /// The first stance sample (alignmentStart) once its flags and those of the alignment period
-    /// after it (alignmentPeriodEnd) are final: what alignInitialAttitude reads.
-    std::size_t waitForAlignment(const std::vector<ImuSample>& samples, double alignment_s);
 
 private:
     /// The detector's thread: the flags, each decided prefix published, or what it threw.
@@ -53,7 +50,6 @@ private:
     bool publish(std::size_t decided);
 
     const Parameters params_;
-    const StanceFlags& flags_;
     const std::size_t samples_;
     std::size_t known_ = 0;  ///< the reader's copy of decided_, so most waitFor() calls lock nothing
     std::mutex mutex_;

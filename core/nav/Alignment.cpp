@@ -1,5 +1,7 @@
 #include "nav/Alignment.h"
 
+#include "detect/StanceFlagsAhead.h"
+
 #include "nav/Attitude.h"
 #include "nav/ErrorStateEkf.h"
 #include "nav/Pipeline.h"
@@ -10,6 +12,17 @@
 namespace footpath {
 
 namespace {
+
+/// One past the last sample of the alignment period that starts at sample first: the samples at
+/// most alignment_s after it, those averageStatic averages (and whose flags it reads).
+std::size_t alignmentPeriodEnd(const std::vector<ImuSample>& samples, std::size_t first, double alignment_s)
+{
+    const double end_s = samples[first].time_s + alignment_s;
+    std::size_t k = first;
+    while (k < samples.size() && samples[k].time_s <= end_s)
+        ++k;
+    return k;
+}
 
 struct StaticMeans {
     Eigen::Vector3d acc = Eigen::Vector3d::Zero();
@@ -42,13 +55,22 @@ StaticMeans averageStatic(const std::vector<ImuSample>& samples, const std::vect
 
 }  // namespace
 
-std::size_t alignmentPeriodEnd(const std::vector<ImuSample>& samples, std::size_t first, double alignment_s)
+std::size_t waitForAlignmentFlags(StanceFlagsAhead& ahead, const std::vector<ImuSample>& samples,
+                                  const std::vector<std::uint8_t>& stance, double alignment_s)
 {
-    const double end_s = samples[first].time_s + alignment_s;
-    std::size_t k = first;
-    while (k < samples.size() && samples[k].time_s <= end_s)
-        ++k;
-    return k;
+    // alignmentStart, a flag at a time: the first stance sample, or 0 when there is none (every
+    // flag read by then).
+    std::size_t first = 0;
+    while (first < samples.size()) {
+        ahead.waitFor(first + 1);
+        if (stance[first])
+            break;
+        ++first;
+    }
+    if (first == samples.size())
+        return 0;
+    ahead.waitFor(alignmentPeriodEnd(samples, first, alignment_s));
+    return first;
 }
 
 std::size_t alignmentStart(const std::vector<std::uint8_t>& stance)

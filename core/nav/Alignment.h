@@ -12,6 +12,7 @@
 namespace footpath {
 
 class ErrorStateEkf;
+class StanceFlagsAhead;
 
 struct AlignmentResult {
     Eigen::Matrix3d bodyToNav = Eigen::Matrix3d::Identity();
@@ -40,9 +41,11 @@ std::size_t alignmentStart(const std::vector<std::uint8_t>& stance);
 AlignmentResult alignInitialAttitude(const std::vector<ImuSample>& samples, const std::vector<std::uint8_t>& stance,
                                      const Parameters& params);
 
-/// One past the last sample of the alignment period that starts at sample first: the samples at
-/// most alignment_s after it, those alignInitialAttitude averages (and whose flags it reads).
-std::size_t alignmentPeriodEnd(const std::vector<ImuSample>& samples, std::size_t first, double alignment_s);
+/// While ahead decides the flags of stance on another thread, waits for those alignInitialAttitude
+/// reads: up to the first stance sample and over the alignment period after it. Returns that
+/// sample, alignmentStart(stance).
+std::size_t waitForAlignmentFlags(StanceFlagsAhead& ahead, const std::vector<ImuSample>& samples,
+                                  const std::vector<std::uint8_t>& stance, double alignment_s);
 
 /// The state a sample before alignmentStart() gets: the initial one (start position, at rest, the
 /// aligned attitude), recorded as filterSample records a filtered one.

@@ -142,7 +142,7 @@ bool runFilter(const Recording& recording, const Parameters& params, StanceFlags
     const std::vector<ImuSample>& samples = recording.samples;
     const StanceFlags& flags = result.flags;
     // After a mid-walk start, the first stance.
-    const std::size_t start = ahead.waitForAlignment(samples, params.alignment_s);
+    const std::size_t start = waitForAlignmentFlags(ahead, samples, flags.stance, params.alignment_s);
     const AlignmentResult alignment = alignInitialAttitude(samples, flags.stance, params);
     ErrorStateEkf ekf(params, alignment.bodyToNav);
     MeasurementSources sources(params);
