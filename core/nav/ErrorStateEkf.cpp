@@ -233,6 +233,7 @@ void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOf
     const auto selected = [&blockOffsets](int row) { return blockOffsets(row / 3) + row % 3; };
     PHt pht;
     for (int c = 0; c < Rows; ++c)
+#pragma GCC unroll 15
         for (int i = 0; i < N; ++i)
             pht(i, c) = p(filterIndex(i), selected(c));
     MatR s;
@@ -252,7 +253,9 @@ void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOf
     Eigen::Matrix<double, 2 * Rows, N> left, right;  // transposed: columns are contiguous
     left << gain.transpose(), correction.transpose();
     right << pht.transpose(), gain.transpose();
+#pragma GCC unroll 15
     for (int j = 0; j < N; ++j)
+#pragma GCC unroll 15
         for (int i = j; i < N; ++i) {
             double& lower = p(filterIndex(i), filterIndex(j));
             lower -= left.col(i).dot(right.col(j));

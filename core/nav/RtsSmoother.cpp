@@ -71,7 +71,9 @@ template <int N>
 double* storePackedCovariance(const ErrorStateEkf::Matrix15& p, double* out)
 {
     constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
+#pragma GCC unroll 15
     for (int j = 0; j < N; ++j)
+#pragma GCC unroll 15
         for (int i = 0; i <= j; ++i)
             *out++ = p(filterIndex(i), filterIndex(j));
     return out;
@@ -135,6 +137,8 @@ void RtsSmoother::capture(const ErrorStateEkf& ekf)
 
 void RtsSmoother::storeUpdate(const MeasurementUpdate& update)
 {
+    if (storeSelectingUpdate(update))
+        return;
     // The rows of H on the running states. A row that is zero there (ZARU in the 9-state filter)
     // is dropped: the gain's rows for the running states are zero in its column, so it changes
     // nothing the backward pass carries.
@@ -179,6 +183,51 @@ void RtsSmoother::storeUpdate(const MeasurementUpdate& update)
         *out++ = update.weightedInnovation(row);
     for (const int col : rows)
         for (const int row : rows)
+            *out++ = update.inverseS(row, col);
+    *out = static_cast<double>(length);
+}
+
+bool RtsSmoother::storeSelectingUpdate(const MeasurementUpdate& update)
+{
+    // Only when every row selects a running state other than position, so that no row is dropped
+    // and positionObserved_ stays as it is.
+    const auto rows = update.selectedStates.size();
+    for (int row = 0; row < rows; ++row) {
+        const int state = update.selectedStates(row);
+        if (runningIndexOf_[static_cast<std::size_t>(state)] < 0
+            || (state >= ErrorStateEkf::kPos && state < ErrorStateEkf::kPos + 3))
+            return false;
+    }
+    const bool all = active_.size() == ErrorStateEkf::kStates;
+    if (rows == 3)
+        all ? storeSelectingUpdate<ErrorStateEkf::kStates, 3>(update) : storeSelectingUpdate<9, 3>(update);
+    else if (rows == 6)
+        all ? storeSelectingUpdate<ErrorStateEkf::kStates, 6>(update) : storeSelectingUpdate<9, 6>(update);
+    return rows == 3 || rows == 6;
+}
+
+template <int N, int Rows>
+void RtsSmoother::storeSelectingUpdate(const MeasurementUpdate& update)
+{
+    // storeUpdate's record, with every size known at compile time: 1 in 3 samples of a walk has a
+    // ZUPT, and the generic loops cost as much as the rest of capture().
+    constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;  // active_'s order
+    constexpr std::size_t length = 2 + Rows + N * Rows + Rows + Rows * Rows + 1;
+    const std::size_t begin = updateData_.size();
+    updateData_.resize(begin + length);
+    double* out = updateData_.data() + begin;
+    *out++ = Rows;
+    *out++ = 1.0;
+    for (int row = 0; row < Rows; ++row)
+        *out++ = static_cast<double>(runningIndexOf_[static_cast<std::size_t>(update.selectedStates(row))]);
+    for (int row = 0; row < Rows; ++row)
+#pragma GCC unroll 15
+        for (int i = 0; i < N; ++i)
+            *out++ = update.gain(filterIndex(i), row);
+    for (int row = 0; row < Rows; ++row)
+        *out++ = update.weightedInnovation(row);
+    for (int col = 0; col < Rows; ++col)
+        for (int row = 0; row < Rows; ++row)
             *out++ = update.inverseS(row, col);
     *out = static_cast<double>(length);
 }
@@ -310,7 +359,9 @@ void RtsSmoother::carriedRowsOf(std::size_t k, Eigen::Matrix<double, C::size, C:
 {
     // P(k|k) is symmetric: its rows of the carried states are its columns of them.
     const double* packed = record(k);
+#pragma GCC unroll 15
     for (int j = 0; j < C::running; ++j)
+#pragma GCC unroll 15
         for (int i = 0; i <= j; ++i, ++packed) {
             if (C::carriedIndex(i) >= 0)
                 carriedRows(C::carriedIndex(i), j) = *packed;

@@ -86,6 +86,11 @@ private:
     const double* record(std::size_t k) const { return records_.data() + k * recordStride(); }
     Eigen::Matrix3d attitude(std::size_t k) const;
     void storeUpdate(const MeasurementUpdate& update);
+    /// storeUpdate for an update whose H selects 3 or 6 running states, none of them position (ZUPT,
+    /// ZARU in 15 states, both); false, storing nothing, for any other.
+    bool storeSelectingUpdate(const MeasurementUpdate& update);
+    template <int N, int Rows>
+    void storeSelectingUpdate(const MeasurementUpdate& update);
     /// What a backward pass computes: the states (mu), the variances (L) or both.
     enum class Pass { States, Variances, Both };
     bool backwardPass(Pass pass, Result* result, std::vector<Eigen::Matrix<float, 15, 1>>* errorStd,
