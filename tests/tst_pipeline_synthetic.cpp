@@ -68,6 +68,14 @@ Result restingResult(const std::vector<double>& x_m, const std::vector<std::uint
     return result;
 }
 
+bool sameGaitEvents(const Result& a, const Result& b)
+{
+    const auto sameEvent = [](const GaitEvent& x, const GaitEvent& y) {
+        return x.kind == y.kind && x.sample == y.sample && x.time_s == y.time_s;
+    };
+    return std::equal(a.gaitEvents.begin(), a.gaitEvents.end(), b.gaitEvents.begin(), b.gaitEvents.end(), sameEvent);
+}
+
 }  // namespace
 
 class TestPipelineSynthetic : public QObject {
@@ -315,6 +323,16 @@ private slots:
                 QVERIFY2(two.rollPitchYaw_rad == one.rollPitchYaw_rad && two.errorStd == one.errorStd, setting);
                 QVERIFY2(two.steps.size() == one.steps.size() && two.warnings.size() == one.warnings.size(), setting);
                 QCOMPARE(two.summary.pathLength_m, one.summary.pathLength_m);
+                // The gait rates, computed on the detector's thread, are what the gait detection
+                // computes itself from the samples.
+                Result recomputed = two;
+                detectGaitEvents(*recording, recomputed);
+                QVERIFY2(!two.gaitEvents.empty(), setting);
+                for (const Result* other : {&one, static_cast<const Result*>(&recomputed)}) {
+                    QVERIFY2(sameGaitEvents(two, *other), setting);
+                    QVERIFY2(two.gaitStance == other->gaitStance, setting);
+                    QCOMPARE(two.gait.strideLength_m, other->gait.strideLength_m);
+                }
             }
         }
     }

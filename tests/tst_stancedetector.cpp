@@ -7,7 +7,9 @@
 #include <QDirIterator>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 using namespace footpath;
 
@@ -437,6 +439,30 @@ private slots:
             if (run % 2 == 1)
                 ahead.waitFor(1);
         }
+    }
+
+    void workAfterTheFlagsSeesThemAllAndItsFailureReachesTheReader()
+    {
+        const std::vector<ImuSample> samples = alternatingWalk(50000);
+        const StanceFlags expected = detectStance(samples, Parameters());
+        for (const auto mode : {StanceFlagsAhead::Mode::Concurrent, StanceFlagsAhead::Mode::First}) {
+            StanceFlags flags;
+            std::size_t stanceSeen = 0;
+            int runs = 0;
+            StanceFlagsAhead ahead(samples, Parameters(), flags, mode, [&] {
+                ++runs;
+                stanceSeen = static_cast<std::size_t>(std::count(flags.stance.begin(), flags.stance.end(), 1));
+            });
+            ahead.waitForAfterFlags();
+            QCOMPARE(runs, 1);
+            QCOMPARE(stanceSeen, static_cast<std::size_t>(std::count(expected.stance.begin(), expected.stance.end(), 1)));
+            QVERIFY(flags.stance == expected.stance);
+        }
+        StanceFlags flags;
+        StanceFlagsAhead failing(samples, Parameters(), flags, StanceFlagsAhead::Mode::Concurrent,
+                                 [] { throw std::runtime_error("out of memory"); });
+        failing.waitForAll();  // the flags are fine; only the work after them failed
+        QVERIFY_THROWS_EXCEPTION(std::runtime_error, failing.waitForAfterFlags());
     }
 
     void stanceIsTheFilteredConjunction()

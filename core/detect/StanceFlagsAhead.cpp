@@ -5,12 +5,14 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 
 namespace footpath {
 
 StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const Parameters& params,
-                                   StanceFlags& flags, Mode mode)
+                                   StanceFlags& flags, Mode mode, std::function<void()> afterFlags)
     : params_(params)
+    , afterFlags_(std::move(afterFlags))
     , samples_(samples.size())
 {
     if (mode == Mode::Concurrent) {
@@ -23,6 +25,9 @@ StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const 
     }
     detectStanceInto(samples, params, flags, {});
     known_ = decided_ = samples_;
+    if (afterFlags_)
+        afterFlags_();
+    afterFlagsEnded_ = true;
 }
 
 void StanceFlagsAhead::detectOnThisThread(const std::vector<ImuSample>& samples, StanceFlags& flags)
@@ -40,11 +45,46 @@ void StanceFlagsAhead::detectOnThisThread(const std::vector<ImuSample>& samples,
     } catch (...) {
         failure = std::current_exception();
     }
-    if (!failure)
+    if (failure) {
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            failure_ = failure;
+            published_.notify_all();
+        }
+        afterFlagsEnded(failure);
         return;
+    }
+    std::exception_ptr afterFailure;
+    if (afterFlags_ && allDecidedHere()) {
+        try {
+            afterFlags_();
+        } catch (...) {
+            afterFailure = std::current_exception();
+        }
+    }
+    afterFlagsEnded(afterFailure);
+}
+
+bool StanceFlagsAhead::allDecidedHere()
+{
     const std::lock_guard<std::mutex> lock(mutex_);
-    failure_ = failure;
+    return decided_ == samples_ && !stop_;
+}
+
+void StanceFlagsAhead::afterFlagsEnded(std::exception_ptr failure)
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    afterFlagsEnded_ = true;
+    afterFlagsFailure_ = failure;
     published_.notify_all();
+}
+
+void StanceFlagsAhead::waitForAfterFlags()
+{
+    std::unique_lock<std::mutex> lock(mutex_);
+    published_.wait(lock, [&] { return afterFlagsEnded_; });
+    if (afterFlagsFailure_)
+        std::rethrow_exception(afterFlagsFailure_);
 }
 
 StanceFlagsAhead::~StanceFlagsAhead()

@@ -7,6 +7,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -23,8 +24,11 @@ class StanceFlagsAhead {
 public:
     enum class Mode { Concurrent, First };
     /// samples and flags must outlive this object, which writes flags until every one is decided
-    /// (waitForAll) or it is destroyed; params is copied.
-    StanceFlagsAhead(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags, Mode mode);
+    /// (waitForAll) or it is destroyed; params is copied. afterFlags, if given, runs once every
+    /// flag is decided, on the detector's thread (work on the samples alone that the reader needs
+    /// only at its end, done while it reads) or in the constructor; waitForAfterFlags() waits for it.
+    StanceFlagsAhead(const std::vector<ImuSample>& samples, const Parameters& params, StanceFlags& flags, Mode mode,
+                     std::function<void()> afterFlags = {});
     /// Stops the detector at its next batch and waits for it (a cancelled run).
     ~StanceFlagsAhead();
     StanceFlagsAhead(const StanceFlagsAhead&) = delete;
@@ -41,6 +45,9 @@ public:
     void waitForAll() { waitFor(samples_); }
     /// Whether every flag is final now (without waiting).
     bool allDecided();
+    /// Blocks until afterFlags has run (every flag is final then too). Rethrows what it or the
+    /// detector threw.
+    void waitForAfterFlags();
 
 private:
     /// The detector's thread: the flags, each decided prefix published, or what it threw.
@@ -48,8 +55,13 @@ private:
     void waitForSlow(std::size_t count);
     /// Publishes a decided prefix; false once the reader has gone.
     bool publish(std::size_t decided);
+    /// On the detector's thread: whether every flag was decided and the reader still wants them.
+    bool allDecidedHere();
+    /// Marks afterFlags as run (or abandoned), with what went wrong if anything did.
+    void afterFlagsEnded(std::exception_ptr failure);
 
     const Parameters params_;
+    const std::function<void()> afterFlags_;
     const std::size_t samples_;
     std::size_t known_ = 0;  ///< the reader's copy of decided_, so most waitFor() calls lock nothing
     std::mutex mutex_;
@@ -57,6 +69,8 @@ private:
     std::size_t decided_ = 0;  ///< guarded by mutex_, as are the two below
     bool stop_ = false;
     std::exception_ptr failure_;
+    bool afterFlagsEnded_ = false;
+    std::exception_ptr afterFlagsFailure_;
     std::thread detector_;
 };
 

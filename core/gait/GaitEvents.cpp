@@ -61,7 +61,7 @@ struct SmoothedRates {
     Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
 };
 
-SmoothedRates smoothedRates(const std::vector<ImuSample>& samples, const std::vector<double>& time_s)
+SmoothedRates smoothedRates(const std::vector<ImuSample>& samples)
 {
     SmoothedRates smoothed;
     smoothed.rates.reserve(samples.size());
@@ -71,14 +71,15 @@ SmoothedRates smoothedRates(const std::vector<ImuSample>& samples, const std::ve
     const std::size_t n = samples.size();
     std::size_t first = 0, end = 0;  // the window [first, end)
     for (std::size_t k = 0; k < n; ++k) {
-        const double windowEnd_s = time_s[k] + 0.5 * kSmoothing_s, windowStart_s = time_s[k] - 0.5 * kSmoothing_s;
-        for (; end < n && time_s[end] <= windowEnd_s; ++end) {
+        const double time_s = samples[k].time_s;
+        const double windowEnd_s = time_s + 0.5 * kSmoothing_s, windowStart_s = time_s - 0.5 * kSmoothing_s;
+        for (; end < n && samples[end].time_s <= windowEnd_s; ++end) {
             const Eigen::Vector3d& gyr = samples[end].gyr_radps;
             sumX += gyr.x();
             sumY += gyr.y();
             sumZ += gyr.z();
         }
-        for (; time_s[first] < windowStart_s; ++first) {
+        for (; samples[first].time_s < windowStart_s; ++first) {
             const Eigen::Vector3d& gyr = samples[first].gyr_radps;
             sumX -= gyr.x();
             sumY -= gyr.y();
@@ -112,8 +113,9 @@ SmoothedRates smoothedRates(const std::vector<ImuSample>& samples, const std::ve
 /// bound), and decides if it outweighs the other terms' bounds; then over all terms; and only if
 /// that lies within 1e-6 of the bounds' sum from zero (room for the approximation and for the
 /// rounding of 1e8 terms), with the exact rotation. The answer is the exact sum's every time.
-bool rateAgreesWithMotion(const std::vector<ImuSample>& samples, const std::vector<double>& along, const Result& result)
+bool rateAgreesWithMotion(const std::vector<ImuSample>& samples, const GaitRates& rates, const Result& result)
 {
+    const std::vector<double>& along = rates.rawAlongAxis;
     // Each moving sample's bound; -1 marks the others.
     std::vector<double> termBounds;
     termBounds.reserve(samples.size());
@@ -125,7 +127,7 @@ bool rateAgreesWithMotion(const std::vector<ImuSample>& samples, const std::vect
             termBounds.push_back(-1.0);
             continue;
         }
-        termBounds.push_back(std::abs(along[k]) * samples[k].gyr_radps.lpNorm<1>()
+        termBounds.push_back(std::abs(along[k]) * rates.l1Norm[k]
                              * (std::abs(velocity.x()) + std::abs(velocity.y())));
         bounds += termBounds.back();
         ++moving;
@@ -167,34 +169,19 @@ bool rateAgreesWithMotion(const std::vector<ImuSample>& samples, const std::vect
     return agreement >= 0.0;
 }
 
-/// The rates about the sagittal axis: the principal axis of the smoothed rate, signed so that the
-/// rotation about it is positive while the estimated foot moves forwards through mid-swing (speed
-/// weights the swing over push-off and foot slap, whose rotation is the other way).
-struct SagittalRates {
-    std::vector<double> raw;       ///< of each gyro reading
-    std::vector<double> smoothed;  ///< of the smoothed rates
-};
-
-SagittalRates sagittalRates(const std::vector<ImuSample>& samples, const SmoothedRates& smoothed, const Result& result)
+/// Turns the rates about the principal axis into rates about the sagittal axis: signed so that
+/// the rotation about it is positive while the estimated foot moves forwards through mid-swing
+/// (speed weights the swing over push-off and foot slap, whose rotation is the other way).
+void signAlongMotion(const std::vector<ImuSample>& samples, GaitRates& rates, const Result& result)
 {
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(smoothed.scatter);
-    const Eigen::Vector3d axis = solver.eigenvectors().col(2);  // eigenvalues ascending
-    SagittalRates rates;
-    rates.raw.reserve(samples.size());
-    rates.smoothed.reserve(samples.size());
-    for (std::size_t k = 0; k < samples.size(); ++k) {
-        rates.raw.push_back(samples[k].gyr_radps.dot(axis));
-        rates.smoothed.push_back(smoothed.rates[k].dot(axis));
-    }
     // Turning the axis round negates every product of the dot products exactly: the rates about
     // -axis are these negated, to the last bit.
-    if (!rateAgreesWithMotion(samples, rates.raw, result)) {
-        for (double& rate : rates.raw)
+    if (!rateAgreesWithMotion(samples, rates, result)) {
+        for (double& rate : rates.rawAlongAxis)
             rate = -rate;
-        for (double& rate : rates.smoothed)
+        for (double& rate : rates.smoothedAlongAxis)
             rate = -rate;
     }
-    return rates;
 }
 
 /// First sample at or after time t (times ascending).
@@ -307,16 +294,16 @@ std::vector<Swing> findSwings(const std::vector<double>& rate, const std::vector
     return swings;
 }
 
-Stance quietPart(const std::vector<ImuSample>& samples, const Result& result, std::size_t first, std::size_t last)
+Stance quietPart(const std::vector<double>& squaredNorm, const Result& result, std::size_t first, std::size_t last)
 {
     Stance stance;
     // The square root grows with its argument: the smallest |w| is the root of the smallest |w|^2.
-    double leastSquared = samples[first].gyr_radps.squaredNorm();
+    double leastSquared = squaredNorm[first];
     for (std::size_t k = first; k <= last; ++k)
-        leastSquared = std::min(leastSquared, samples[k].gyr_radps.squaredNorm());
+        leastSquared = std::min(leastSquared, squaredNorm[k]);
     const double quietest = std::sqrt(leastSquared);
     // The quiet part runs from the first quiet sample to the last: search from either end.
-    const auto quiet = [&](std::size_t k) { return samples[k].gyr_radps.norm() <= quietest + kQuietMargin_radps; };
+    const auto quiet = [&](std::size_t k) { return std::sqrt(squaredNorm[k]) <= quietest + kQuietMargin_radps; };
     std::size_t quietFirst = first;
     while (quietFirst <= last && !quiet(quietFirst))
         ++quietFirst;
@@ -353,15 +340,15 @@ GaitEvent eventAtSample(GaitEventKind kind, std::size_t k, const std::vector<dou
 }
 
 /// Stance i lies between swing i - 1 and swing i; the first and last reach the recording's ends.
-std::vector<Stance> stancesAround(const std::vector<Swing>& swings, const std::vector<ImuSample>& samples,
+std::vector<Stance> stancesAround(const std::vector<Swing>& swings, const std::vector<double>& squaredNorm,
                                   const Result& result)
 {
     std::vector<Stance> stances;
-    const std::size_t n = samples.size();
+    const std::size_t n = squaredNorm.size();
     for (std::size_t i = 0; i <= swings.size(); ++i) {
         const std::size_t first = i == 0 ? 0 : nearestSample(swings[i - 1].heelStrike, n);
         const std::size_t last = i == swings.size() ? n - 1 : nearestSample(swings[i].toeOff, n);
-        stances.push_back(quietPart(samples, result, first, std::max(first, last)));
+        stances.push_back(quietPart(squaredNorm, result, first, std::max(first, last)));
     }
     return stances;
 }
@@ -474,7 +461,33 @@ const char* gaitEventKindName(GaitEventKind kind)
     return "unknown";
 }
 
+GaitRates gaitRatesOf(const std::vector<ImuSample>& samples)
+{
+    const SmoothedRates smoothed = smoothedRates(samples);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(smoothed.scatter);
+    const Eigen::Vector3d axis = solver.eigenvectors().col(2);  // eigenvalues ascending
+    GaitRates rates;
+    const std::size_t n = samples.size();
+    rates.rawAlongAxis.reserve(n);
+    rates.smoothedAlongAxis.reserve(n);
+    rates.squaredNorm.reserve(n);
+    rates.l1Norm.reserve(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Eigen::Vector3d& gyr = samples[k].gyr_radps;
+        rates.rawAlongAxis.push_back(gyr.dot(axis));
+        rates.smoothedAlongAxis.push_back(smoothed.rates[k].dot(axis));
+        rates.squaredNorm.push_back(gyr.squaredNorm());
+        rates.l1Norm.push_back(gyr.lpNorm<1>());
+    }
+    return rates;
+}
+
 void detectGaitEvents(const Recording& recording, Result& result)
+{
+    detectGaitEvents(recording, GaitRates{}, result);
+}
+
+void detectGaitEvents(const Recording& recording, GaitRates rates, Result& result)
 {
     result.gaitEvents.clear();
     result.gaitStrides.clear();
@@ -483,11 +496,13 @@ void detectGaitEvents(const Recording& recording, Result& result)
     result.gaitStance.assign(result.time_s.size(), 1);
     if (samples.size() < 3 || result.time_s.size() != samples.size() || result.velocity_mps.size() != samples.size())
         return;
-    const SagittalRates rates = sagittalRates(samples, smoothedRates(samples, result.time_s), result);
-    const std::vector<Swing> swings = findSwings(rates.raw, rates.smoothed, result);
+    if (rates.rawAlongAxis.size() != samples.size())  // none given
+        rates = gaitRatesOf(samples);
+    signAlongMotion(samples, rates, result);
+    const std::vector<Swing> swings = findSwings(rates.rawAlongAxis, rates.smoothedAlongAxis, result);
     if (swings.empty())
         return;
-    const std::vector<Stance> stances = stancesAround(swings, samples, result);
+    const std::vector<Stance> stances = stancesAround(swings, rates.squaredNorm, result);
     for (std::size_t i = 0; i + 1 < swings.size(); ++i)
         result.gaitStrides.push_back(makeStride(swings, stances, i, result));
     result.gaitEvents = eventsInOrder(swings, stances, result.time_s);

@@ -33,6 +33,20 @@ namespace footpath {
 /// and toe-off errors 2-15 ms per trial (tests/tst_gaitevents.cpp).
 void detectGaitEvents(const Recording& recording, Result& result);
 
+/// What detectGaitEvents reads of the gyro alone, one pass over the samples that needs no estimate:
+/// runPipeline computes it on the stance detector's thread while the filter runs. Reading the
+/// samples (88 bytes each, long out of cache by then) was a third of the gait detection's time.
+struct GaitRates {
+    /// The rate about the principal axis of the rate averaged over 0.1 s, of each reading and of
+    /// each average; unsigned: which way round the axis points needs the estimated motion.
+    std::vector<double> rawAlongAxis, smoothedAlongAxis;
+    std::vector<double> squaredNorm, l1Norm;  ///< |w|^2 and |w|_1 of each reading
+};
+GaitRates gaitRatesOf(const std::vector<ImuSample>& samples);
+
+/// detectGaitEvents with the rates already computed (gaitRatesOf(recording.samples)).
+void detectGaitEvents(const Recording& recording, GaitRates rates, Result& result);
+
 /// For each of result.steps (ZUPT stances) the gait stride whose stance (heel strike to toe off)
 /// holds the middle of the step's stance, or nullptr; each stride goes to the first such step only.
 /// The steps CSV and the step table show the gait figures of a step through it.

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <sstream>
+#include <utility>
 
 namespace footpath {
 
@@ -276,10 +277,10 @@ void fillStepsAndSummary(Result& result)
     summarize(result, stancePathLength(result.steps));
 }
 
-void postProcess(const Recording& recording, const Parameters& params, Result& result)
+void postProcess(const Recording& recording, const Parameters& params, Result& result, GaitRates gaitRates)
 {
     fillStepsAndSummary(result);
-    detectGaitEvents(recording, result);
+    detectGaitEvents(recording, std::move(gaitRates), result);
     classifyMotion(recording, params, result);
     result.warnings = checkPlausibility(result, params);
 }
@@ -294,14 +295,20 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
     const auto start = std::chrono::steady_clock::now();
     Result& result = output.result;
     bool completed = false;
+    GaitRates gaitRates;  // the gait detection's rates: the samples alone decide them
     {
         // With a second thread the filter runs behind the detector, which may write result.flags
-        // until this scope ends (a cancelled run): output is returned only after that.
+        // until this scope ends (a cancelled run): output is returned only after that. Then that
+        // thread, idle while the filter runs, computes the gait rates.
         StanceFlagsAhead ahead(recording.samples, params, result.flags,
                                threads == RtsSmoother::Threads::Two ? StanceFlagsAhead::Mode::Concurrent
-                                                                    : StanceFlagsAhead::Mode::First);
+                                                                    : StanceFlagsAhead::Mode::First,
+                               [&] { gaitRates = gaitRatesOf(recording.samples); });
         // postProcess reads no standard deviations, so it overlaps the smoother's variances (runFilter).
-        const auto finishStates = [&] { postProcess(recording, params, result); };
+        const auto finishStates = [&] {
+            ahead.waitForAfterFlags();
+            postProcess(recording, params, result, std::move(gaitRates));
+        };
         if (params.estimatorKind() == EstimatorKind::Feliz) {
             ahead.waitForAll();
             completed = runFelizIntegrator(recording, params, progress, result);

@@ -2,6 +2,7 @@
 
 #include "Recording.h"
 #include "Result.h"
+#include "gait/GaitEvents.h"
 #include "nav/Parameters.h"
 #include "nav/RtsSmoother.h"
 
@@ -60,8 +61,9 @@ void fillStepsAndSummary(Result& result);
 
 /// What runPipeline derives from the filter's (or smoother's) states and stance flags in result:
 /// the steps and summary, the gait events, the motion classes and the plausibility warnings.
-/// Exposed for the benchmark of these steps alone.
-void postProcess(const Recording& recording, const Parameters& params, Result& result);
+/// gaitRates: gaitRatesOf(recording.samples) if already computed, else computed here. Exposed for
+/// the benchmark of these steps alone.
+void postProcess(const Recording& recording, const Parameters& params, Result& result, GaitRates gaitRates = {});
 
 // The pieces below are shared with StreamingEstimator, which runs them one sample at a time and so
 // gives the same numbers as runPipeline.
