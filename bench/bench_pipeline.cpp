@@ -227,4 +227,4 @@ BENCHMARK(BM_EkfZuptZaruUpdate);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+// main: BenchmarkMain.cpp

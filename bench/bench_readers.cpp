@@ -124,4 +124,4 @@ BENCHMARK(BM_ReadMtb)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+// main: BenchmarkMain.cpp

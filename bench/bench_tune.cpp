@@ -55,4 +55,4 @@ void BM_TunePyshoeTrials(benchmark::State& state)
 
 BENCHMARK(BM_TunePyshoeTrials)->Arg(200)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
-BENCHMARK_MAIN();
+// main: BenchmarkMain.cpp

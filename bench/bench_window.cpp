@@ -25,6 +25,7 @@
 #include "LiveViews.h"
 #include "MainWindow.h"
 #include "Recorder.h"
+#include "nav/BulkAllocator.h"
 #include "nav/StreamingEstimator.h"
 
 #include <benchmark/benchmark.h>
@@ -295,6 +296,7 @@ int main(int argc, char** argv)
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QStandardPaths::setTestModeEnabled(true);  // the benchmark's settings never touch a user's
+    footpath::keepFreedMemoryForReruns();      // as the application does
     QApplication app(argc, argv);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))

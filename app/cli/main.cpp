@@ -6,6 +6,7 @@
 #include "cli/RecordCommand.h"
 #include "cli/ReportCommand.h"
 #include "cli/TuneCommand.h"
+#include "nav/BulkAllocator.h"
 
 #include <algorithm>
 #include <exception>
@@ -61,6 +62,7 @@ int dispatch(const std::vector<std::string>& args)
 
 int main(int argc, char** argv)
 {
+    footpath::keepFreedMemoryForReruns();  // eval, tune and compare run the estimate many times
     try {
         return dispatch(std::vector<std::string>(argv + 1, argv + argc));
     } catch (const BadInput& bad) {

@@ -7,6 +7,7 @@
 #include "RecordingLoader.h"
 #include "Result.h"
 #include "io/ParameterIo.h"
+#include "nav/BulkAllocator.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -148,6 +149,7 @@ int main(int argc, char** argv)
 {
     if (asksOnlyForHelpOrVersion(argc, argv))
         return answerHelpOrVersion(argc, argv);
+    footpath::keepFreedMemoryForReruns();  // every slider move re-runs the estimate
     QApplication app(argc, argv);
     // Past a file size limit (ulimit -f) a write then fails with EFBIG, which the recorder reports
     // and survives, instead of the signal ending the program with the recording in flight.

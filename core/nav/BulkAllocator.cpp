@@ -6,6 +6,9 @@
 #include <vector>
 
 #include <sys/mman.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace footpath::bulk {
 
@@ -116,3 +119,16 @@ void releaseCached() noexcept
 }
 
 }  // namespace footpath::bulk
+
+namespace footpath {
+
+void keepFreedMemoryForReruns()
+{
+#if defined(__GLIBC__)
+    // Setting either threshold also stops glibc from moving them with the sizes it sees freed.
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+#endif
+}
+
+}  // namespace footpath

@@ -26,6 +26,15 @@ std::size_t cachedBytes();
 void releaseCached() noexcept;
 }  // namespace bulk
 
+/// Tells the C library (glibc) to keep the memory a run frees for the next run instead of handing
+/// it back to the kernel: by default it returns a freed block of more than 128 kB at once, and a
+/// re-run (a slider, the tuner) then pays a page fault and the zeroing of every page it touches
+/// again (1141 faults, a third of the time, of a 65 s walk's run). Blocks up to 32 MB come from the
+/// heap, and up to 256 MB freed at its top stay with the process; larger ones are still returned.
+/// Call once at program start, before any thread (the applications and the benchmarks do);
+/// elsewhere than glibc it does nothing.
+void keepFreedMemoryForReruns();
+
 /// Allocator for the large per-run arrays a pass over a recording fills once (the smoother's
 /// records): elements are default-initialised, not zeroed (every element is written before it is
 /// read, and zeroing 100 MB costs as much as filling it), and a block of several MB asks the kernel
