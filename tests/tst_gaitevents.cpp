@@ -113,6 +113,7 @@ private slots:
     void simulatedStridesAtEitherRate_data();
     void simulatedStridesAtEitherRate();
     void eventsDoNotDependOnTheRate();
+    void ratesGivenAreTheRatesUsed();
     void turningStridesAreTheCorners();
     void csvColumns();
     void ipolTrials_data();
@@ -208,6 +209,29 @@ void TestGaitEvents::eventsDoNotDependOnTheRate()
             QVERIFY2(std::abs(a[i] - b[i]) < 0.005, qPrintable(QStringLiteral("%1 %2: %3 s at 100 Hz, %4 s at 200 Hz")
                                                                   .arg(gaitEventKindName(kind)).arg(i).arg(a[i]).arg(b[i])));
     }
+}
+
+void TestGaitEvents::ratesGivenAreTheRatesUsed()
+{
+    // runPipeline hands over the rates the detector's thread computed (gaitRatesOf): the detection
+    // must use them, not quietly compute its own (only rates of the wrong length are replaced).
+    const SimulatedGait gait = simulateGait(straightLinePath(14.0), 100.0);
+    const Recording& recording = gait.walk.recording;
+    Result own = gait.result, given = gait.result, flat = gait.result;
+    detectGaitEvents(recording, own);
+    detectGaitEvents(recording, gaitRatesOf(recording.samples), given);
+    QVERIFY(!own.gaitEvents.empty());
+    QCOMPARE(given.gaitEvents.size(), own.gaitEvents.size());
+    QVERIFY(given.gaitStance == own.gaitStance);
+    GaitRates still = gaitRatesOf(recording.samples);  // a foot that never turns: no swing
+    std::fill(still.rawAlongAxis.begin(), still.rawAlongAxis.end(), 0.0);
+    std::fill(still.smoothedAlongAxis.begin(), still.smoothedAlongAxis.end(), 0.0);
+    detectGaitEvents(recording, still, flat);
+    QVERIFY(flat.gaitEvents.empty());
+    GaitRates truncated = gaitRatesOf(recording.samples);
+    truncated.l1Norm.pop_back();
+    detectGaitEvents(recording, truncated, flat);
+    QCOMPARE(flat.gaitEvents.size(), own.gaitEvents.size());
 }
 
 void TestGaitEvents::turningStridesAreTheCorners()

@@ -458,11 +458,12 @@ private slots:
             QCOMPARE(stanceSeen, static_cast<std::size_t>(std::count(expected.stance.begin(), expected.stance.end(), 1)));
             QVERIFY(flags.stance == expected.stance);
         }
-        StanceFlags flags;
-        StanceFlagsAhead failing(samples, Parameters(), flags, StanceFlagsAhead::Mode::Concurrent,
-                                 [] { throw std::runtime_error("out of memory"); });
-        failing.waitForAll();  // the flags are fine; only the work after them failed
-        QVERIFY_THROWS_EXCEPTION(std::runtime_error, failing.waitForAfterFlags());
+        for (const auto mode : {StanceFlagsAhead::Mode::Concurrent, StanceFlagsAhead::Mode::First}) {
+            StanceFlags flags;
+            StanceFlagsAhead failing(samples, Parameters(), flags, mode, [] { throw std::runtime_error("out of memory"); });
+            failing.waitForAll();  // the flags are fine; only the work after them failed
+            QVERIFY_THROWS_EXCEPTION(std::runtime_error, failing.waitForAfterFlags());
+        }
     }
 
     void stanceIsTheFilteredConjunction()

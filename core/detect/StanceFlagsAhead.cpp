@@ -25,8 +25,13 @@ StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const 
     }
     detectStanceInto(samples, params, flags, {});
     known_ = decided_ = samples_;
-    if (afterFlags_)
-        afterFlags_();
+    if (afterFlags_) {
+        try {
+            afterFlags_();
+        } catch (...) {
+            afterFlagsFailure_ = std::current_exception();  // for waitForAfterFlags, as with a thread
+        }
+    }
     afterFlagsEnded_ = true;
 }
 

@@ -496,8 +496,9 @@ void detectGaitEvents(const Recording& recording, GaitRates rates, Result& resul
     result.gaitStance.assign(result.time_s.size(), 1);
     if (samples.size() < 3 || result.time_s.size() != samples.size() || result.velocity_mps.size() != samples.size())
         return;
-    if (rates.rawAlongAxis.size() != samples.size())  // none given
-        rates = gaitRatesOf(samples);
+    const auto fits = [&samples](const std::vector<double>& values) { return values.size() == samples.size(); };
+    if (!fits(rates.rawAlongAxis) || !fits(rates.smoothedAlongAxis) || !fits(rates.squaredNorm) || !fits(rates.l1Norm))
+        rates = gaitRatesOf(samples);  // none given (or not this recording's)
     signAlongMotion(samples, rates, result);
     const std::vector<Swing> swings = findSwings(rates.rawAlongAxis, rates.smoothedAlongAxis, result);
     if (swings.empty())
