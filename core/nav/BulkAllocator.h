@@ -27,9 +27,9 @@ void releaseCached() noexcept;
 }  // namespace bulk
 
 /// Tells the C library (glibc) to keep the memory a run frees for the next run instead of handing
-/// it back to the kernel: by default it returns a freed block of more than 128 kB at once, and a
-/// re-run (a slider, the tuner) then pays a page fault and the zeroing of every page it touches
-/// again (1141 faults, a third of the time, of a 65 s walk's run). Blocks up to 32 MB come from the
+/// it back to the kernel: by default it returns a freed block of more than 128 kB at once, and the
+/// next run in the process then pays a page fault and the zeroing of every page it touches again
+/// (1141 faults, a third of the time, of a 32 s walk's run). Blocks up to 32 MB come from the
 /// heap, and up to 256 MB freed at its top stay with the process; larger ones are still returned.
 /// Call once at program start, before any thread (the applications and the benchmarks do);
 /// elsewhere than glibc it does nothing.
