@@ -25,14 +25,20 @@ StanceFlagsAhead::StanceFlagsAhead(const std::vector<ImuSample>& samples, const 
     }
     detectStanceInto(samples, params, flags, {});
     known_ = decided_ = samples_;
+    afterFlagsFailure_ = runAfterFlags();  // for waitForAfterFlags, as with a thread
+    afterFlagsEnded_ = true;
+}
+
+std::exception_ptr StanceFlagsAhead::runAfterFlags() const
+{
     if (afterFlags_) {
         try {
             afterFlags_();
         } catch (...) {
-            afterFlagsFailure_ = std::current_exception();  // for waitForAfterFlags, as with a thread
+            return std::current_exception();
         }
     }
-    afterFlagsEnded_ = true;
+    return nullptr;
 }
 
 void StanceFlagsAhead::detectOnThisThread(const std::vector<ImuSample>& samples, StanceFlags& flags)
@@ -59,15 +65,7 @@ void StanceFlagsAhead::detectOnThisThread(const std::vector<ImuSample>& samples,
         afterFlagsEnded(failure);
         return;
     }
-    std::exception_ptr afterFailure;
-    if (afterFlags_ && allDecidedHere()) {
-        try {
-            afterFlags_();
-        } catch (...) {
-            afterFailure = std::current_exception();
-        }
-    }
-    afterFlagsEnded(afterFailure);
+    afterFlagsEnded(allDecidedHere() ? runAfterFlags() : nullptr);
 }
 
 bool StanceFlagsAhead::allDecidedHere()

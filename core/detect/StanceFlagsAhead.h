@@ -57,6 +57,8 @@ private:
     bool publish(std::size_t decided);
     /// On the detector's thread: whether every flag was decided and the reader still wants them.
     bool allDecidedHere();
+    /// afterFlags, if any; what it threw.
+    std::exception_ptr runAfterFlags() const;
     /// Marks afterFlags as run (or abandoned), with what went wrong if anything did.
     void afterFlagsEnded(std::exception_ptr failure);
 

@@ -192,12 +192,9 @@ bool RtsSmoother::storeSelectingUpdate(const MeasurementUpdate& update)
     // Only when every row selects a running state other than position, so that no row is dropped
     // and positionObserved_ stays as it is.
     const auto rows = update.selectedStates.size();
-    for (int row = 0; row < rows; ++row) {
-        const int state = update.selectedStates(row);
-        if (runningIndexOf_[static_cast<std::size_t>(state)] < 0
-            || (state >= ErrorStateEkf::kPos && state < ErrorStateEkf::kPos + 3))
+    for (int row = 0; row < rows; ++row)
+        if (runningIndexOf_[static_cast<std::size_t>(update.selectedStates(row))] < 0 || observesPosition(update, row))
             return false;
-    }
     const bool all = active_.size() == ErrorStateEkf::kStates;
     if (rows == 3)
         all ? storeSelectingUpdate<ErrorStateEkf::kStates, 3>(update) : storeSelectingUpdate<9, 3>(update);
