@@ -588,14 +588,15 @@ void StanceFlagsPlot::plotStatistic()
     }
     statistic_->data()->set(statistic, true);
     statisticThreshold_->setData(thresholdKeys, threshold, true);
-    valueAxis(statisticRect())->setRange(std::pow(10.0, lowest), std::pow(10.0, highest));
+    valueAxis(rows_[kStatisticRow].rect)->setRange(std::pow(10.0, lowest), std::pow(10.0, highest));
 }
 
 void StanceFlagsPlot::nameStatistic()
 {
     const auto kind = static_cast<std::size_t>(params_.detector);
     const char* label = kind < kStatisticAxisLabels.size() ? kStatisticAxisLabels[kind] : kStatisticAxisLabels[1];
-    valueAxis(statisticRect())->setLabel(tr(label));
+    // Not statisticRect(), which would plot a hidden tab's stale curves (4 ms of a parameter change).
+    valueAxis(rows_[kStatisticRow].rect)->setLabel(tr(label));
     statistic_->setName(tr(label).replace(QLatin1Char('\n'), QLatin1Char(' ')));
     if (usesPaperDetector())
         statisticThreshold_->setName(tr("max std = %1 m/s²").arg(params_.acc_std_max_mps2));
