@@ -337,6 +337,43 @@ private slots:
         }
     }
 
+    void aUsedResultsMemoryChangesNoDigit()
+    {
+        // A run into the memory of an older result (a slider's re-runs in the window) gives the
+        // same bits as a run into new memory, and fills that memory instead of asking for more.
+        const SimulatedWalk longWalk = simulateWalk(closedRectanglePath(10.0, 5.0), mtiClassSensor(100.0, 7));
+        const SimulatedWalk walk = simulateWalk(straightLinePath(12.0), mtiClassSensor(100.0, 3));
+        Parameters paper, filterAlone, feliz;
+        paper.detector = static_cast<int>(DetectorKind::PaperC1C2C3);
+        filterAlone.estimator = static_cast<int>(EstimatorKind::Ekf);
+        feliz.estimator = static_cast<int>(EstimatorKind::Feliz);
+        for (const Parameters& params : {Parameters(), withBiasStates(), paper, filterAlone, feliz}) {
+            const Result fresh = run(walk.recording, params);
+            Result used = run(longWalk.recording, withBiasStates());  // longer, other numbers
+            const double* const usedTimes = used.time_s.data();
+            const auto* const usedStd = used.errorStd.data();
+            const Result reused =
+                runPipeline(walk.recording, params, {}, RtsSmoother::Threads::Two, std::move(used)).result;
+            QCOMPARE(reused.time_s.data(), usedTimes);
+            QCOMPARE(reused.errorStd.data(), usedStd);
+            QVERIFY(reused.time_s == fresh.time_s && reused.position_m == fresh.position_m);
+            QVERIFY(reused.velocity_mps == fresh.velocity_mps && reused.rollPitchYaw_rad == fresh.rollPitchYaw_rad);
+            QVERIFY(reused.gyroBias_radps == fresh.gyroBias_radps && reused.accBias_mps2 == fresh.accBias_mps2);
+            QVERIFY(reused.errorStd == fresh.errorStd && reused.forwardSpeed_mps == fresh.forwardSpeed_mps);
+            QVERIFY(reused.flags.stance == fresh.flags.stance && reused.flags.c == fresh.flags.c);
+            QVERIFY(reused.flags.c1 == fresh.flags.c1 && reused.flags.c2 == fresh.flags.c2
+                    && reused.flags.c3 == fresh.flags.c3);
+            QVERIFY(reused.flags.logStatistic == fresh.flags.logStatistic
+                    && reused.flags.logThreshold == fresh.flags.logThreshold);
+            QVERIFY(reused.gaitStance == fresh.gaitStance && sameGaitEvents(reused, fresh));
+            QCOMPARE(reused.steps.size(), fresh.steps.size());
+            QCOMPARE(reused.warnings.size(), fresh.warnings.size());
+            QCOMPARE(reused.methodNotes.size(), fresh.methodNotes.size());
+            QCOMPARE(reused.summary.pathLength_m, fresh.summary.pathLength_m);
+            QCOMPARE(reused.gait.strides, fresh.gait.strides);
+        }
+    }
+
     void progressReachesOne()
     {
         const SimulatedWalk walk = simulateWalk(straightLinePath(5.0), mtiClassSensor());

@@ -4,6 +4,8 @@
 
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <utility>
+
 namespace footpath {
 
 PipelineRunner::PipelineRunner(QObject* parent) : QObject(parent)
@@ -50,18 +52,46 @@ void PipelineRunner::run(std::shared_ptr<const Recording> recording, const Param
     start(std::move(recording), params, latestRequest_);
 }
 
+void PipelineRunner::Spare::giveBack(std::unique_ptr<Result> result)
+{
+    std::unique_ptr<Result> dropped;  // freed outside the lock
+    const std::lock_guard<std::mutex> lock(mutex_);
+    dropped = std::exchange(result_, std::move(result));
+}
+
+Result PipelineRunner::Spare::take()
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return result_ ? std::move(*std::exchange(result_, nullptr)) : Result();
+}
+
+std::shared_ptr<const Result> PipelineRunner::sharedResult(Result&& result, const std::weak_ptr<Spare>& spare)
+{
+    // Not const when made, so the spare may refill it once nobody reads it.
+    return std::shared_ptr<const Result>(new Result(std::move(result)), [spare](const Result* done) {
+        std::unique_ptr<Result> owned(const_cast<Result*>(done));
+        if (const std::shared_ptr<Spare> keeper = spare.lock())
+            keeper->giveBack(std::move(owned));
+    });
+}
+
 void PipelineRunner::start(std::shared_ptr<const Recording> recording, const Parameters& params, std::uint64_t request)
 {
     auto cancel = std::make_shared<std::atomic_bool>(false);
     cancelCurrent_ = cancel;
-    watcher_.setFuture(QtConcurrent::run([recording, params, cancel, request]() {
-        PipelineOutput output = runPipeline(*recording, params, [cancel](double) { return !cancel->load(); });
+    const std::weak_ptr<Spare> spare = spare_;
+    watcher_.setFuture(QtConcurrent::run([recording, params, cancel, request, spare]() {
+        const std::shared_ptr<Spare> keeper = spare.lock();
+        PipelineOutput output = runPipeline(*recording, params, [cancel](double) { return !cancel->load(); },
+                                            RtsSmoother::Threads::Two, keeper ? keeper->take() : Result());
         Outcome outcome;
         outcome.request = request;
         outcome.cancelled = output.result.cancelled;
         outcome.error = QString::fromStdString(output.error);
         if (output.error.empty() && !outcome.cancelled)
-            outcome.result = std::make_shared<const Result>(std::move(output.result));
+            outcome.result = sharedResult(std::move(output.result), spare);
+        else if (keeper)  // a cancelled run's memory serves the next one
+            keeper->giveBack(std::make_unique<Result>(std::move(output.result)));
         return outcome;
     }));
 }

@@ -11,11 +11,17 @@
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 
 namespace footpath {
 
 /// Runs the estimation pipeline off the GUI thread. A new run cancels the one still going through
 /// the pipeline's cancel callback; only the newest run's result is reported.
+///
+/// A result it reports goes, once its last reference is dropped, to the runner's one spare, whose
+/// memory the next run fills again (runPipeline's storage): a slider's re-estimates then neither
+/// free nor fault in the tens of megabytes of a long walk's result. So at most one result more is
+/// held than the window keeps, and none after the runner is gone.
 class PipelineRunner : public QObject {
     Q_OBJECT
 public:
@@ -38,9 +44,22 @@ private:
         bool cancelled = false;
         std::uint64_t request = 0;  ///< which run() asked for it
     };
+    /// The spare result: given back from any thread, taken by the next run.
+    class Spare {
+    public:
+        void giveBack(std::unique_ptr<Result> result);
+        Result take();
+
+    private:
+        std::mutex mutex_;
+        std::unique_ptr<Result> result_;
+    };
+    /// A finished run's result, handed back to spare when its last reference goes.
+    static std::shared_ptr<const Result> sharedResult(Result&& result, const std::weak_ptr<Spare>& spare);
     void start(std::shared_ptr<const Recording> recording, const Parameters& params, std::uint64_t request);
     void onRunFinished();
 
+    std::shared_ptr<Spare> spare_ = std::make_shared<Spare>();
     QFutureWatcher<Outcome> watcher_;
     std::shared_ptr<std::atomic_bool> cancelCurrent_;
     std::shared_ptr<const Recording> pendingRecording_;

@@ -42,6 +42,31 @@ std::string checkInput(const Recording& recording, const Parameters& params)
 
 }  // namespace
 
+Result reusingMemoryOf(Result&& used)
+{
+    Result empty;
+    const auto take = [](auto& into, auto& from) {
+        from.clear();
+        into.swap(from);
+    };
+    take(empty.time_s, used.time_s);
+    take(empty.position_m, used.position_m);
+    take(empty.velocity_mps, used.velocity_mps);
+    take(empty.rollPitchYaw_rad, used.rollPitchYaw_rad);
+    take(empty.gyroBias_radps, used.gyroBias_radps);
+    take(empty.accBias_mps2, used.accBias_mps2);
+    take(empty.errorStd, used.errorStd);
+    take(empty.forwardSpeed_mps, used.forwardSpeed_mps);
+    for (auto [into, from] : {std::pair{&empty.flags.c1, &used.flags.c1}, std::pair{&empty.flags.c2, &used.flags.c2},
+                              std::pair{&empty.flags.c3, &used.flags.c3}, std::pair{&empty.flags.c, &used.flags.c},
+                              std::pair{&empty.flags.stance, &used.flags.stance},
+                              std::pair{&empty.gaitStance, &used.gaitStance}})
+        take(*into, *from);
+    take(empty.flags.logStatistic, used.flags.logStatistic);
+    take(empty.flags.logThreshold, used.flags.logThreshold);
+    return empty;
+}
+
 void reserveResult(Result& result, std::size_t n)
 {
     result.time_s.reserve(n);
@@ -286,9 +311,10 @@ void postProcess(const Recording& recording, const Parameters& params, Result& r
 }
 
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress,
-                           RtsSmoother::Threads threads)
+                           RtsSmoother::Threads threads, Result storage)
 {
     PipelineOutput output;
+    output.result = reusingMemoryOf(std::move(storage));
     output.error = checkInput(recording, params);
     if (!output.error.empty())
         return output;

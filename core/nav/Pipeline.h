@@ -32,8 +32,17 @@ struct PipelineOutput {
 /// (the filter follows behind it: StanceFlagsAhead) and with the smoother for its variances, unless
 /// threads is One (for a caller that runs several estimates at once, AutoTune and runComparison:
 /// their cores are busy already); the numbers are the same either way.
+/// storage: a result nobody needs any more, whose per-sample memory the run fills again
+/// (reusingMemoryOf); the numbers are the same as with none.
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
-                           const ProgressCallback& progress = {}, RtsSmoother::Threads threads = RtsSmoother::Threads::Two);
+                           const ProgressCallback& progress = {}, RtsSmoother::Threads threads = RtsSmoother::Threads::Two,
+                           Result storage = {});
+
+/// A new, empty result that owns the memory of used's per-sample vectors (time, states, standard
+/// deviations, speed, stance flags, gait stance): emptied, their capacity kept. A slider's re-runs
+/// fill the same memory again instead of fresh memory, which costs a page fault and the kernel's
+/// zeroing of every page first touched (a 30-minute walk's result is about 37 MB, 9000 pages).
+Result reusingMemoryOf(Result&& used);
 
 /// The threads each of concurrentRuns runs at once may use: two alone, one when the runs already
 /// share the cores (AutoTune, runComparison; a second thread each made tuning 11 % slower).
