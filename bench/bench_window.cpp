@@ -17,6 +17,7 @@
 //   build/bench/bench_window --benchmark_filter=SliderMove
 //
 // BM_LivePathRefresh: the live path views' refresh near the end of the same walk.
+// BM_PathReplot: the 2D path view's redraw of that walk's estimate (argument 1: with the ghost).
 #include "SimulatedWalks.h"
 
 #include "AnalysisSession.h"
@@ -25,6 +26,8 @@
 #include "LiveViews.h"
 #include "MainWindow.h"
 #include "Recorder.h"
+#include "TrajectoryView2D.h"
+#include "nav/Pipeline.h"
 #include "nav/BulkAllocator.h"
 #include "nav/StreamingEstimator.h"
 
@@ -288,6 +291,27 @@ void BM_LivePathRefresh(benchmark::State& state)
     state.counters["path_samples"] = static_cast<double>(estimator.result().time_s.size());
 }
 BENCHMARK(BM_LivePathRefresh)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(50);
+
+/// The 2D path view's redraw of the 30-minute walk's estimate, the path coloured by time with its
+/// stance markers, at 800 x 900; argument 1 adds the ghost (the same path: the run before).
+///
+///   build/bench/bench_window --benchmark_filter=PathReplot
+void BM_PathReplot(benchmark::State& state)
+{
+    static const auto result = std::make_shared<const Result>(runPipeline(thirtyMinuteWalk(), Parameters()).result);
+    TrajectoryView2D view;
+    view.resize(800, 900);
+    view.show();
+    view.setResult(result);
+    if (state.range(0) == 1)
+        view.setGhostPath(result->position_m);
+    QCoreApplication::processEvents();
+    auto* plot = view.findChild<QCustomPlot*>();
+    for (auto _ : state)
+        plot->replot(QCustomPlot::rpImmediateRefresh);
+    state.counters["path_samples"] = static_cast<double>(result->position_m.size());
+}
+BENCHMARK(BM_PathReplot)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

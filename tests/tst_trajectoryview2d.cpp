@@ -33,6 +33,16 @@ int paintedPixels(const QImage& image)
     return painted;
 }
 
+double distanceToSegment(const QPointF& point, const QPointF& from, const QPointF& to)
+{
+    const QPointF segment = to - from;
+    const double squared = QPointF::dotProduct(segment, segment);
+    const double t =
+        squared > 0.0 ? std::clamp(QPointF::dotProduct(point - from, segment) / squared, 0.0, 1.0) : 0.0;
+    const QPointF off = point - (from + t * segment);
+    return std::sqrt(QPointF::dotProduct(off, off));
+}
+
 int differingPixels(const QImage& a, const QImage& b)
 {
     if (a.size() != b.size())
@@ -181,6 +191,72 @@ private slots:
                         }
                 }
             }
+    }
+
+    void simplifiedLineStaysWithinTheToleranceOfEveryPoint()
+    {
+        // A walk in pixels: rests that jitter on a pixel, swings along slightly bent lines, turns,
+        // and a stretch to and fro on one line. Every point lies within the tolerance of the
+        // segment drawn between the kept points around it; the straight runs keep few points.
+        std::vector<QPointF> points;
+        QPointF at(100.0, 100.0);
+        double heading = 0.0;
+        std::uint32_t seed = 12345;
+        const auto noise = [&seed](double amplitude) {
+            seed = seed * 1664525u + 1013904223u;
+            return amplitude * (static_cast<double>(seed >> 8) / double(1u << 24) - 0.5);
+        };
+        for (int stride = 0; stride < 200; ++stride) {
+            for (int k = 0; k < 40; ++k)
+                points.push_back(at + QPointF(noise(0.3), noise(0.3)));
+            const double length = stride % 2 == 0 ? 6.0 + noise(4.0) : 40.0 + noise(30.0);
+            const double bend = stride % 2 == 0 ? noise(0.6) : noise(12.0);  // within a pixel, or a curve
+            for (int k = 1; k <= 60; ++k) {
+                const double t = k / 60.0;
+                const QPointF along(std::cos(heading), std::sin(heading)), across(-along.y(), along.x());
+                points.push_back(at + t * length * along + 4.0 * t * (1.0 - t) * bend * across);
+            }
+            at = points.back();
+            heading += stride % 25 == 24 ? 1.6 : noise(0.1);
+        }
+        for (int lap = 0; lap < 4; ++lap)
+            for (int k = 0; k <= 50; ++k)
+                points.push_back(at + QPointF(lap % 2 == 0 ? 0.4 * k : 20.0 - 0.4 * k, 0.0));
+        for (const double tolerance : {1.0, 3.0}) {
+            std::vector<std::size_t> kept;
+            StraightRunSimplifier runs(tolerance);
+            const auto keep = [&kept](const QPointF&, std::size_t index) { kept.push_back(index); };
+            for (std::size_t k = 0; k < points.size(); ++k)
+                runs.add(points[k], k, keep);
+            runs.finish(keep);
+            QCOMPARE(kept.front(), std::size_t(0));
+            QCOMPARE(kept.back(), points.size() - 1);
+            QVERIFY(std::is_sorted(kept.begin(), kept.end()));
+            QVERIFY(std::adjacent_find(kept.begin(), kept.end()) == kept.end());
+            double farthest = 0.0;
+            for (std::size_t s = 0; s + 1 < kept.size(); ++s)
+                for (std::size_t k = kept[s]; k <= kept[s + 1]; ++k)
+                    farthest = std::max(farthest, distanceToSegment(points[k], points[kept[s]], points[kept[s + 1]]));
+            qInfo("tolerance %.0f px: %zu of %zu points kept, farthest %.3f px", tolerance, kept.size(), points.size(),
+                  farthest);
+            QVERIFY2(farthest <= tolerance + 1e-9, qPrintable(QString::number(farthest)));
+            QVERIFY2(kept.size() < points.size() / 10, qPrintable(QString::number(kept.size())));
+        }
+        // Straight: the ends alone. Gaps (NaN) stay, each piece with its own ends.
+        QVector<QPointF> line;
+        for (int k = 0; k < 1000; ++k)
+            line.append(QPointF(0.37 * k, 10.0 + 0.11 * k));
+        QCOMPARE(pixelSimplified(line), (QVector<QPointF>{line.front(), line.back()}));
+        const QPointF gap(qQNaN(), qQNaN());
+        QVector<QPointF> pieces = line;
+        pieces.insert(500, gap);
+        const QVector<QPointF> kept = pixelSimplified(pieces);
+        QCOMPARE(kept.size(), 5);
+        QCOMPARE(kept[0], line[0]);
+        QCOMPARE(kept[1], line[499]);
+        QVERIFY(std::isnan(kept[2].x()));
+        QCOMPARE(kept[3], line[500]);
+        QCOMPARE(kept[4], line.back());
     }
 
     void drawsThePathWithoutOpenGl()

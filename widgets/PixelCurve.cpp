@@ -20,16 +20,18 @@ QVector<QPointF> pixelSimplified(const QVector<QPointF>& points, double toleranc
 {
     QVector<QPointF> kept;
     kept.reserve(std::min<qsizetype>(points.size(), 4096));
-    bool afterGap = true;  // the first point, and the first after a gap, start a new piece
+    const auto keep = [&kept](const QPointF& point, std::size_t) { kept.append(point); };
+    StraightRunSimplifier runs(tolerance_px);
     for (qsizetype k = 0; k < points.size(); ++k) {
         const QPointF& point = points[k];
-        const bool gap = std::isnan(point.x()) || std::isnan(point.y());
-        const bool lastOfPiece = k + 1 == points.size() || std::isnan(points[k + 1].x()) || std::isnan(points[k + 1].y());
-        if (!gap && !afterGap && !lastOfPiece && (point - kept.back()).manhattanLength() < tolerance_px)
+        if (std::isnan(point.x()) || std::isnan(point.y())) {
+            runs.finish(keep);
+            kept.append(point);
             continue;
-        kept.append(point);
-        afterGap = gap;
+        }
+        runs.add(point, static_cast<std::size_t>(k), keep);
     }
+    runs.finish(keep);
     return kept;
 }
 

@@ -2,6 +2,10 @@
 
 #include <qcustomplot.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
 namespace footpath {
 
 /// A plottable's coordinate-to-pixel map with each linear axis as one multiply-add: through
@@ -33,11 +37,94 @@ private:
     bool keyIsHorizontal_;
 };
 
-/// The points of a pixel polyline that lie at least about a pixel (Manhattan distance tolerance_px)
-/// from the last point kept, with the first and the last always kept and NaN points (gaps) kept as they are.
-/// The line through them strays less than a pixel from the full one: a walk of 180,000 samples
-/// becomes a few thousand points at any zoom that shows all of it, and every point when zoomed in
-/// far enough that the samples are pixels apart.
+/// Walks a pixel polyline and keeps only the points a line through the kept ones needs to stay
+/// within tolerance_px of every point: a run of points along a nearly straight line (a foot's
+/// swing, at any zoom that shows a whole walk) becomes its two ends, a foot at rest one point.
+/// A run is a strip 2h wide along the direction from its first point to the first point h away;
+/// it ends where a point leaves the strip or turns back along it by more than h, and its last point
+/// inside is kept and starts the next run. A point is then at most 2h from the segment drawn
+/// through its run (h off the strip's centre line, h where the segment's end is off it), or
+/// sqrt(5) h past the segment's end (h further along, 2h across): h = tolerance_px / sqrt(5)
+/// keeps every point within tolerance_px of the line drawn.
+/// Each kept point goes to keep(point, index) once, in order; a point is known to be needed only
+/// when a later one leaves its run, so the calls lag one point behind add().
+class StraightRunSimplifier {
+public:
+    explicit StraightRunSimplifier(double tolerance_px) : halfWidth_px_(tolerance_px / std::sqrt(5.0)) {}
+
+    template <class Keep>
+    void add(const QPointF& point, std::size_t index, Keep&& keep)
+    {
+        if (!started_) {
+            started_ = true;
+            anchor_ = point;
+            keep(point, index);
+            return;
+        }
+        const QPointF offset = point - anchor_;
+        if (!hasDirection_) {
+            // Most points of a foot at rest end here: the square root only for the one that leaves.
+            const double squaredLength = QPointF::dotProduct(offset, offset);
+            if (squaredLength >= halfWidth_px_ * halfWidth_px_) {
+                const double length = std::sqrt(squaredLength);
+                direction_ = offset / length;
+                hasDirection_ = true;
+                farthest_px_ = length;
+            }
+            pending_ = {point, index, true};
+            return;
+        }
+        const double along = QPointF::dotProduct(offset, direction_);
+        const double across = std::abs(offset.x() * direction_.y() - offset.y() * direction_.x());
+        if (across <= halfWidth_px_ && along >= farthest_px_ - halfWidth_px_) {
+            farthest_px_ = std::max(farthest_px_, along);
+            pending_ = {point, index, true};
+            return;
+        }
+        breakRun(keep);
+        add(point, index, keep);  // the first point after the new run's start: no recursion beyond this
+    }
+
+    /// Ends the run here (a change of colour): its last point is kept and starts the next run.
+    template <class Keep>
+    void breakRun(Keep&& keep)
+    {
+        hasDirection_ = false;
+        if (!pending_.waiting)
+            return;
+        keep(pending_.point, pending_.index);
+        anchor_ = pending_.point;
+        pending_.waiting = false;
+    }
+
+    /// Ends the polyline (or a piece of it, before a gap): its last point is kept, and the next
+    /// point added starts afresh.
+    template <class Keep>
+    void finish(Keep&& keep)
+    {
+        breakRun(keep);
+        started_ = false;
+    }
+
+private:
+    struct Pending {
+        QPointF point;
+        std::size_t index = 0;
+        bool waiting = false;
+    };
+    double halfWidth_px_;
+    bool started_ = false;
+    bool hasDirection_ = false;
+    QPointF anchor_, direction_;
+    double farthest_px_ = 0.0;  ///< along the direction, the farthest point of the run so far
+    Pending pending_;           ///< the run's last point, not kept yet
+};
+
+/// The points of a pixel polyline that StraightRunSimplifier keeps, piece by piece between NaN
+/// points (gaps), which are kept as they are. The line through them strays at most about
+/// tolerance_px from the full one: a walk of 180,000 samples becomes a few thousand points at any
+/// zoom that shows all of it, and every point when zoomed in so far that they are pixels apart
+/// off a straight line.
 QVector<QPointF> pixelSimplified(const QVector<QPointF>& points, double tolerance_px = 1.0);
 
 /// A QCPCurve (the 2D view's reference, ghost and comparison paths) whose line is drawn through

