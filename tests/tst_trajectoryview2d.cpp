@@ -259,6 +259,55 @@ private slots:
         QCOMPARE(kept[4], line.back());
     }
 
+    void stampedMarkersLookLikeDrawnOnes()
+    {
+        // Each stamped marker covers the pixels the shape drawn itself covers: the same ink, in
+        // the same place to a pixel, for the view's marker styles.
+        const std::vector<QCPScatterStyle> styles{
+            QCPScatterStyle(QCPScatterStyle::ssDisc, QColor(230, 120, 20), 5),
+            QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(QColor(40, 40, 40), 1.2), Qt::white, 6),
+            QCPScatterStyle(QCPScatterStyle::ssCross, QPen(Qt::red, 2.0), Qt::NoBrush, 10)};
+        const std::vector<QPointF> points{{1.0, 1.0}, {2.37, 4.11}, {7.5, 2.25}, {5.05, 8.8}};
+        for (const QCPScatterStyle& style : styles) {
+            std::array<QImage, 2> images;
+            for (int stamped = 0; stamped < 2; ++stamped) {
+                QCustomPlot plot;
+                plot.resize(320, 240);
+                plot.xAxis->setRange(0.0, 10.0);
+                plot.yAxis->setRange(0.0, 10.0);
+                QCPGraph* graph = stamped ? new StampedMarkerGraph(plot.xAxis, plot.yAxis) : plot.addGraph();
+                graph->setLineStyle(QCPGraph::lsNone);
+                graph->setScatterStyle(style);
+                for (const QPointF& p : points)
+                    graph->addData(p.x(), p.y());
+                plot.replot();
+                images[static_cast<std::size_t>(stamped)] = plot.toPixmap(320, 240).toImage();
+                if (stamped) {
+                    for (const QPointF& p : points) {
+                        const QPointF centre = graph->coordsToPixels(p.x(), p.y());
+                        const auto ink = [&centre](const QImage& image) {
+                            double sum = 0.0, x = 0.0, y = 0.0;
+                            for (int dy = -9; dy <= 9; ++dy)
+                                for (int dx = -9; dx <= 9; ++dx) {
+                                    const QPoint at(static_cast<int>(centre.x()) + dx, static_cast<int>(centre.y()) + dy);
+                                    const double dark = 255.0 - qGray(image.pixel(at));
+                                    sum += dark;
+                                    x += dark * at.x();
+                                    y += dark * at.y();
+                                }
+                            return std::array<double, 3>{sum, x / sum, y / sum};
+                        };
+                        const auto drawn = ink(images[0]), copied = ink(images[1]);
+                        const QString where = QStringLiteral("shape %1 at %2, %3").arg(int(style.shape())).arg(p.x()).arg(p.y());
+                        QVERIFY2(drawn[0] > 0.0 && std::abs(copied[0] - drawn[0]) < 0.25 * drawn[0], qPrintable(where));
+                        const double offset = std::hypot(copied[1] - drawn[1], copied[2] - drawn[2]);
+                        QVERIFY2(offset < 0.75, qPrintable(where + QStringLiteral(": %1 px off").arg(offset)));
+                    }
+                }
+            }
+        }
+    }
+
     void drawsThePathWithoutOpenGl()
     {
         TrajectoryView2D view;

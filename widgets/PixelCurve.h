@@ -145,4 +145,26 @@ private:
     double tolerance_px_ = 1.0;
 };
 
+/// A scatter-only QCPGraph (the 2D view's stance, start and end markers) that draws each marker on
+/// screen as a copy of one pre-drawn image: QPainter draws an antialiased circle as Bezier curves,
+/// and a 30-minute walk's 1600 stance rings took 3 ms of every redraw. The copy sits on the whole
+/// pixel nearest the point (at most half a pixel off in each direction). Vector output (the PDF
+/// report) still draws every marker as its shape.
+class StampedMarkerGraph : public QCPGraph {
+public:
+    using QCPGraph::QCPGraph;
+
+protected:
+    void drawScatterPlot(QCPPainter* painter, const QVector<QPointF>& scatters, const QCPScatterStyle& style) const override;
+
+private:
+    /// The marker drawn once at the painter's pixel ratio and antialiasing, centred on the middle
+    /// pixel corner (side even); redrawn when the style, ratio or antialiasing changes.
+    const QPixmap& stamp(const QCPScatterStyle& style, qreal pixelRatio, bool antialiased) const;
+
+    mutable QPixmap stamp_;
+    mutable QCPScatterStyle stampStyle_;
+    mutable bool stampAntialiased_ = false;
+};
+
 }  // namespace footpath

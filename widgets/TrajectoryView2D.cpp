@@ -65,7 +65,7 @@ QCPColorGradient pathGradient()
 
 QCPGraph* addMarkerGraph(QCustomPlot* plot, const QString& name, QCPScatterStyle style)
 {
-    QCPGraph* graph = plot->addGraph();
+    auto* graph = new StampedMarkerGraph(plot->xAxis, plot->yAxis);
     graph->setName(name);
     graph->setLineStyle(QCPGraph::lsNone);
     graph->setScatterStyle(style);
