@@ -10,8 +10,10 @@
 #include <qcustomplot.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
+#include <tuple>
 
 using namespace footpath;
 using Row = StatePlots::Row;
@@ -60,6 +62,83 @@ class TestStatePlots : public QObject {
     Q_OBJECT
 
 private slots:
+    void aCoarseCopyDrawsTheSameEnvelope()
+    {
+        // 30 minutes at 100 Hz: a wave, noise, a one-sample spike each way and NaN gaps (wrapped
+        // angles). Drawn zoomed out from the coarse copy, each pixel column spans what the full data
+        // spans there, give or take the neighbouring columns; the extremes and the gaps are the
+        // same; zoomed in, or with other data set, the points drawn are the full data's.
+        QVector<QCPGraphData> data;
+        std::uint32_t seed = 7;
+        for (int k = 0; k < 180000; ++k) {
+            seed = seed * 1664525u + 1013904223u;
+            double value = std::sin(k * 0.003) + 0.2 * (static_cast<double>(seed >> 8) / double(1u << 24) - 0.5);
+            if (k == 50001)
+                value = 9.0;
+            if (k == 120007)
+                value = -7.0;
+            if (k % 30011 == 0 && k > 0)
+                value = std::numeric_limits<double>::quiet_NaN();
+            data.append(QCPGraphData(k * 0.01, value));
+        }
+        QCustomPlot plot;
+        plot.resize(1000, 300);
+        plot.xAxis->setRange(0.0, 1800.0);
+        plot.yAxis->setRange(-8.0, 10.0);
+        auto* coarse = new DecimatedGraph(plot.xAxis, plot.yAxis);
+        auto* full = new DecimatedGraph(plot.xAxis, plot.yAxis);
+        coarse->setSeries(data, coarseEnvelope(data, 16), 16);
+        full->data()->set(data, true);
+        plot.replot();
+        const QVector<QCPGraphData> fromCoarse = coarse->drawnData(), fromFull = full->drawnData();
+        QVERIFY2(fromCoarse.size() < 5000, qPrintable(QString::number(fromCoarse.size())));
+        // Each column's lowest and highest value drawn, by pixel column.
+        std::map<int, std::pair<double, double>> coarseColumns, fullColumns;
+        int coarseGaps = 0, fullGaps = 0;
+        for (auto [points, columns, gaps] : {std::tuple{&fromCoarse, &coarseColumns, &coarseGaps},
+                                              std::tuple{&fromFull, &fullColumns, &fullGaps}})
+            for (const QCPGraphData& point : *points) {
+                if (std::isnan(point.value)) {
+                    ++*gaps;
+                    continue;
+                }
+                const int column = static_cast<int>(std::floor(plot.xAxis->coordToPixel(point.key)));
+                auto [it, added] = columns->try_emplace(column, point.value, point.value);
+                it->second = {std::min(it->second.first, point.value), std::max(it->second.second, point.value)};
+            }
+        QCOMPARE(coarseGaps, fullGaps);
+        QCOMPARE(coarseGaps, 5);
+        const auto spanNear = [](const std::map<int, std::pair<double, double>>& columns, int column) {
+            std::pair<double, double> span{HUGE_VAL, -HUGE_VAL};
+            for (int c = column - 1; c <= column + 1; ++c)
+                if (const auto it = columns.find(c); it != columns.end())
+                    span = {std::min(span.first, it->second.first), std::max(span.second, it->second.second)};
+            return span;
+        };
+        for (const auto& [ofThese, ofThose] : {std::pair{&coarseColumns, &fullColumns}, std::pair{&fullColumns, &coarseColumns}})
+            for (const auto& [column, span] : *ofThese) {
+                const auto near = spanNear(*ofThose, column);
+                QVERIFY2(span.first >= near.first && span.second <= near.second, qPrintable(QString::number(column)));
+            }
+        double lowest = HUGE_VAL, highest = -HUGE_VAL;
+        for (const QCPGraphData& point : fromCoarse)
+            if (!std::isnan(point.value)) {
+                lowest = std::min(lowest, point.value);
+                highest = std::max(highest, point.value);
+            }
+        QCOMPARE(highest, 9.0);
+        QCOMPARE(lowest, -7.0);
+
+        plot.xAxis->setRange(500.0, 520.0);  // 2,000 samples on 1,000 pixels: the full data
+        plot.replot();
+        QCOMPARE(coarse->drawnData().size(), full->drawnData().size());
+        plot.xAxis->setRange(0.0, 1800.0);
+        coarse->data()->set(data.mid(0, 90000), true);  // other data: the copy is not its own
+        full->data()->set(data.mid(0, 90000), true);
+        plot.replot();
+        QCOMPARE(coarse->drawnData().size(), full->drawnData().size());
+    }
+
     void bandsAreOneSigmaEitherSideFromErrorStd()
     {
         StatePlots plots;

@@ -25,6 +25,7 @@ constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 constexpr double kValueMargin = 1.1;          // 5 % air above and below the curves and bands
 constexpr double kMinimumSpan = 1e-3;         // a constant row still gets an axis to read
 constexpr std::size_t kMaxBandPoints = 8000;  // σ changes slowly: more points would only cost drawing time
+constexpr int kCoarseBucket = 16;  // samples a point pair of a curve's coarse copy (DecimatedGraph) stands for
 const QString kStanceLayer = QStringLiteral("stance");
 const QString kCursorLayer = QStringLiteral("cursor");
 const QColor kStanceBrush(250, 200, 110, 70);  // SignalPlots' light amber, a little lighter under bands
@@ -161,6 +162,7 @@ bool isConstant(const Result& result, Row row)
 /// finite values for the row's axis.
 struct ComponentSeries {
     QVector<QCPGraphData> curve, lower, upper, sigma;
+    QVector<QCPGraphData> coarseCurve;  ///< curve's coarseEnvelope, for drawing it zoomed out
     double lowest = std::numeric_limits<double>::infinity();
     double highest = -std::numeric_limits<double>::infinity();
 };
@@ -222,6 +224,7 @@ ComponentSeries buildComponentSeries(const Result& result, Row which, int compon
         widen(value - s);
         widen(value + s);
     }
+    series.coarseCurve = coarseEnvelope(curve, kCoarseBucket);
     return series;
 }
 
@@ -400,7 +403,7 @@ void StatePlots::plotRow(std::size_t r, const RowFill& fill)
         const ComponentSeries& series = fill.components[static_cast<std::size_t>(c)];
         Component& component = row.components[static_cast<std::size_t>(c)];
         // Handed over whole: the container shares the vector instead of copying 180k pairs again.
-        component.curve->data()->set(series.curve, true);
+        component.curve->setSeries(series.curve, series.coarseCurve, kCoarseBucket);
         component.lower->data()->set(series.lower, true);
         component.upper->data()->set(series.upper, true);
         component.sigma->data()->set(series.sigma, true);

@@ -19,6 +19,8 @@ class QPainter;
 
 namespace footpath {
 
+class DecimatedGraph;
+
 class DeferredReplot;
 
 class LegendStrip;
@@ -80,7 +82,7 @@ protected:
 
 private:
     struct Component {
-        QCPGraph* curve = nullptr;
+        DecimatedGraph* curve = nullptr;
         QCPGraph* sigma = nullptr;  ///< draws nothing: σ itself, for the readout and the CSV export
         QCPGraph* lower = nullptr;
         QCPGraph* upper = nullptr;  ///< fills down to lower
