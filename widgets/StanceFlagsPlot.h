@@ -23,6 +23,8 @@ class QToolBar;
 
 namespace footpath {
 
+class DecimatedGraph;
+
 class DeferredReplot;
 
 class LegendStrip;
@@ -104,11 +106,7 @@ public:
     /// The lane of labelled warning bars above the rows; in the layout while there are warnings.
     QCPAxisRect* warningLane() const;
     /// 10^logStatistic per sample (the log axis shows the logarithm).
-    QCPGraph* statisticGraph() const
-    {
-        ensureCurvesPlotted();
-        return statistic_;
-    }
+    QCPGraph* statisticGraph() const;
     /// 10^logThreshold where it changes, as a step curve.
     QCPGraph* statisticThresholdGraph() const
     {
@@ -189,7 +187,7 @@ private:
     };
     std::array<InputBulk, kInputCount> inputBulk_{};
     std::array<QCPGraph*, kThresholdCount> thresholds_{};
-    QCPGraph* statistic_ = nullptr;
+    DecimatedGraph* statistic_ = nullptr;
     QCPGraph* statisticThreshold_ = nullptr;
     QCPGraph* stanceLegendEntry_ = nullptr;  ///< draws nothing; gives the statistic row's stance shading an entry
     TimeBands* statisticStance_ = nullptr;
