@@ -108,7 +108,8 @@ public:
 
 private:
     /// Field by field: an aggregate assigned whole was built on the stack and copied back with
-    /// wider loads than its stores, a store-forwarding stall on every point (8x slower).
+    /// wider loads than its stores, a store-forwarding stall on every point (perf annotate; the
+    /// 2D view's redraw of a 30-minute walk 7.7 -> 5.7 ms).
     void setPending(const QPointF& point, std::size_t index)
     {
         pending_.point = point;
@@ -130,8 +131,8 @@ private:
 };
 
 /// The points of a pixel polyline that StraightRunSimplifier keeps, piece by piece between NaN
-/// points (gaps), which are kept as they are. The line through them strays at most about
-/// tolerance_px from the full one: a walk of 180,000 samples becomes a few thousand points at any
+/// points (gaps), which are kept as they are. The line through them strays at most tolerance_px
+/// from the full one: a walk of 180,000 samples becomes a few thousand points at any
 /// zoom that shows all of it, and every point when zoomed in so far that they are pixels apart
 /// off a straight line.
 QVector<QPointF> pixelSimplified(const QVector<QPointF>& points, double tolerance_px = 1.0);
