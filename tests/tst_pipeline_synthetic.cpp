@@ -341,21 +341,24 @@ private slots:
     {
         // A run into the memory of an older result (a slider's re-runs in the window) gives the
         // same bits as a run into new memory, and fills that memory instead of asking for more.
-        const SimulatedWalk longWalk = simulateWalk(closedRectanglePath(10.0, 5.0), mtiClassSensor(100.0, 7));
         const SimulatedWalk walk = simulateWalk(straightLinePath(12.0), mtiClassSensor(100.0, 3));
+        const SimulatedWalk otherWalk = simulateWalk(straightLinePath(14.0), mtiClassSensor(100.0, 7));
         Parameters paper, filterAlone, feliz;
         paper.detector = static_cast<int>(DetectorKind::PaperC1C2C3);
         filterAlone.estimator = static_cast<int>(EstimatorKind::Ekf);
         feliz.estimator = static_cast<int>(EstimatorKind::Feliz);
         for (const Parameters& params : {Parameters(), withBiasStates(), paper, filterAlone, feliz}) {
             const Result fresh = run(walk.recording, params);
-            Result used = run(longWalk.recording, withBiasStates());  // longer, other numbers
+            Result used = run(otherWalk.recording, withBiasStates());  // other numbers, a little longer
             const double* const usedTimes = used.time_s.data();
             const auto* const usedStd = used.errorStd.data();
+            const auto* const usedStance = used.flags.stance.data();
             const Result reused =
                 runPipeline(walk.recording, params, {}, RtsSmoother::Threads::Two, std::move(used)).result;
             QCOMPARE(reused.time_s.data(), usedTimes);
             QCOMPARE(reused.errorStd.data(), usedStd);
+            if (params.detectorKind() != DetectorKind::PaperC1C2C3)  // the paper's flags are made anew
+                QCOMPARE(reused.flags.stance.data(), usedStance);
             QVERIFY(reused.time_s == fresh.time_s && reused.position_m == fresh.position_m);
             QVERIFY(reused.velocity_mps == fresh.velocity_mps && reused.rollPitchYaw_rad == fresh.rollPitchYaw_rad);
             QVERIFY(reused.gyroBias_radps == fresh.gyroBias_radps && reused.accBias_mps2 == fresh.accBias_mps2);
@@ -372,6 +375,14 @@ private slots:
             QCOMPARE(reused.summary.pathLength_m, fresh.summary.pathLength_m);
             QCOMPARE(reused.gait.strides, fresh.gait.strides);
         }
+        // A used result over twice the size is let go, not held on to.
+        const SimulatedWalk longWalk = simulateWalk(closedRectanglePath(20.0, 10.0), mtiClassSensor(100.0, 7));
+        Result large = run(longWalk.recording);
+        QVERIFY(large.time_s.size() > 2 * walk.recording.samples.size());
+        const double* const largeTimes = large.time_s.data();
+        const Result small = runPipeline(walk.recording, Parameters(), {}, RtsSmoother::Threads::Two, std::move(large)).result;
+        QVERIFY(small.time_s.data() != largeTimes);
+        QVERIFY(small.time_s.capacity() < 2 * walk.recording.samples.size());
     }
 
     void progressReachesOne()

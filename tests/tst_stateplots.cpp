@@ -9,6 +9,7 @@
 #include <QtTest>
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -128,6 +129,19 @@ private slots:
             }
         QCOMPARE(highest, 9.0);
         QCOMPARE(lowest, -7.0);
+        // Drawn from the copy: every value drawn is one of its points' (the full data's adaptive
+        // sampling also draws each column's first and last sample, most of them not in the copy).
+        const QVector<QCPGraphData> envelope = coarseEnvelope(data, 16);
+        std::vector<double> kept;
+        for (const QCPGraphData& point : envelope)
+            if (!std::isnan(point.value))  // the gaps' NaN would unsort the list
+                kept.push_back(point.value);
+        std::sort(kept.begin(), kept.end());
+        const auto inCopy = [&kept](const QCPGraphData& point) {
+            return std::isnan(point.value) || std::binary_search(kept.begin(), kept.end(), point.value);
+        };
+        QVERIFY(std::all_of(fromCoarse.begin(), fromCoarse.end(), inCopy));
+        QVERIFY(!std::all_of(fromFull.begin(), fromFull.end(), inCopy));
 
         plot.xAxis->setRange(500.0, 520.0);  // 2,000 samples on 1,000 pixels: the full data
         plot.replot();

@@ -269,7 +269,7 @@ private slots:
             QCPScatterStyle(QCPScatterStyle::ssCross, QPen(Qt::red, 2.0), Qt::NoBrush, 10)};
         const std::vector<QPointF> points{{1.0, 1.0}, {2.37, 4.11}, {7.5, 2.25}, {5.05, 8.8}};
         for (const QCPScatterStyle& style : styles) {
-            std::array<QImage, 2> images;
+            std::array<QImage, 2> images, scaledExports;
             for (int stamped = 0; stamped < 2; ++stamped) {
                 QCustomPlot plot;
                 plot.resize(320, 240);
@@ -282,6 +282,8 @@ private slots:
                     graph->addData(p.x(), p.y());
                 plot.replot();
                 images[static_cast<std::size_t>(stamped)] = plot.toPixmap(320, 240).toImage();
+                // A PNG exported at twice the size is drawn scaled: the shapes, not copies.
+                scaledExports[static_cast<std::size_t>(stamped)] = plot.toPixmap(320, 240, 2.0).toImage();
                 if (stamped) {
                     for (const QPointF& p : points) {
                         const QPointF centre = graph->coordsToPixels(p.x(), p.y());
@@ -303,6 +305,8 @@ private slots:
                         const double offset = std::hypot(copied[1] - drawn[1], copied[2] - drawn[2]);
                         QVERIFY2(offset < 0.75, qPrintable(where + QStringLiteral(": %1 px off").arg(offset)));
                     }
+                    QVERIFY(images[0] != images[1]);  // copies on whole pixels, not the shapes
+                    QCOMPARE(scaledExports[1], scaledExports[0]);
                 }
             }
         }

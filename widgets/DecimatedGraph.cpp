@@ -53,6 +53,7 @@ void DecimatedGraph::setSeries(const QVector<QCPGraphData>& data, const QVector<
     mDataContainer->set(data, true);  // shares the vector
     coarse_ = coarse;
     coarseBucket_ = bucket;
+    coarseOfData_ = data.constData();
     coarseOfSize_ = static_cast<int>(data.size());
     coarseOfFirst_s_ = data.isEmpty() ? 0.0 : data.front().key;
     coarseOfLast_s_ = data.isEmpty() ? 0.0 : data.back().key;
@@ -62,7 +63,8 @@ std::optional<std::pair<QCPGraphDataContainer::const_iterator, QCPGraphDataConta
 DecimatedGraph::coarseRange(const QCPGraphDataContainer::const_iterator& begin,
                             const QCPGraphDataContainer::const_iterator& end) const
 {
-    const bool ofThisData = !coarse_.isEmpty() && coarseOfSize_ == mDataContainer->size()
+    const bool ofThisData = !coarse_.isEmpty() && coarseOfSize_ == mDataContainer->size() && coarseOfSize_ > 0
+                            && &*mDataContainer->constBegin() == coarseOfData_
                             && mDataContainer->constBegin()->key == coarseOfFirst_s_
                             && (mDataContainer->constEnd() - 1)->key == coarseOfLast_s_;
     if (!ofThisData || end - begin < 2)

@@ -21,7 +21,7 @@ QVector<QCPGraphData> coarseEnvelope(const QVector<QCPGraphData>& data, int buck
 ///
 /// Given a coarse copy (setSeries), a view with at least two of its stretches a pixel column draws
 /// from the copy: the same lowest and highest values, a column's own ones at most one stretch off
-/// its edge, for a tenth of the points to go through (the state rows of a 30-minute walk were
+/// its edge, for an eighth of the points to go through (the state rows of a 30-minute walk were
 /// 45 passes over 180,000 samples, 11 ms a replot).
 class DecimatedGraph : public QCPGraph {
 public:
@@ -37,9 +37,9 @@ public:
     /// The points a replot at the axes' current ranges draws (a NaN value is a gap); for tests.
     QVector<QCPGraphData> drawnData() const;
 
-    /// Sets the data (sorted by key) and its coarseEnvelope of stretches of bucket samples. Data set
-    /// any other way is drawn without the copy (the copy is used only while the data has the size
-    /// and end keys it was given with).
+    /// Sets the data (sorted by key) and its coarseEnvelope of stretches of bucket samples. The
+    /// copy is used only while the data is the vector given here, with its size and end keys (data
+    /// set any other way is drawn without it); change the data only through here.
     void setSeries(const QVector<QCPGraphData>& data, const QVector<QCPGraphData>& coarse, int bucket);
 
 protected:
@@ -63,7 +63,8 @@ private:
     Reduction reduction_;
     QVector<QCPGraphData> coarse_;
     int coarseBucket_ = 0;
-    int coarseOfSize_ = -1;  ///< the data's size and end keys the copy was made of
+    const QCPGraphData* coarseOfData_ = nullptr;  ///< the data's points, size and end keys the copy was made of
+    int coarseOfSize_ = -1;
     double coarseOfFirst_s_ = 0.0, coarseOfLast_s_ = 0.0;
 };
 

@@ -90,7 +90,7 @@ void PipelineRunner::start(std::shared_ptr<const Recording> recording, const Par
         outcome.error = QString::fromStdString(output.error);
         if (output.error.empty() && !outcome.cancelled)
             outcome.result = sharedResult(std::move(output.result), spare);
-        else if (keeper)  // a cancelled run's memory serves the next one
+        else if (keeper)  // a cancelled or failed run's memory serves the next one
             keeper->giveBack(std::make_unique<Result>(std::move(output.result)));
         return outcome;
     }));

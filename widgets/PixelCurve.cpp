@@ -73,45 +73,59 @@ void PixelCurve::draw(QCPPainter* painter)
     painter->drawLines(segments);
 }
 
+bool StampedMarkerGraph::paintsPixels(const QCPPainter* painter)
+{
+    const QPaintDevice* device = painter->device();
+    if (device == nullptr || painter->modes().testFlag(QCPPainter::pmVectorized)
+        || (device->devType() != QInternal::Pixmap && device->devType() != QInternal::Image))
+        return false;
+    const qreal ratio = device->devicePixelRatioF();
+    return ratio == std::floor(ratio) && painter->worldTransform().type() <= QTransform::TxTranslate;
+}
+
 void StampedMarkerGraph::drawScatterPlot(QCPPainter* painter, const QVector<QPointF>& scatters,
                                          const QCPScatterStyle& style) const
 {
-    if (painter->modes().testFlag(QCPPainter::pmVectorized) || style.isNone()
-        || style.shape() == QCPScatterStyle::ssPixmap || style.shape() == QCPScatterStyle::ssCustom) {
+    if (!paintsPixels(painter) || style.isNone() || style.shape() == QCPScatterStyle::ssPixmap
+        || style.shape() == QCPScatterStyle::ssCustom) {
         QCPGraph::drawScatterPlot(painter, scatters, style);
         return;
     }
     applyScattersAntialiasingHint(painter);
-    const QPixmap& marker =
-        stamp(style, painter->device() ? painter->device()->devicePixelRatioF() : 1.0, painter->antialiasing());
+    const qreal ratio = painter->device()->devicePixelRatioF();
+    const QPixmap& marker = stamp(style, ratio, painter->antialiasing());
     // The stamp holds the shape as QCPPainter draws it at its centre, half-pixel shift of the
-    // antialiased mode included; copied without that shift, at the whole pixel nearest the point.
-    const double half = 0.5 * marker.width() / marker.devicePixelRatioF();
+    // antialiased mode included; copied without that shift, at the device pixel nearest the point.
+    const double half = 0.5 * stampSide_;
     painter->save();
     painter->setAntialiasing(false);
     for (const QPointF& scatter : scatters)
-        painter->drawPixmap(QPointF(std::round(scatter.x()) - half, std::round(scatter.y()) - half), marker);
+        painter->drawPixmap(QPointF(std::round(scatter.x() * ratio) / ratio - half, std::round(scatter.y() * ratio) / ratio - half),
+                            marker);
     painter->restore();
 }
 
 const QPixmap& StampedMarkerGraph::stamp(const QCPScatterStyle& style, qreal pixelRatio, bool antialiased) const
 {
+    const QPen pen = style.isPenDefined() ? style.pen() : mPen;
     const bool same = !stamp_.isNull() && stamp_.devicePixelRatioF() == pixelRatio && stampAntialiased_ == antialiased
                       && stampStyle_.shape() == style.shape() && stampStyle_.size() == style.size()
-                      && stampStyle_.pen() == style.pen() && stampStyle_.brush() == style.brush();
+                      && stampPen_ == pen && stampStyle_.brush() == style.brush();
     if (same)
         return stamp_;
-    // Room for the shape and its pen on every side, an even number of pixels so the centre is a corner.
-    const int side = 2 * static_cast<int>(std::ceil(0.5 * style.size() + style.pen().widthF() + 1.0));
-    stamp_ = QPixmap(QSize(side, side) * pixelRatio);
+    // Room for the shape and its pen on every side, an even number of pixels so the centre is a
+    // pixel corner (a whole pixel ratio keeps it one in device pixels).
+    stampSide_ = 2 * static_cast<int>(std::ceil(0.5 * style.size() + pen.widthF() + 1.0));
+    stamp_ = QPixmap(QSize(stampSide_, stampSide_) * pixelRatio);
     stamp_.setDevicePixelRatio(pixelRatio);
     stamp_.fill(Qt::transparent);
     QCPPainter stampPainter(&stamp_);
     stampPainter.setAntialiasing(antialiased);
     style.applyTo(&stampPainter, mPen);
-    style.drawShape(&stampPainter, QPointF(side / 2, side / 2));
+    style.drawShape(&stampPainter, QPointF(stampSide_ / 2, stampSide_ / 2));
     stampPainter.end();
     stampStyle_ = style;
+    stampPen_ = pen;
     stampAntialiased_ = antialiased;
     return stamp_;
 }

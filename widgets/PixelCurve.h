@@ -158,8 +158,9 @@ private:
 /// A scatter-only QCPGraph (the 2D view's stance, start and end markers) that draws each marker on
 /// screen as a copy of one pre-drawn image: QPainter draws an antialiased circle as Bezier curves,
 /// and a 30-minute walk's 1600 stance rings took 3 ms of every redraw. The copy sits on the whole
-/// pixel nearest the point (at most half a pixel off in each direction). Vector output (the PDF
-/// report) still draws every marker as its shape.
+/// pixel nearest the point (at most half a pixel off in each direction). Only on an image or pixmap
+/// painted unscaled at a whole pixel ratio (the plot's own buffers, a plain grab); anything else
+/// (the PDF and SVG exports and reports, a PNG exported at twice the size) gets the shapes drawn.
 class StampedMarkerGraph : public QCPGraph {
 public:
     using QCPGraph::QCPGraph;
@@ -168,12 +169,17 @@ protected:
     void drawScatterPlot(QCPPainter* painter, const QVector<QPointF>& scatters, const QCPScatterStyle& style) const override;
 
 private:
-    /// The marker drawn once at the painter's pixel ratio and antialiasing, centred on the middle
-    /// pixel corner (side even); redrawn when the style, ratio or antialiasing changes.
+    /// Whether painter's markers may be copies: a raster device, whole pixel ratio, no scaling.
+    static bool paintsPixels(const QCPPainter* painter);
+    /// The marker drawn once, as QCPPainter draws it at the centre of a square of an even number
+    /// of pixels (stampSide_), at this pixel ratio and antialiasing; drawn again when the style
+    /// (with the pen it falls back on), the ratio or the antialiasing changes.
     const QPixmap& stamp(const QCPScatterStyle& style, qreal pixelRatio, bool antialiased) const;
 
     mutable QPixmap stamp_;
+    mutable int stampSide_ = 0;  ///< in logical pixels
     mutable QCPScatterStyle stampStyle_;
+    mutable QPen stampPen_;  ///< the pen the stamp was drawn with (the style's, or the graph's)
     mutable bool stampAntialiased_ = false;
 };
 

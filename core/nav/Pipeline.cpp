@@ -314,7 +314,10 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
                            RtsSmoother::Threads threads, Result storage)
 {
     PipelineOutput output;
-    output.result = reusingMemoryOf(std::move(storage));
+    // A used result over twice this run's size (a long walk's before a short one) is let go:
+    // refilled, its memory would stay held for nothing.
+    if (storage.time_s.capacity() <= 2 * recording.samples.size())
+        output.result = reusingMemoryOf(std::move(storage));
     output.error = checkInput(recording, params);
     if (!output.error.empty())
         return output;

@@ -33,7 +33,8 @@ struct PipelineOutput {
 /// threads is One (for a caller that runs several estimates at once, AutoTune and runComparison:
 /// their cores are busy already); the numbers are the same either way.
 /// storage: a result nobody needs any more, whose per-sample memory the run fills again
-/// (reusingMemoryOf); the numbers are the same as with none.
+/// (reusingMemoryOf) unless it was made for over twice as many samples; the numbers are the same
+/// as with none.
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
                            const ProgressCallback& progress = {}, RtsSmoother::Threads threads = RtsSmoother::Threads::Two,
                            Result storage = {});
@@ -42,6 +43,8 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
 /// deviations, speed, stance flags, gait stance): emptied, their capacity kept. A slider's re-runs
 /// fill the same memory again instead of fresh memory, which costs a page fault and the kernel's
 /// zeroing of every page first touched (a 30-minute walk's result is about 37 MB, 9000 pages).
+/// The paper's C1/C2/C3 detector makes its flags anew (whole-vector windows), so only the
+/// statistic detectors fill the flags' memory again.
 Result reusingMemoryOf(Result&& used);
 
 /// The threads each of concurrentRuns runs at once may use: two alone, one when the runs already
