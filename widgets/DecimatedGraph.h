@@ -25,6 +25,9 @@ QVector<QCPGraphData> coarseEnvelope(const QVector<QCPGraphData>& data, int buck
 /// 45 passes over 180,000 samples, 11 ms a replot).
 class DecimatedGraph : public QCPGraph {
 public:
+    /// The samples a point pair of a coarse copy stands for, in the views that make one.
+    static constexpr int kCoarseBucket = 16;
+
     /// What a pixel column holding several samples is drawn as.
     enum class Reduction {
         LowestAndHighest,  ///< a line: QCustomPlot's adaptive sampling

@@ -202,9 +202,6 @@ ReferenceStance referenceStanceOf(const Recording& recording, const std::vector<
     return out;
 }
 
-/// Samples a point pair of the statistic's coarse copy stands for (DecimatedGraph::setSeries).
-constexpr int kCoarseBucket = 16;
-
 /// A log10 value as the log axis plots it; -inf (a statistic of exactly 0) sits on the axis' floor
 /// rather than leaving a gap, +inf on its ceiling. 2^(x log2 10), not pow(10, x): the same value
 /// to about 1e-15, at 40 % of the time (1.9 -> 0.7 ms for a 30-minute walk's statistic).
@@ -591,7 +588,8 @@ void StanceFlagsPlot::plotStatistic()
             threshold << plottedValue(flags.logThreshold[k], decades);
         }
     }
-    statistic_->setSeries(statistic, coarseEnvelope(statistic, kCoarseBucket), kCoarseBucket);
+    constexpr int bucket = DecimatedGraph::kCoarseBucket;
+    statistic_->setSeries(statistic, coarseEnvelope(statistic, bucket), bucket);
     statisticThreshold_->setData(thresholdKeys, threshold, true);
     valueAxis(rows_[kStatisticRow].rect)->setRange(std::pow(10.0, lowest), std::pow(10.0, highest));
 }

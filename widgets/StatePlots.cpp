@@ -25,7 +25,6 @@ constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 constexpr double kValueMargin = 1.1;          // 5 % air above and below the curves and bands
 constexpr double kMinimumSpan = 1e-3;         // a constant row still gets an axis to read
 constexpr std::size_t kMaxBandPoints = 8000;  // σ changes slowly: more points would only cost drawing time
-constexpr int kCoarseBucket = 16;  // samples a point pair of a curve's coarse copy (DecimatedGraph) stands for
 const QString kStanceLayer = QStringLiteral("stance");
 const QString kCursorLayer = QStringLiteral("cursor");
 const QColor kStanceBrush(250, 200, 110, 70);  // SignalPlots' light amber, a little lighter under bands
@@ -224,7 +223,7 @@ ComponentSeries buildComponentSeries(const Result& result, Row which, int compon
         widen(value - s);
         widen(value + s);
     }
-    series.coarseCurve = coarseEnvelope(curve, kCoarseBucket);
+    series.coarseCurve = coarseEnvelope(curve, DecimatedGraph::kCoarseBucket);
     return series;
 }
 
@@ -403,7 +402,7 @@ void StatePlots::plotRow(std::size_t r, const RowFill& fill)
         const ComponentSeries& series = fill.components[static_cast<std::size_t>(c)];
         Component& component = row.components[static_cast<std::size_t>(c)];
         // Handed over whole: the container shares the vector instead of copying 180k pairs again.
-        component.curve->setSeries(series.curve, series.coarseCurve, kCoarseBucket);
+        component.curve->setSeries(series.curve, series.coarseCurve, DecimatedGraph::kCoarseBucket);
         component.lower->data()->set(series.lower, true);
         component.upper->data()->set(series.upper, true);
         component.sigma->data()->set(series.sigma, true);

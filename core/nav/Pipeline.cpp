@@ -57,11 +57,12 @@ Result reusingMemoryOf(Result&& used)
     take(empty.accBias_mps2, used.accBias_mps2);
     take(empty.errorStd, used.errorStd);
     take(empty.forwardSpeed_mps, used.forwardSpeed_mps);
-    for (auto [into, from] : {std::pair{&empty.flags.c1, &used.flags.c1}, std::pair{&empty.flags.c2, &used.flags.c2},
-                              std::pair{&empty.flags.c3, &used.flags.c3}, std::pair{&empty.flags.c, &used.flags.c},
-                              std::pair{&empty.flags.stance, &used.flags.stance},
-                              std::pair{&empty.gaitStance, &used.gaitStance}})
-        take(*into, *from);
+    take(empty.flags.c1, used.flags.c1);
+    take(empty.flags.c2, used.flags.c2);
+    take(empty.flags.c3, used.flags.c3);
+    take(empty.flags.c, used.flags.c);
+    take(empty.flags.stance, used.flags.stance);
+    take(empty.gaitStance, used.gaitStance);
     take(empty.flags.logStatistic, used.flags.logStatistic);
     take(empty.flags.logThreshold, used.flags.logThreshold);
     return empty;
