@@ -2,14 +2,16 @@
 // simulated walk at 100 Hz, offline and live, and on a real 200 Hz walk (a pyshoe-vicon trial repeated to a
 // minute) beside the textbook dense-matrix implementation of the same estimator (tests/DenseReferenceFilter).
 // Targets (issue 14): at least 5 million samples per second offline on real walking data, 10 times the
-// dense loop. BM_PostProcessing times the steps after the filter alone. Run with --benchmark_repetitions=5
-// --benchmark_report_aggregates_only=true on a busy machine.
+// dense loop. BM_PostProcessing times the steps after the filter alone; BM_EkfPropagate,
+// BM_EkfStanceSample and BM_SmootherCapture the parts of the forward pass's work a sample. Run
+// with --benchmark_repetitions=5 --benchmark_report_aggregates_only=true on a busy machine.
 #include "DenseReferenceFilter.h"
 #include "SimulatedWalks.h"
 #include "detect/StanceDetector.h"
 #include "io/Import.h"
 #include "nav/ErrorStateEkf.h"
 #include "nav/Pipeline.h"
+#include "nav/RtsSmoother.h"
 #include "nav/StreamingEstimator.h"
 
 #include <benchmark/benchmark.h>
@@ -224,6 +226,46 @@ void BM_EkfZuptZaruUpdate(benchmark::State& state)
     state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_EkfZuptZaruUpdate);
+
+/// A stance sample of the defaults (9 states): a propagation, then a ZUPT, as the forward pass
+/// makes them (BM_EkfPropagate alone is the propagation's share, so the difference is the
+/// update's). Argument 1: the update recorded for the smoother (ErrorStateEkf::setRecordUpdates),
+/// as an offline run does; 0: not, as the live filter does.
+void BM_EkfStanceSample(benchmark::State& state)
+{
+    ErrorStateEkf ekf(Parameters(), Eigen::Matrix3d::Identity());
+    ekf.setRecordUpdates(state.range(0) == 1);
+    const Eigen::Vector3d acc(0.05, -0.02, 9.81), gyr(0.001, -0.002, 0.0005);
+    for (auto _ : state) {
+        ekf.propagate(acc, gyr, 0.01);
+        ekf.updateZeroVelocity();
+        benchmark::DoNotOptimize(ekf.covariance().data());
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.SetLabel(state.range(0) == 1 ? "update recorded" : "not recorded");
+}
+BENCHMARK(BM_EkfStanceSample)->Arg(0)->Arg(1);
+
+/// What the smoother stores of a sample with a ZUPT (the defaults): the packed covariance, the
+/// attitude, the propagation and the update, into fresh records as a run writes them. With
+/// BM_EkfStanceSample/1, the forward pass's work on a stance sample but recording the result.
+void BM_SmootherCapture(benchmark::State& state)
+{
+    constexpr std::size_t kSamples = 4096;  // a new smoother each batch, so memory stays bounded
+    const Parameters params;
+    ErrorStateEkf ekf(params, Eigen::Matrix3d::Identity());
+    for (auto _ : state) {
+        RtsSmoother smoother(params, ekf);
+        smoother.reserve(kSamples, kSamples);
+        ekf.propagate(Eigen::Vector3d(0.1, 0.0, 9.81), Eigen::Vector3d(0.01, 0.0, 0.0), 0.01);
+        ekf.updateZeroVelocity();
+        for (std::size_t k = 0; k < kSamples; ++k)
+            smoother.capture(ekf);
+        benchmark::DoNotOptimize(&smoother);
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kSamples));
+}
+BENCHMARK(BM_SmootherCapture);
 
 }  // namespace
 
