@@ -88,7 +88,7 @@ private slots:
         plot.yAxis->setRange(-8.0, 10.0);
         auto* coarse = new DecimatedGraph(plot.xAxis, plot.yAxis);
         auto* full = new DecimatedGraph(plot.xAxis, plot.yAxis);
-        coarse->setSeries(data, coarseEnvelope(data, 16), 16);
+        coarse->setSeries(data, coarseEnvelope(data));
         full->data()->set(data, true);
         plot.replot();
         const QVector<QCPGraphData> fromCoarse = coarse->drawnData(), fromFull = full->drawnData();

@@ -48,11 +48,10 @@ QVector<QCPGraphData> DecimatedGraph::drawnData() const
     return drawn;
 }
 
-void DecimatedGraph::setSeries(const QVector<QCPGraphData>& data, const QVector<QCPGraphData>& coarse, int bucket)
+void DecimatedGraph::setSeries(const QVector<QCPGraphData>& data, const QVector<QCPGraphData>& coarse)
 {
     mDataContainer->set(data, true);  // shares the vector
     coarse_ = coarse;
-    coarseBucket_ = bucket;
     coarseOfData_ = data.constData();
     coarseOfSize_ = static_cast<int>(data.size());
     coarseOfFirst_s_ = data.isEmpty() ? 0.0 : data.front().key;
@@ -70,7 +69,7 @@ DecimatedGraph::coarseRange(const QCPGraphDataContainer::const_iterator& begin,
     if (!ofThisData || end - begin < 2)
         return std::nullopt;
     const double columns = std::abs(mKeyAxis->coordToPixel((end - 1)->key) - mKeyAxis->coordToPixel(begin->key)) + 1.0;
-    if (static_cast<double>(end - begin) < 2.0 * coarseBucket_ * columns)
+    if (static_cast<double>(end - begin) < 2.0 * kCoarseBucket * columns)
         return std::nullopt;
     const auto byKey = [](const QCPGraphData& point, double key) { return point.key < key; };
     const auto first = std::lower_bound(coarse_.constBegin(), coarse_.constEnd(), begin->key, byKey);

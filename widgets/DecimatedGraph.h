@@ -7,11 +7,14 @@
 
 namespace footpath {
 
+/// The samples a point pair of a coarse copy stands for (coarseEnvelope, DecimatedGraph::setSeries).
+constexpr int kCoarseBucket = 16;
+
 /// A coarse copy of a time series for drawing it zoomed out: each stretch of up to bucket samples
 /// between NaN gaps as its lowest and its highest sample, in key order; the gaps as they are. Every
 /// sample's value lies between the two kept of its stretch, so the lowest and highest of any run of
 /// whole stretches are kept. Built on any thread.
-QVector<QCPGraphData> coarseEnvelope(const QVector<QCPGraphData>& data, int bucket);
+QVector<QCPGraphData> coarseEnvelope(const QVector<QCPGraphData>& data, int bucket = kCoarseBucket);
 
 /// A time series drawn as the screen can show it: QCustomPlot's adaptive sampling keeps, for each
 /// pixel column holding several samples, its lowest and highest value (a one-sample spike is still
@@ -25,9 +28,6 @@ QVector<QCPGraphData> coarseEnvelope(const QVector<QCPGraphData>& data, int buck
 /// 45 passes over 180,000 samples, 11 ms a replot).
 class DecimatedGraph : public QCPGraph {
 public:
-    /// The samples a point pair of a coarse copy stands for, in the views that make one.
-    static constexpr int kCoarseBucket = 16;
-
     /// What a pixel column holding several samples is drawn as.
     enum class Reduction {
         LowestAndHighest,  ///< a line: QCustomPlot's adaptive sampling
@@ -40,10 +40,10 @@ public:
     /// The points a replot at the axes' current ranges draws (a NaN value is a gap); for tests.
     QVector<QCPGraphData> drawnData() const;
 
-    /// Sets the data (sorted by key) and its coarseEnvelope of stretches of bucket samples. The
-    /// copy is used only while the data is the vector given here, with its size and end keys (data
-    /// set any other way is drawn without it); change the data only through here.
-    void setSeries(const QVector<QCPGraphData>& data, const QVector<QCPGraphData>& coarse, int bucket);
+    /// Sets the data (sorted by key) and its coarseEnvelope of stretches of kCoarseBucket samples.
+    /// The copy is used only while the data is the vector given here, with its size and end keys
+    /// (data set any other way is drawn without it); change the data only through here.
+    void setSeries(const QVector<QCPGraphData>& data, const QVector<QCPGraphData>& coarse);
 
 protected:
     void getOptimizedLineData(QVector<QCPGraphData>* lineData, const QCPGraphDataContainer::const_iterator& begin,
@@ -65,7 +65,6 @@ private:
 
     Reduction reduction_;
     QVector<QCPGraphData> coarse_;
-    int coarseBucket_ = 0;
     const QCPGraphData* coarseOfData_ = nullptr;  ///< the data's points, size and end keys the copy was made of
     int coarseOfSize_ = -1;
     double coarseOfFirst_s_ = 0.0, coarseOfLast_s_ = 0.0;

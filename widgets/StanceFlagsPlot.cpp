@@ -588,8 +588,7 @@ void StanceFlagsPlot::plotStatistic()
             threshold << plottedValue(flags.logThreshold[k], decades);
         }
     }
-    constexpr int bucket = DecimatedGraph::kCoarseBucket;
-    statistic_->setSeries(statistic, coarseEnvelope(statistic, bucket), bucket);
+    statistic_->setSeries(statistic, coarseEnvelope(statistic));
     statisticThreshold_->setData(thresholdKeys, threshold, true);
     valueAxis(rows_[kStatisticRow].rect)->setRange(std::pow(10.0, lowest), std::pow(10.0, highest));
 }

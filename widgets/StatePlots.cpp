@@ -223,7 +223,7 @@ ComponentSeries buildComponentSeries(const Result& result, Row which, int compon
         widen(value - s);
         widen(value + s);
     }
-    series.coarseCurve = coarseEnvelope(curve, DecimatedGraph::kCoarseBucket);
+    series.coarseCurve = coarseEnvelope(curve);
     return series;
 }
 
@@ -402,7 +402,7 @@ void StatePlots::plotRow(std::size_t r, const RowFill& fill)
         const ComponentSeries& series = fill.components[static_cast<std::size_t>(c)];
         Component& component = row.components[static_cast<std::size_t>(c)];
         // Handed over whole: the container shares the vector instead of copying 180k pairs again.
-        component.curve->setSeries(series.curve, series.coarseCurve, DecimatedGraph::kCoarseBucket);
+        component.curve->setSeries(series.curve, series.coarseCurve);
         component.lower->data()->set(series.lower, true);
         component.upper->data()->set(series.upper, true);
         component.sigma->data()->set(series.sigma, true);
