@@ -128,6 +128,63 @@ private slots:
                  qPrintable(QString::number((ekf.covariance() - dense).norm())));
     }
 
+    void updateEqualsTheJosephFormOfEq33_data()
+    {
+        QTest::addColumn<int>("states");
+        QTest::addColumn<bool>("withRate");
+        QTest::newRow("9 states, ZUPT") << 9 << false;
+        QTest::newRow("15 states, ZUPT") << 15 << false;
+        QTest::newRow("15 states, ZUPT and ZARU") << 15 << true;
+    }
+
+    void updateEqualsTheJosephFormOfEq33()
+    {
+        // The filter takes P - W W^T (W = P H^T L^-T, S = L L^T) off the covariance: the Joseph form
+        // (I - KH) P (I - KH)^T + K R K^T for the gain it uses, but for rounding. Checked after a
+        // second-long swing, when the velocity variance is hundreds of times R and the update
+        // cancels most of its digits.
+        QFETCH(int, states);
+        QFETCH(bool, withRate);
+        Parameters params = guo2015Parameters();
+        params.filter_states = static_cast<int>(states == 9 ? FilterStates::Nine : FilterStates::Fifteen);
+        params.p0_att_rad = 0.01;
+        params.q_vel_mps = 0.02;
+        ErrorStateEkf ekf(params, rotationFromRollPitchYaw(0.1, 0.2, 0.3));
+        for (int k = 0; k < 100; ++k)
+            ekf.propagate(Eigen::Vector3d(1.0, -2.0, 9.0), Eigen::Vector3d(0.3, 0.1, -0.2), 0.01);
+        const Matrix15 before = ekf.covariance();
+        const double zupt = params.r_zupt_mps * params.r_zupt_mps, zaru = params.r_zaru_radps * params.r_zaru_radps;
+        QVERIFY(before(kVel, kVel) > 100.0 * zupt);
+        ekf.setRecordUpdates(true);
+        if (withRate)
+            ekf.updateZeroVelocityAndRate(Eigen::Vector3d(0.01, 0.0, 0.0));
+        else
+            ekf.updateZeroVelocity();
+        QCOMPARE(ekf.updateCount(), std::size_t(1));
+        const Eigen::MatrixXd gain = ekf.recordedUpdate(0).gain;
+        const int rows = withRate ? 6 : 3;
+        Eigen::MatrixXd h = Eigen::MatrixXd::Zero(rows, 15);
+        Eigen::VectorXd r(rows);
+        if (withRate) {
+            h.block<3, 3>(0, kGyroBias).setIdentity();
+            h.block<3, 3>(3, kVel).setIdentity();
+            r << Eigen::Vector3d::Constant(zaru), Eigen::Vector3d::Constant(zupt);
+        } else {
+            h.block<3, 3>(0, kVel).setIdentity();
+            r = Eigen::Vector3d::Constant(zupt);
+        }
+        const Matrix15 iMinusKh = Matrix15::Identity() - gain * h;
+        const Matrix15 joseph = iMinusKh * before * iMinusKh.transpose() + gain * r.asDiagonal() * gain.transpose();
+        const Matrix15& p = ekf.covariance();
+        QCOMPARE((p - p.transpose()).norm(), 0.0);
+        QVERIFY2((p - joseph).norm() < 1e-12 * before.norm(),
+                 qPrintable(QString("%1 of %2").arg((p - joseph).norm()).arg(before.norm())));
+        // And the gain is eq. 31's.
+        const Eigen::MatrixXd s = h * before * h.transpose() + Eigen::MatrixXd(r.asDiagonal());
+        const Eigen::MatrixXd expectedGain = before * h.transpose() * s.inverse();
+        QVERIFY((gain - expectedGain).norm() < 1e-12 * expectedGain.norm());
+    }
+
     void staticImuWithGyroBiasEstimatesTheBiasAndStaysPut()
     {
         const Eigen::Vector3d trueBias(0.01, -0.02, 0.005);
@@ -159,7 +216,7 @@ private slots:
         QVERIFY(ekf.state().velocity_mps.norm() < 1e-3);
     }
 
-    void josephUpdateKeepsCovarianceSymmetricPositiveDefinite()
+    void updateKeepsCovarianceSymmetricPositiveDefinite()
     {
         Parameters params = guo2015Parameters();
         params.p0_pos_m = 1.0;

@@ -45,20 +45,30 @@ Eigen::Matrix<double, Rows, Rows> choleskyFactor(const Eigen::Matrix<double, Row
     return l;
 }
 
-/// K = P H^T S^-1 (eq. 31) by substitution with the Cholesky factor L of S (S = L L^T, symmetric
-/// positive definite because R is), not an inverse: K L L^T = P H^T on whole columns of K, which are
-/// contiguous N-vectors (Eigen's general triangular solver is slow at these sizes).
+/// W = P H^T L^-T, for S = L L^T (the Cholesky factor L of S, symmetric positive definite because
+/// R is): by forward substitution on whole columns of W, which are contiguous N-vectors (Eigen's
+/// general triangular solver is slow at these sizes). W W^T = P H^T S^-1 H P, what the update takes
+/// off P, and K = W L^-1 (gainFromWhitened).
 template <int N, int Rows>
-Eigen::Matrix<double, N, Rows> solveGain(const Eigen::Matrix<double, N, Rows>& pht,
-                                         const Eigen::Matrix<double, Rows, Rows>& l)
+Eigen::Matrix<double, N, Rows> whitenedGain(const Eigen::Matrix<double, N, Rows>& pht,
+                                            const Eigen::Matrix<double, Rows, Rows>& l)
 {
-    Eigen::Matrix<double, N, Rows> k = pht;
-    for (int i = 0; i < Rows; ++i) {  // K L^T = P H^T: forward over the columns of K
+    Eigen::Matrix<double, N, Rows> w = pht;
+    for (int i = 0; i < Rows; ++i) {  // W L^T = P H^T: forward over the columns of W
         for (int j = 0; j < i; ++j)
-            k.col(i) -= l(i, j) * k.col(j);
-        k.col(i) /= l(i, i);
+            w.col(i) -= l(i, j) * w.col(j);
+        w.col(i) /= l(i, i);
     }
-    for (int i = Rows - 1; i >= 0; --i) {  // then K L = that: backward
+    return w;
+}
+
+/// K = P H^T S^-1 (eq. 31) = W L^-1: K L = W, backward over the columns of K.
+template <int N, int Rows>
+Eigen::Matrix<double, N, Rows> gainFromWhitened(const Eigen::Matrix<double, N, Rows>& w,
+                                                const Eigen::Matrix<double, Rows, Rows>& l)
+{
+    Eigen::Matrix<double, N, Rows> k = w;
+    for (int i = Rows - 1; i >= 0; --i) {
         for (int j = i + 1; j < Rows; ++j)
             k.col(i) -= l(j, i) * k.col(j);
         k.col(i) /= l(i, i);
@@ -242,25 +252,23 @@ void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOf
             s(r, c) = p(selected(r), selected(c));
     s.diagonal() += noiseVariance;
     const MatR cholesky = choleskyFactor(s);  // S is symmetric positive definite because R is
-    const PHt gain = solveGain(pht, cholesky);
+    const PHt whitened = whitenedGain(pht, cholesky);
+    const PHt gain = gainFromWhitened(whitened, cholesky);
 
-    // Joseph form (eq. 33), with A = (I - KH) P = P - K (P H^T)^T:
-    //   (I - KH) P (I - KH)^T + K R K^T = A - (A H^T - K R) K^T,
-    // where A H^T - K R = P H^T - K (H P H^T + R) = P H^T - K S, the residual of the gain's solve.
-    // Not the shorter P - K H P: the Joseph form stays symmetric positive under rounding. Only the
-    // lower triangle is computed, as one product of stacked factors, then mirrored.
-    const PHt correction = pht - gain.lazyProduct(s);
-    Eigen::Matrix<double, 2 * Rows, N> left, right;  // transposed: columns are contiguous
-    left << gain.transpose(), correction.transpose();
-    right << pht.transpose(), gain.transpose();
+    // P - P H^T S^-1 H P = P - W W^T (eq. 33's covariance for the optimal gain). W W^T is symmetric
+    // and positive semidefinite as computed, so, unlike P - K H P, the result stays symmetric under
+    // rounding; the Joseph form (I - KH) P (I - KH)^T + K R K^T equals it but for a term of the
+    // gain's rounding, at twice the cost. Only the lower triangle is computed, then mirrored.
+    const Eigen::Matrix<double, N, N> downdate = whitened.lazyProduct(whitened.transpose());
     const auto updateLowerAndMirror = [&](int i, int j) {
         double& lower = p(filterIndex(i), filterIndex(j));
-        lower -= left.col(i).dot(right.col(j));
+        lower -= downdate(i, j);
         p(filterIndex(j), filterIndex(i)) = lower;
     };
     if constexpr (N == 9) {
-        // Unrolled, the 9 states' 45 entries cost a third fewer instructions; the 15 states' 120
-        // took 8 % longer unrolled (bench_pipeline, paper configuration), so they stay a loop.
+        // Unrolled: GCC leaves the triangle a loop. The 15 states' 120 entries took 8 % longer
+        // unrolled (bench_pipeline, paper configuration, with the Joseph form's dot products of
+        // the time), so they stay a loop.
 #pragma GCC unroll 9
         for (int j = 0; j < N; ++j)
 #pragma GCC unroll 9
