@@ -255,20 +255,20 @@ void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOf
     const PHt whitened = whitenedGain(pht, cholesky);
     const PHt gain = gainFromWhitened(whitened, cholesky);
 
-    // P - P H^T S^-1 H P = P - W W^T (eq. 33's covariance for the optimal gain). W W^T is symmetric
-    // and positive semidefinite as computed, so, unlike P - K H P, the result stays symmetric under
-    // rounding; the Joseph form (I - KH) P (I - KH)^T + K R K^T equals it but for a term of the
-    // gain's rounding, at twice the cost. Only the lower triangle is computed, then mirrored.
-    const Eigen::Matrix<double, N, N> downdate = whitened.lazyProduct(whitened.transpose());
+    // Eq. 33's Joseph form for the gain made here, K = W L^-1: (I - KH) P (I - KH)^T + K R K^T
+    // = P - W W^T but for a term of the gain's rounding, at half the work of the form's two
+    // products (tst_errorstateekf updateEqualsTheJosephFormOfEq33). Only the lower triangle of
+    // W W^T is computed, as dot products of W's rows, and mirrored: P stays exactly symmetric.
+    const Eigen::Matrix<double, Rows, N> whitenedT = whitened.transpose();  // columns are contiguous
     const auto updateLowerAndMirror = [&](int i, int j) {
         double& lower = p(filterIndex(i), filterIndex(j));
-        lower -= downdate(i, j);
+        lower -= whitenedT.col(i).dot(whitenedT.col(j));
         p(filterIndex(j), filterIndex(i)) = lower;
     };
     if constexpr (N == 9) {
-        // Unrolled: GCC leaves the triangle a loop. The 15 states' 120 entries took 8 % longer
-        // unrolled (bench_pipeline, paper configuration, with the Joseph form's dot products of
-        // the time), so they stay a loop.
+        // Unrolled: GCC leaves the triangle a loop. The 15 states' 120 entries stay a loop:
+        // unrolled, with the Joseph form's longer dot products of the time, they took 8 % longer
+        // (bench_pipeline, paper configuration).
 #pragma GCC unroll 9
         for (int j = 0; j < N; ++j)
 #pragma GCC unroll 9
