@@ -154,7 +154,7 @@ void ErrorStateEkf::propagateCovariance(const PropagationStep& step, const Vecto
 void ErrorStateEkf::propagateNavigationBlocks(const PropagationStep& step)
 {
     // Without bias states Phi = I + two blocks, (pos, vel) = dt I and (vel, att) = -dt S(a_n), and
-    // the bias rows and columns of P stay zero: 5 products of 3x3 blocks. The attitude rows of
+    // the bias rows and columns of P stay zero: 4 products of 3x3 blocks. The attitude rows of
     // M = Phi P are those of P; P' = M Phi^T, upper triangle, then mirrored.
     const double dt_s = step.dt_s;
     const Eigen::Matrix3d velFromAtt = -dt_s * skew(step.navSpecificForce);
@@ -170,7 +170,9 @@ void ErrorStateEkf::propagateNavigationBlocks(const PropagationStep& step)
     b(kPos, kVel) = mPosVel + mPosAtt * velFromAttT;
     b(kPos, kPos) = mPosPos + dt_s * mPosVel;
     b(kAtt, kPos) = b(kAtt, kPos) + dt_s * b(kAtt, kVel);  // before (att, vel) changes
-    b(kAtt, kVel) = b(kAtt, kVel) + b(kAtt, kAtt) * velFromAttT;
+    // P'(att, vel) = P(att, vel) + P(att, att) velFromAtt^T is M(vel, att)^T, P being symmetric:
+    // the same products summed in the same order, one product fewer.
+    b(kAtt, kVel) = mVelAtt.transpose();
     for (const auto& [row, col] : {std::pair{kAtt, kPos}, std::pair{kAtt, kVel}, std::pair{kPos, kVel}})
         b(col, row) = b(row, col).transpose();
 }
