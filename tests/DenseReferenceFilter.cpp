@@ -98,8 +98,7 @@ struct DenseFilter {
         const Eigen::MatrixXd s = h * p * h.transpose() + Eigen::MatrixXd(r.asDiagonal());
         const Eigen::MatrixXd gain = s.llt().solve(h * p).transpose();  // K = P H^T S^-1
         const Vector dx = gain * z;
-        const Matrix iMinusKh = Matrix::Identity() - gain * h;
-        p = iMinusKh * p * iMinusKh.transpose() + gain * r.asDiagonal() * gain.transpose();
+        p = josephForm(p, gain, h, r);
         p = 0.5 * (p + p.transpose());
         applyCorrection(dx);
         return dx;

@@ -20,6 +20,16 @@ struct DenseReferenceOutput {
     std::string error;  ///< empty when the parameters are ones the reference implements
 };
 
+/// Eq. 33 as printed, the Joseph form (I - K H) P (I - K H)^T + K R K^T for the gain K, with R the
+/// diagonal r: the reference's covariance update, and what tests hold the structured one to.
+template <class Covariance>
+Covariance josephForm(const Covariance& p, const Eigen::MatrixXd& gain, const Eigen::MatrixXd& h,
+                      const Eigen::VectorXd& r)
+{
+    const Covariance iMinusKh = Covariance::Identity(p.rows(), p.cols()) - gain * h;
+    return iMinusKh * p * iMinusKh.transpose() + gain * r.asDiagonal() * gain.transpose();
+}
+
 /// The same detector and alignment as runPipeline (core's), then: the error-state EKF of the running
 /// states (9, or 15 with biases) with Phi P Phi^T + Q, the ZUPT/ZARU update as
 /// K = P H^T (H P H^T + R)^-1 and the Joseph form, all as dense N x N products; then, for the

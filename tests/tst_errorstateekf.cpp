@@ -1,3 +1,4 @@
+#include "DenseReferenceFilter.h"
 #include "nav/Attitude.h"
 #include "nav/ErrorStateEkf.h"
 #include "nav/Strapdown.h"
@@ -25,6 +26,14 @@ Eigen::Vector3d rotationVector(const Eigen::Matrix3d& rotation)
 {
     const Eigen::AngleAxisd angleAxis(rotation);
     return angleAxis.angle() * angleAxis.axis();
+}
+
+/// Guo 2015's parameters with a filter of 9 or 15 states.
+Parameters guo2015WithStates(int states)
+{
+    Parameters params = guo2015Parameters();
+    params.filter_states = static_cast<int>(states == 9 ? FilterStates::Nine : FilterStates::Fifteen);
+    return params;
 }
 
 NavState sampleTruth()
@@ -113,8 +122,7 @@ private slots:
     void structuredPropagationEqualsDenseProduct()
     {
         QFETCH(int, states);
-        Parameters params = guo2015Parameters();
-        params.filter_states = static_cast<int>(states == 9 ? FilterStates::Nine : FilterStates::Fifteen);
+        Parameters params = guo2015WithStates(states);
         params.q_gyro_bias_radps = 1e-5;
         params.q_pos_m = 1e-5;
         params.q_acc_bias_mps2 = 1e-5;
@@ -155,8 +163,7 @@ private slots:
         // cancels most of its digits.
         QFETCH(int, states);
         QFETCH(bool, withRate);
-        Parameters params = guo2015Parameters();
-        params.filter_states = static_cast<int>(states == 9 ? FilterStates::Nine : FilterStates::Fifteen);
+        Parameters params = guo2015WithStates(states);
         params.p0_att_rad = 0.01;
         params.q_vel_mps = 0.02;
         ErrorStateEkf ekf(params, rotationFromRollPitchYaw(0.1, 0.2, 0.3));
@@ -183,8 +190,7 @@ private slots:
             h.block<3, 3>(0, kVel).setIdentity();
             r = Eigen::Vector3d::Constant(zupt);
         }
-        const Matrix15 iMinusKh = Matrix15::Identity() - gain * h;
-        const Matrix15 joseph = iMinusKh * before * iMinusKh.transpose() + gain * r.asDiagonal() * gain.transpose();
+        const Matrix15 joseph = josephForm(before, gain, h, r);
         const Matrix15& p = ekf.covariance();
         QCOMPARE((p - p.transpose()).norm(), 0.0);
         QVERIFY2((p - joseph).norm() < 1e-12 * before.norm(),
