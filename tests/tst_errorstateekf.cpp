@@ -177,9 +177,10 @@ private slots:
             ekf.updateZeroVelocityAndRate(Eigen::Vector3d(0.01, 0.0, 0.0));
         else
             ekf.updateZeroVelocity();
-        QCOMPARE(ekf.updateCount(), std::size_t(1));
-        const Eigen::MatrixXd gain = ekf.recordedUpdate(0).gain;
         const int rows = withRate ? 6 : 3;
+        // One record, of an update that selects states (the filter's fast way of recording).
+        QCOMPARE(ekf.recordedUpdates().size(), update_record::length(states, rows, true));
+        const Eigen::MatrixXd gain = update_record::gainOf(ekf.recordedUpdates().data(), states);
         Eigen::MatrixXd h = Eigen::MatrixXd::Zero(rows, 15);
         Eigen::VectorXd r(rows);
         if (withRate) {

@@ -114,7 +114,8 @@ ErrorStateEkf::ErrorStateEkf(const Parameters& params, const Eigen::Matrix3d& in
 
 void ErrorStateEkf::propagate(const Eigen::Vector3d& acc_mps2, const Eigen::Vector3d& gyr_radps, double dt_s)
 {
-    updateCount_ = 0;
+    updateRecords_.clear();
+    recordsObservePosition_ = false;
     if (!(dt_s > 0.0)) {
         lastPropagation_.dt_s = 0.0;  // a repeated timestamp carries no motion
         return;
@@ -290,47 +291,46 @@ void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOf
             fullGain.row(filterIndex(i)) = gain.row(i);
     }
     if (recordUpdates_)
-        recordUpdate<Rows>(blockOffsets, fullGain, innovation, cholesky);
+        recordUpdate<N, Rows>(blockOffsets, gain, fullGain, innovation, cholesky);
     applyCorrection(fullGain * innovation);
 }
 
-MeasurementUpdate& ErrorStateEkf::nextRecord()
-{
-    if (updateCount_ == updates_.size())
-        updates_.emplace_back();
-    return updates_[updateCount_++];
-}
-
-template <int Rows>
+template <int N, int Rows>
 void ErrorStateEkf::recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets,
-                                 const Eigen::Matrix<double, 15, Rows>& gain,
+                                 const Eigen::Matrix<double, N, Rows>& runningGain,
+                                 const Eigen::Matrix<double, kStates, Rows>& fullGain,
                                  const Eigen::Matrix<double, Rows, 1>& innovation,
                                  const Eigen::Matrix<double, Rows, Rows>& choleskyFactor)
 {
-    MeasurementUpdate& record = nextRecord();
-    record.selectedStates.resize(Rows);
+    const Eigen::Matrix<double, Rows, Rows> inverseS = inverseFromCholesky<Rows>(choleskyFactor);
+    const Eigen::Matrix<double, Rows, 1> weightedInnovation = inverseS * innovation;
+    Eigen::Matrix<int, Rows, 1> runningStates;
+    bool runningNotPosition = true;
+    for (int b = 0; b < Rows / 3; ++b)
+        for (int i = 0; i < 3; ++i) {
+            const int state = blockOffsets(b) + i;
+            runningStates(3 * b + i) = runningIndex<N>(state);
+            runningNotPosition = runningNotPosition && runningStates(3 * b + i) >= 0 && blockOffsets(b) != kPos;
+        }
+    if (runningNotPosition) {  // ZUPT, ZARU in the 15-state filter, both: straight into the record
+        update_record::appendSelecting<N, Rows>(updateRecords_, runningStates, runningGain, weightedInnovation, inverseS);
+        return;
+    }
+    update_record::GeneralUpdate update;
+    update.selectedStates.resize(Rows);
     for (int b = 0; b < Rows / 3; ++b)
         for (int i = 0; i < 3; ++i)
-            record.selectedStates(3 * b + i) = blockOffsets(b) + i;
-    record.h.resize(0, kStates);
-    record.gain = gain;
-    const Eigen::Matrix<double, Rows, Rows> inverseS = inverseFromCholesky<Rows>(choleskyFactor);
-    record.weightedInnovation = inverseS * innovation;
-    record.inverseS = inverseS;
+            update.selectedStates(3 * b + i) = blockOffsets(b) + i;
+    update.gain = fullGain;
+    update.weightedInnovation = weightedInnovation;
+    update.inverseS = inverseS;
+    appendRecord(update);
 }
 
-void ErrorStateEkf::recordUpdate(const Eigen::MatrixXd& h, const Eigen::MatrixXd& gain,
-                                 const Eigen::VectorXd& innovation, const Eigen::MatrixXd& s)
+void ErrorStateEkf::appendRecord(const update_record::GeneralUpdate& update)
 {
-    if (h.rows() > MeasurementUpdate::kMaxRows)
-        return;  // more rows than states: no measurement of this filter has them
-    MeasurementUpdate& record = nextRecord();
-    record.selectedStates.resize(0);
-    record.h = h;
-    record.gain = gain;
-    const Eigen::LLT<Eigen::MatrixXd> cholesky(s);
-    record.weightedInnovation = cholesky.solve(innovation);
-    record.inverseS = cholesky.solve(Eigen::MatrixXd::Identity(s.rows(), s.cols()));
+    if (update_record::append(updateRecords_, runningStates(), update))
+        recordsObservePosition_ = true;
 }
 
 void ErrorStateEkf::updateZeroVelocity()
@@ -370,8 +370,15 @@ void ErrorStateEkf::updateRows(const Eigen::MatrixXd& h, const Eigen::VectorXd& 
     const Matrix15 iMinusKh = Matrix15::Identity() - gain * h;
     Matrix15 p = iMinusKh * covariance_ * iMinusKh.transpose() + gain * noiseVariance.asDiagonal() * gain.transpose();
     covariance_ = 0.5 * (p + p.transpose());
-    if (recordUpdates_)
-        recordUpdate(h, gain, innovation, s);
+    if (recordUpdates_) {
+        update_record::GeneralUpdate update;
+        update.h = h;
+        update.gain = gain;
+        const Eigen::LLT<Eigen::MatrixXd> cholesky(s);
+        update.weightedInnovation = cholesky.solve(innovation);
+        update.inverseS = cholesky.solve(Eigen::MatrixXd::Identity(s.rows(), s.cols()));
+        appendRecord(update);
+    }
     applyCorrection(dx);
 }
 

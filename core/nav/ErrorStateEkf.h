@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nav/Parameters.h"
+#include "nav/UpdateRecord.h"
 
 #include <Eigen/Core>
 #include <Eigen/Dense>
@@ -24,19 +25,6 @@ struct PropagationStep {
     Eigen::Vector3d navSpecificForce = Eigen::Vector3d::Zero();  ///< a_n of eq. 27
     Eigen::Matrix3d bodyToNav = Eigen::Matrix3d::Identity();     ///< attitude after the strapdown step
     double dt_s = 0.0;                                           ///< 0: no propagation (repeated timestamp)
-};
-
-/// One measurement update as the filter made it, z = H dx + noise, gain K, S = H P H^T + R: what
-/// the smoother's backward pass needs to run it backwards (ErrorStateEkf::setRecordUpdates).
-/// Fixed maximum sizes, so recording one allocates nothing.
-struct MeasurementUpdate {
-    static constexpr int kMaxRows = 15;
-    /// H is the rows of the identity at these states (ZUPT, ZARU); empty: H is h.
-    Eigen::Matrix<int, Eigen::Dynamic, 1, 0, kMaxRows, 1> selectedStates;
-    Eigen::Matrix<double, Eigen::Dynamic, 15, 0, kMaxRows, 15> h;
-    Eigen::Matrix<double, 15, Eigen::Dynamic, 0, 15, kMaxRows> gain;                       ///< K
-    Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1> weightedInnovation;           ///< S^-1 z
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxRows> inverseS;  ///< S^-1
 };
 
 /// Strapdown mechanization plus the 15-state error-state EKF of Guo 2015 (sections 2.2, 2.4-2.6).
@@ -68,6 +56,15 @@ public:
     {
         return N == kStates || i < kGyroBias ? i : i + 3;
     }
+    /// The inverse of filterIndex: state's index among the running states of an N-state filter,
+    /// -1 for a state it does not run.
+    template <int N>
+    static constexpr int runningIndex(int state)
+    {
+        if (N == kStates || state < kGyroBias)
+            return state;
+        return state < kPos || state >= kAccBias ? -1 : state - 3;
+    }
 
     /// Eq. 6-11 and 32: removes the bias estimates, integrates attitude (Padé), velocity and
     /// position over dt, and propagates the covariance with the structured transition matrix.
@@ -89,12 +86,14 @@ public:
     const Matrix15& covariance() const { return covariance_; }
     /// The last propagation's inputs (dt 0 until the first, and after a skipped one).
     const PropagationStep& lastPropagation() const { return lastPropagation_; }
-    /// Keep each measurement update since the last propagate() (off by default: only the smoother
-    /// needs them). At most MeasurementUpdate::kMaxRows rows an update.
+    /// Keep a record of each measurement update since the last propagate(), as the smoother's
+    /// backward pass reads it (off by default: only the smoother needs them).
     void setRecordUpdates(bool record) { recordUpdates_ = record; }
-    /// The updates since the last propagate(), in the order they were made (none unless recorded).
-    std::size_t updateCount() const { return updateCount_; }
-    const MeasurementUpdate& recordedUpdate(std::size_t i) const { return updates_[i]; }
+    /// The records of the updates since the last propagate(), in the order they were made, one
+    /// after the other (update_record's layout; empty unless recorded).
+    const std::vector<double>& recordedUpdates() const { return updateRecords_; }
+    /// Whether one of those updates measures position.
+    bool recordedUpdatesObservePosition() const { return recordsObservePosition_; }
     /// Process noise variance added over a step of dt_s (diagonal of Q).
     Vector15 processVariance(double dt_s) const;
 
@@ -119,13 +118,13 @@ private:
     template <int N, int Rows>
     void updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, Rows, 1>& innovation,
                        const Eigen::Matrix<double, Rows, 1>& noiseVariance);
-    template <int Rows>
-    void recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, 15, Rows>& gain,
-                      const Eigen::Matrix<double, Rows, 1>& innovation,
+    /// Appends the record of a block update (runningGain: K on the running states, fullGain on all 15).
+    template <int N, int Rows>
+    void recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, N, Rows>& runningGain,
+                      const Eigen::Matrix<double, kStates, Rows>& fullGain, const Eigen::Matrix<double, Rows, 1>& innovation,
                       const Eigen::Matrix<double, Rows, Rows>& choleskyFactor);
-    void recordUpdate(const Eigen::MatrixXd& h, const Eigen::MatrixXd& gain, const Eigen::VectorXd& innovation,
-                      const Eigen::MatrixXd& s);
-    MeasurementUpdate& nextRecord();
+    void appendRecord(const update_record::GeneralUpdate& update);
+    int runningStates() const { return biasStates_ ? kStates : 9; }
     void applyCorrection(const Vector15& dx);
 
     Parameters params_;
@@ -137,8 +136,8 @@ private:
     /// (the propagation and the update skip them, which changes no number).
     bool biasStates_ = true;
     bool recordUpdates_ = false;
-    std::vector<MeasurementUpdate> updates_;  ///< reused: grows to the most updates one sample had
-    std::size_t updateCount_ = 0;
+    std::vector<double> updateRecords_;  ///< reused: grows to the most one sample had
+    bool recordsObservePosition_ = false;
 };
 
 }  // namespace footpath

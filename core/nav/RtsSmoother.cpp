@@ -3,7 +3,6 @@
 #include "nav/Attitude.h"
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <chrono>
 #include <future>
@@ -24,16 +23,6 @@ std::vector<int> activeStates(FilterStates states)
         for (int i = 0; i < 3; ++i)
             active.push_back(block + i);
     return active;
-}
-
-/// For each error state, its index among the active ones, -1 if it is not one.
-std::array<int, ErrorStateEkf::kStates> runningIndices(const std::vector<int>& active)
-{
-    std::array<int, ErrorStateEkf::kStates> index;
-    index.fill(-1);
-    for (std::size_t i = 0; i < active.size(); ++i)
-        index[static_cast<std::size_t>(active[i])] = static_cast<int>(i);
-    return index;
 }
 
 /// The states the backward pass carries. mu and L are zero in the rows of a state no update observes
@@ -87,21 +76,12 @@ void prefetch(const double* values, std::size_t count)
         __builtin_prefetch(values + i);
 }
 
-constexpr int kMaxRows = MeasurementUpdate::kMaxRows;
-
-bool observesPosition(const MeasurementUpdate& update, int row)
-{
-    constexpr int pos = ErrorStateEkf::kPos;
-    if (update.selectedStates.size() > 0)
-        return update.selectedStates(row) >= pos && update.selectedStates(row) < pos + 3;
-    return update.h.row(row).segment<3>(pos).any();  // any non-zero entry
-}
+constexpr int kMaxRows = update_record::kMaxRows;
 
 }  // namespace
 
 RtsSmoother::RtsSmoother(const Parameters& params, ErrorStateEkf& ekf)
     : active_(activeStates(params.filterStates()))
-    , runningIndexOf_(runningIndices(active_))
     , storesPropagationAttitude_(params.filterStates() == FilterStates::Fifteen)
 {
     ekf.setRecordUpdates(true);
@@ -130,103 +110,11 @@ void RtsSmoother::capture(const ErrorStateEkf& ekf)
     *out++ = step.dt_s;
     if (storesPropagationAttitude_)
         store(Eigen::Quaterniond(step.bodyToNav).coeffs());
-    for (std::size_t u = 0; u < ekf.updateCount(); ++u)
-        storeUpdate(ekf.recordedUpdate(u));
+    // The filter wrote its updates' records as the backward pass reads them (update_record).
+    const std::vector<double>& updates = ekf.recordedUpdates();
+    updateData_.insert(updateData_.end(), updates.begin(), updates.end());
+    positionObserved_ = positionObserved_ || ekf.recordedUpdatesObservePosition();
     updateStart_.push_back(updateData_.size());
-}
-
-void RtsSmoother::storeUpdate(const MeasurementUpdate& update)
-{
-    if (storeSelectingUpdate(update))
-        return;
-    // The rows of H on the running states. A row that is zero there (ZARU in the 9-state filter)
-    // is dropped: the gain's rows for the running states are zero in its column, so it changes
-    // nothing the backward pass carries.
-    const int n = static_cast<int>(active_.size());
-    const bool selects = update.selectedStates.size() > 0;
-    const auto seesRunningStates = [&](int row) {
-        if (selects)
-            return runningIndexOf_[static_cast<std::size_t>(update.selectedStates(row))] >= 0;
-        for (const int state : active_)
-            if (update.h(row, state) != 0.0)
-                return true;
-        return false;
-    };
-    std::vector<int>& rows = rowsScratch_;
-    rows.clear();
-    for (int row = 0; row < update.gain.cols(); ++row)
-        if (seesRunningStates(row)) {
-            rows.push_back(row);
-            positionObserved_ = positionObserved_ || observesPosition(update, row);
-        }
-    if (rows.empty())
-        return;
-    const std::size_t m = rows.size();
-    const std::size_t begin = updateData_.size();
-    const std::size_t length = bytesPerUpdate(static_cast<int>(m)) / sizeof(double) + (selects ? 0 : m * (n - 1));
-    updateData_.resize(begin + length);
-    double* out = updateData_.data() + begin;
-    *out++ = static_cast<double>(m);
-    *out++ = selects ? 1.0 : 0.0;
-    for (const int row : rows) {
-        if (selects) {
-            *out++ = static_cast<double>(runningIndexOf_[static_cast<std::size_t>(update.selectedStates(row))]);
-            continue;
-        }
-        for (const int state : active_)
-            *out++ = update.h(row, state);
-    }
-    for (const int row : rows)
-        for (const int state : active_)
-            *out++ = update.gain(state, row);
-    for (const int row : rows)
-        *out++ = update.weightedInnovation(row);
-    for (const int col : rows)
-        for (const int row : rows)
-            *out++ = update.inverseS(row, col);
-    *out = static_cast<double>(length);
-}
-
-bool RtsSmoother::storeSelectingUpdate(const MeasurementUpdate& update)
-{
-    // Only when every row selects a running state other than position, so that no row is dropped
-    // and positionObserved_ stays as it is.
-    const auto rows = update.selectedStates.size();
-    for (int row = 0; row < rows; ++row)
-        if (runningIndexOf_[static_cast<std::size_t>(update.selectedStates(row))] < 0 || observesPosition(update, row))
-            return false;
-    const bool all = active_.size() == ErrorStateEkf::kStates;
-    if (rows == 3)
-        all ? storeSelectingUpdate<ErrorStateEkf::kStates, 3>(update) : storeSelectingUpdate<9, 3>(update);
-    else if (rows == 6)
-        all ? storeSelectingUpdate<ErrorStateEkf::kStates, 6>(update) : storeSelectingUpdate<9, 6>(update);
-    return rows == 3 || rows == 6;
-}
-
-template <int N, int Rows>
-void RtsSmoother::storeSelectingUpdate(const MeasurementUpdate& update)
-{
-    // storeUpdate's record, with every size known at compile time: 1 in 3 samples of a walk has a
-    // ZUPT, and the generic loops cost as much as the rest of capture().
-    constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;  // active_'s order
-    constexpr std::size_t length = 2 + Rows + N * Rows + Rows + Rows * Rows + 1;
-    const std::size_t begin = updateData_.size();
-    updateData_.resize(begin + length);
-    double* out = updateData_.data() + begin;
-    *out++ = Rows;
-    *out++ = 1.0;
-    for (int row = 0; row < Rows; ++row)
-        *out++ = static_cast<double>(runningIndexOf_[static_cast<std::size_t>(update.selectedStates(row))]);
-    for (int row = 0; row < Rows; ++row)
-#pragma GCC unroll 15
-        for (int i = 0; i < N; ++i)
-            *out++ = update.gain(filterIndex(i), row);
-    for (int row = 0; row < Rows; ++row)
-        *out++ = update.weightedInnovation(row);
-    for (int col = 0; col < Rows; ++col)
-        for (int row = 0; row < Rows; ++row)
-            *out++ = update.inverseS(row, col);
-    *out = static_cast<double>(length);
 }
 
 std::size_t RtsSmoother::bytesPerSample() const
@@ -241,8 +129,7 @@ std::size_t RtsSmoother::projectedBytes(std::size_t samples, std::size_t stanceS
 
 std::size_t RtsSmoother::bytesPerUpdate(int rows) const
 {
-    const std::size_t m = static_cast<std::size_t>(rows);
-    return (2 + m + active_.size() * m + m + m * m + 1) * sizeof(double);
+    return update_record::length(static_cast<int>(active_.size()), rows, true) * sizeof(double);
 }
 
 Eigen::Matrix3d RtsSmoother::attitude(std::size_t k) const

@@ -7,7 +7,6 @@
 
 #include <Eigen/Geometry>
 
-#include <array>
 #include <functional>
 #include <vector>
 
@@ -85,12 +84,6 @@ private:
     std::size_t recordStride() const { return packedSize() + 8 + (storesPropagationAttitude_ ? 4 : 0); }
     const double* record(std::size_t k) const { return records_.data() + k * recordStride(); }
     Eigen::Matrix3d attitude(std::size_t k) const;
-    void storeUpdate(const MeasurementUpdate& update);
-    /// storeUpdate for an update whose H selects 3 or 6 running states, none of them position (ZUPT,
-    /// ZARU in 15 states, both); false, storing nothing, for any other.
-    bool storeSelectingUpdate(const MeasurementUpdate& update);
-    template <int N, int Rows>
-    void storeSelectingUpdate(const MeasurementUpdate& update);
     /// What a backward pass computes: the states (mu), the variances (L) or both.
     enum class Pass { States, Variances, Both };
     bool backwardPass(Pass pass, Result* result, std::vector<Eigen::Matrix<float, 15, 1>>* errorStd,
@@ -113,7 +106,6 @@ private:
 
 
     std::vector<int> active_;  ///< error-state indices the filter runs (all 15, or 9 without biases)
-    std::array<int, ErrorStateEkf::kStates> runningIndexOf_;  ///< index in active_ of each state, or -1
     bool storesPropagationAttitude_ = false;  ///< only the bias blocks of Phi need it
     bool positionObserved_ = false;           ///< an update measured position (height, IPER)
     /// One record of recordStride() doubles a sample, so the backward pass reads one block per
@@ -122,10 +114,10 @@ private:
     std::vector<double, BulkAllocator<double>> records_;
     std::size_t samples_ = 0;
     /// Sample k's updates are updateData_[updateStart_[k], updateStart_[k + 1]), each record
-    /// [rows, 1 if H selects states, H (indices or rows x N), K (N x rows), S^-1 z, S^-1, length].
+    /// [rows, 1 if H selects states, H (indices or rows x N), K (N x rows), S^-1 z, S^-1, length]
+    /// (update_record), as the filter wrote it.
     std::vector<std::size_t> updateStart_{0};
     std::vector<double, BulkAllocator<double>> updateData_;
-    std::vector<int> rowsScratch_;  ///< storeUpdate's list of rows kept, reused
 };
 
 }  // namespace footpath
