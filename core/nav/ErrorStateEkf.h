@@ -91,7 +91,7 @@ public:
     void setRecordUpdates(bool record) { recordUpdates_ = record; }
     /// The records of the updates since the last propagate(), in the order they were made, one
     /// after the other (update_record's layout; empty unless recorded).
-    const std::vector<double>& recordedUpdates() const { return updateRecords_; }
+    const update_record::Records& recordedUpdates() const { return updateRecords_; }
     /// Whether one of those updates measures position.
     bool recordedUpdatesObservePosition() const { return recordsObservePosition_; }
     /// Process noise variance added over a step of dt_s (diagonal of Q).
@@ -136,7 +136,7 @@ private:
     /// (the propagation and the update skip them, which changes no number).
     bool biasStates_ = true;
     bool recordUpdates_ = false;
-    std::vector<double> updateRecords_;  ///< reused: grows to the most one sample had
+    update_record::Records updateRecords_;  ///< reused: grows to the most one sample had
     bool recordsObservePosition_ = false;
 };
 

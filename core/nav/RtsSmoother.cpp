@@ -111,7 +111,7 @@ void RtsSmoother::capture(const ErrorStateEkf& ekf)
     if (storesPropagationAttitude_)
         store(Eigen::Quaterniond(step.bodyToNav).coeffs());
     // The filter wrote its updates' records as the backward pass reads them (update_record).
-    const std::vector<double>& updates = ekf.recordedUpdates();
+    const update_record::Records& updates = ekf.recordedUpdates();
     updateData_.insert(updateData_.end(), updates.begin(), updates.end());
     positionObserved_ = positionObserved_ || ekf.recordedUpdatesObservePosition();
     updateStart_.push_back(updateData_.size());

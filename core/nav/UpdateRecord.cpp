@@ -27,7 +27,7 @@ bool observesPosition(const GeneralUpdate& update, int row)
 
 }  // namespace
 
-bool append(std::vector<double>& records, int runningStates, const GeneralUpdate& update)
+bool append(Records& records, int runningStates, const GeneralUpdate& update)
 {
     const int n = runningStates;
     const bool selects = update.selectedStates.size() > 0;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "nav/BulkAllocator.h"
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -24,6 +26,10 @@ namespace update_record {
 /// No measurement of the filter has more rows than it has states.
 constexpr int kMaxRows = 15;
 
+/// Records one after the other. Appending one does not zero it first (BulkAllocator), as every
+/// double of it is written.
+using Records = std::vector<double, BulkAllocator<double>>;
+
 /// A record's length in doubles.
 constexpr std::size_t length(int runningStates, int rows, bool selects)
 {
@@ -35,7 +41,7 @@ constexpr std::size_t length(int runningStates, int rows, bool selects)
 /// usual ZUPT and ZARU, with every size known at compile time (a stance sample makes one, and
 /// the generic loops of append() cost as much as the rest of recording a sample).
 template <int N, int Rows>
-void appendSelecting(std::vector<double>& records, const Eigen::Matrix<int, Rows, 1>& runningStates,
+void appendSelecting(Records& records, const Eigen::Matrix<int, Rows, 1>& runningStates,
                      const Eigen::Matrix<double, N, Rows>& gain, const Eigen::Matrix<double, Rows, 1>& weightedInnovation,
                      const Eigen::Matrix<double, Rows, Rows>& inverseS)
 {
@@ -68,7 +74,7 @@ struct GeneralUpdate {
 /// are zero in its column, so it changes nothing the backward pass carries. Nothing is appended
 /// when no row is left. Returns whether a row left in measures position (the backward pass then
 /// carries position).
-bool append(std::vector<double>& records, int runningStates, const GeneralUpdate& update);
+bool append(Records& records, int runningStates, const GeneralUpdate& update);
 
 /// K of the record that starts at record (15 x rows, zero in the states the filter does not
 /// run): for tests.
