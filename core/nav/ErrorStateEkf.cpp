@@ -282,23 +282,27 @@ void ErrorStateEkf::updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOf
             for (int i = j; i < N; ++i)
                 updateLowerAndMirror(i, j);
     }
-    Eigen::Matrix<double, kStates, Rows> fullGain;
-    if constexpr (N == kStates) {
-        fullGain = gain;
-    } else {
-        fullGain.setZero();
-        for (int i = 0; i < N; ++i)
-            fullGain.row(filterIndex(i)) = gain.row(i);
-    }
     if (recordUpdates_)
-        recordUpdate<N, Rows>(blockOffsets, gain, fullGain, innovation, cholesky);
-    applyCorrection(fullGain * innovation);
+        recordUpdate<N, Rows>(blockOffsets, gain, innovation, cholesky);
+    if constexpr (N == kStates) {
+        applyCorrection(gain * innovation);
+    } else {
+        // dx = K z on the running states, each sum from its first term on (the order Eigen's
+        // product of all 15 rows took); the others stay zero.
+        Vector15 dx = Vector15::Zero();
+        for (int i = 0; i < N; ++i) {
+            double sum = gain(i, 0) * innovation(0);
+            for (int r = 1; r < Rows; ++r)
+                sum += gain(i, r) * innovation(r);
+            dx(filterIndex(i)) = sum;
+        }
+        applyCorrection(dx);
+    }
 }
 
 template <int N, int Rows>
 void ErrorStateEkf::recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets,
                                  const Eigen::Matrix<double, N, Rows>& runningGain,
-                                 const Eigen::Matrix<double, kStates, Rows>& fullGain,
                                  const Eigen::Matrix<double, Rows, 1>& innovation,
                                  const Eigen::Matrix<double, Rows, Rows>& choleskyFactor)
 {
@@ -321,7 +325,9 @@ void ErrorStateEkf::recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOff
     for (int b = 0; b < Rows / 3; ++b)
         for (int i = 0; i < 3; ++i)
             update.selectedStates(3 * b + i) = blockOffsets(b) + i;
-    update.gain = fullGain;
+    update.gain = Eigen::MatrixXd::Zero(kStates, Rows);
+    for (int i = 0; i < N; ++i)
+        update.gain.row(filterIndex<N>(i)) = runningGain.row(i);
     update.weightedInnovation = weightedInnovation;
     update.inverseS = inverseS;
     appendRecord(update);

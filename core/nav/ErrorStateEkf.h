@@ -118,10 +118,10 @@ private:
     template <int N, int Rows>
     void updateRunning(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, Rows, 1>& innovation,
                        const Eigen::Matrix<double, Rows, 1>& noiseVariance);
-    /// Appends the record of a block update (runningGain: K on the running states, fullGain on all 15).
+    /// Appends the record of a block update (runningGain: K on the running states).
     template <int N, int Rows>
     void recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOffsets, const Eigen::Matrix<double, N, Rows>& runningGain,
-                      const Eigen::Matrix<double, kStates, Rows>& fullGain, const Eigen::Matrix<double, Rows, 1>& innovation,
+                      const Eigen::Matrix<double, Rows, 1>& innovation,
                       const Eigen::Matrix<double, Rows, Rows>& choleskyFactor);
     void appendRecord(const update_record::GeneralUpdate& update);
     int runningStates() const { return biasStates_ ? kStates : 9; }
