@@ -202,6 +202,27 @@ private slots:
         QVERIFY((gain - expectedGain).norm() < 1e-12 * expectedGain.norm());
     }
 
+    void aRowOnStatesTheFilterDoesNotRunIsLeftOutOfTheRecord()
+    {
+        // The 9-state filter has no gyro bias: ZUPT+ZARU's rate rows see none of its states, so
+        // its record is the velocity rows alone, which then are the ZUPT's (S is block diagonal).
+        const Parameters params = guo2015WithStates(9);
+        ErrorStateEkf both(params, rotationFromRollPitchYaw(0.1, 0.2, 0.3));
+        for (int k = 0; k < 100; ++k)
+            both.propagate(Eigen::Vector3d(1.0, -2.0, 9.0), Eigen::Vector3d(0.3, 0.1, -0.2), 0.01);
+        ErrorStateEkf zupt = both;
+        both.setRecordUpdates(true);
+        zupt.setRecordUpdates(true);
+        both.updateZeroVelocityAndRate(Eigen::Vector3d(0.01, 0.0, 0.0));
+        zupt.updateZeroVelocity();
+        QCOMPARE(both.recordedUpdates().size(), update_record::length(9, 3, true));
+        QVERIFY(!both.recordedUpdatesObservePosition());
+        const Eigen::MatrixXd gain = update_record::gainOf(both.recordedUpdates().data(), 9);
+        const Eigen::MatrixXd zuptGain = update_record::gainOf(zupt.recordedUpdates().data(), 9);
+        QVERIFY2((gain - zuptGain).norm() <= 1e-14 * zuptGain.norm(), qPrintable(QString::number((gain - zuptGain).norm())));
+        QVERIFY(zuptGain.norm() > 0.0);
+    }
+
     void staticImuWithGyroBiasEstimatesTheBiasAndStaysPut()
     {
         const Eigen::Vector3d trueBias(0.01, -0.02, 0.005);

@@ -308,23 +308,18 @@ void ErrorStateEkf::recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOff
 {
     const Eigen::Matrix<double, Rows, Rows> inverseS = inverseFromCholesky<Rows>(choleskyFactor);
     const Eigen::Matrix<double, Rows, 1> weightedInnovation = inverseS * innovation;
-    Eigen::Matrix<int, Rows, 1> runningStates;
-    bool runningNotPosition = true;
-    for (int b = 0; b < Rows / 3; ++b)
-        for (int i = 0; i < 3; ++i) {
-            const int state = blockOffsets(b) + i;
-            runningStates(3 * b + i) = runningIndex<N>(state);
-            runningNotPosition = runningNotPosition && runningStates(3 * b + i) >= 0 && blockOffsets(b) != kPos;
-        }
-    if (runningNotPosition) {  // ZUPT, ZARU in the 15-state filter, both: straight into the record
+    Eigen::Matrix<int, Rows, 1> states, runningStates;  // H selects these
+    for (int row = 0; row < Rows; ++row) {
+        states(row) = blockOffsets(row / 3) + row % 3;
+        runningStates(row) = runningIndex<N>(states(row));
+    }
+    const bool position = ((states.array() >= kPos) && (states.array() < kPos + 3)).any();
+    if (!position && (runningStates.array() >= 0).all()) {  // ZUPT, ZARU with 15 states, both
         update_record::appendSelecting<N, Rows>(updateRecords_, runningStates, runningGain, weightedInnovation, inverseS);
         return;
     }
     update_record::GeneralUpdate update;
-    update.selectedStates.resize(Rows);
-    for (int b = 0; b < Rows / 3; ++b)
-        for (int i = 0; i < 3; ++i)
-            update.selectedStates(3 * b + i) = blockOffsets(b) + i;
+    update.selectedStates = states;
     update.gain = Eigen::MatrixXd::Zero(kStates, Rows);
     for (int i = 0; i < N; ++i)
         update.gain.row(filterIndex<N>(i)) = runningGain.row(i);
