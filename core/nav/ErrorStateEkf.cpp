@@ -309,12 +309,13 @@ void ErrorStateEkf::recordUpdate(const Eigen::Matrix<int, Rows / 3, 1>& blockOff
     const Eigen::Matrix<double, Rows, Rows> inverseS = inverseFromCholesky<Rows>(choleskyFactor);
     const Eigen::Matrix<double, Rows, 1> weightedInnovation = inverseS * innovation;
     Eigen::Matrix<int, Rows, 1> states, runningStates;  // H selects these
+    bool runningButPosition = true;
     for (int row = 0; row < Rows; ++row) {
         states(row) = blockOffsets(row / 3) + row % 3;
         runningStates(row) = runningIndex<N>(states(row));
+        runningButPosition = runningButPosition && runningStates(row) >= 0 && !isPosition(states(row));
     }
-    const bool position = ((states.array() >= kPos) && (states.array() < kPos + 3)).any();
-    if (!position && (runningStates.array() >= 0).all()) {  // ZUPT, ZARU with 15 states, both
+    if (runningButPosition) {  // ZUPT, ZARU with 15 states, both
         update_record::appendSelecting<N, Rows>(updateRecords_, runningStates, runningGain, weightedInnovation, inverseS);
         return;
     }

@@ -56,6 +56,7 @@ public:
     {
         return N == kStates || i < kGyroBias ? i : i + 3;
     }
+    static constexpr bool isPosition(int state) { return state >= kPos && state < kPos + 3; }
     /// The inverse of filterIndex: state's index among the running states of an N-state filter,
     /// -1 for a state it does not run.
     template <int N>

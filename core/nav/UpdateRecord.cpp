@@ -21,7 +21,7 @@ int runningIndexOf(int runningStates, int state)
 bool observesPosition(const GeneralUpdate& update, int row)
 {
     if (update.selectedStates.size() > 0)
-        return update.selectedStates(row) >= E::kPos && update.selectedStates(row) < E::kPos + 3;
+        return E::isPosition(update.selectedStates(row));
     return update.h.row(row).segment<3>(E::kPos).any();  // any non-zero entry
 }
 
