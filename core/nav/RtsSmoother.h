@@ -28,8 +28,9 @@ namespace footpath {
 /// and through each update of sample k (z = H dx + noise, gain K, S = H P H^T + R), last one first,
 ///   mu~ = mu + H^T (S^-1 z - K^T mu),  L~ = A^T L A + H^T S^-1 H,  A = I - K H.
 /// The same numbers as G(k) = P(k|k) Phi^T P(k+1|k)^-1 (tests/DenseReferenceFilter), but Phi is
-/// I plus a few 3x3 blocks and H selects states, so a sample costs one M x N product (the smoothed
-/// variances) and a few block products, where the gain form needs a Cholesky solve and two products.
+/// I plus a few 3x3 blocks and H selects states, so a sample costs N quadratic forms of size M (the
+/// smoothed variances) and a few block products, where the gain form needs a Cholesky solve and
+/// two products.
 /// M: mu and L are zero in the states no update reaches (position under ZUPT/ZARU), so the pass
 /// carries the other 6 of 9 (12 of 15) unless an update measures position (RtsSmoother.cpp, Carried).
 ///
@@ -94,9 +95,11 @@ private:
     template <class C, bool States, bool Variances>
     bool backwardPassAs(Result* result, std::vector<Eigen::Matrix<float, 15, 1>>* errorStd,
                         const std::function<bool(double fraction)>& keepGoing) const;
-    /// P(k|k)'s rows of the carried states.
+    /// P(k|k)'s rows of the carried states, each row contiguous (RtsSmoother.cpp, writeSmoothedStd).
     template <class C>
-    void carriedRowsOf(std::size_t k, Eigen::Matrix<double, C::size, C::running>& carriedRows) const;
+    using CarriedRows = Eigen::Matrix<double, C::size, C::running, Eigen::RowMajor>;
+    template <class C>
+    void carriedRowsOf(std::size_t k, CarriedRows<C>& carriedRows) const;
     PropagationStep propagationInto(std::size_t k) const;
     /// Calls visit with each stored update of sample k, last one first (RtsSmoother.cpp, StoredUpdate).
     template <class C, class Visit>
