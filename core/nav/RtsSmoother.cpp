@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <future>
+#include <type_traits>
 
 namespace footpath {
 
@@ -238,8 +239,8 @@ bool RtsSmoother::backwardPass(Pass pass, Result* result, std::vector<Eigen::Mat
     return positionObserved_ ? on(Carried<9, true>()) : on(Carried<9, false>());
 }
 
-template <class C>
-void RtsSmoother::carriedRowsOf(std::size_t k, CarriedRows<C>& carriedRows) const
+template <class C, class Rows>
+void RtsSmoother::carriedRowsOf(std::size_t k, Rows& carriedRows) const
 {
     // P(k|k) is symmetric: its rows of the carried states are its columns of them.
     const double* packed = record(k);
@@ -390,10 +391,11 @@ struct StoredUpdate {
 
 /// A sample's smoothed standard deviations into sigma, from L and P(k|k): packed is its record
 /// (RtsSmoother::capture: the upper triangle column by column first, whose diagonal is read here
-/// straight from the record), carriedRows P's carried rows (RtsSmoother::CarriedRows).
-template <class C, class Rows>
+/// straight from the record), carriedRows P's carried rows, stored row by row.
+template <class C>
 void writeSmoothedStd(const double* packed, const Eigen::Matrix<double, C::size, C::size>& information,
-                      const Rows& carriedRows, Eigen::Matrix<float, 15, 1>& sigma)
+                      const Eigen::Matrix<double, C::size, C::running, Eigen::RowMajor>& carriedRows,
+                      Eigen::Matrix<float, 15, 1>& sigma)
 {
     constexpr int N = C::running, M = C::size;
     constexpr auto filterIndex = &ErrorStateEkf::filterIndex<N>;
@@ -458,7 +460,12 @@ bool RtsSmoother::backwardPassAs(Result* result, std::vector<Eigen::Matrix<float
     // one it needs; each sample's steps on mu and on L read nothing of the other.
     Eigen::Matrix<double, M, 1> adjoint = Eigen::Matrix<double, M, 1>::Zero();
     Eigen::Matrix<double, M, M> information = Eigen::Matrix<double, M, M>::Zero();
-    CarriedRows<C> carriedRows;  // P(k|k) in the carried states' rows
+    // P(k|k) in the carried states' rows: column by column for the states' correction (each
+    // column's dot product with mu sums as it always has, so the states keep their last bits),
+    // row by row for the variances' quadratic forms; a pass that computes both copies them over.
+    using ColumnWise = Eigen::Matrix<double, M, N>;
+    using RowWise = Eigen::Matrix<double, M, N, Eigen::RowMajor>;
+    std::conditional_t<States, ColumnWise, RowWise> carriedRows;
     for (std::size_t k = n; k-- > 0;) {
         if (k >= 2)  // the pass walks memory backwards, which the hardware prefetcher follows poorly
             prefetch(record(k - 2), recordStride());
@@ -473,7 +480,9 @@ bool RtsSmoother::backwardPassAs(Result* result, std::vector<Eigen::Matrix<float
         carriedRowsOf<C>(k, carriedRows);
         if constexpr (States)
             writeSmoothedState<N>(*result, k, carriedRows.transpose().lazyProduct(adjoint));
-        if constexpr (Variances)
+        if constexpr (Variances && States)
+            writeSmoothedStd<C>(record(k), information, RowWise(carriedRows), (*errorStd)[k]);
+        else if constexpr (Variances)
             writeSmoothedStd<C>(record(k), information, carriedRows, (*errorStd)[k]);
         updatesBackward<C>(k, [&](const auto& update) {
             if constexpr (States)

@@ -95,11 +95,10 @@ private:
     template <class C, bool States, bool Variances>
     bool backwardPassAs(Result* result, std::vector<Eigen::Matrix<float, 15, 1>>* errorStd,
                         const std::function<bool(double fraction)>& keepGoing) const;
-    /// P(k|k)'s rows of the carried states, each row contiguous (RtsSmoother.cpp, writeSmoothedStd).
-    template <class C>
-    using CarriedRows = Eigen::Matrix<double, C::size, C::running, Eigen::RowMajor>;
-    template <class C>
-    void carriedRowsOf(std::size_t k, CarriedRows<C>& carriedRows) const;
+    /// P(k|k)'s rows of the carried states, into an M x N matrix of either storage order: the
+    /// states' correction reads its columns, the variances its rows (RtsSmoother.cpp, backwardPassAs).
+    template <class C, class Rows>
+    void carriedRowsOf(std::size_t k, Rows& carriedRows) const;
     PropagationStep propagationInto(std::size_t k) const;
     /// Calls visit with each stored update of sample k, last one first (RtsSmoother.cpp, StoredUpdate).
     template <class C, class Visit>
