@@ -402,7 +402,7 @@ void writeSmoothedStd(const double* packed, const Eigen::Matrix<double, C::size,
     // diag(P L P): for each state i, the quadratic form c^T L c of column i of P's carried rows;
     // all N at once, on whole rows r_a (contiguous): the sum over a of r_a (L_aa r_a + the sum over
     // b > a of 2 L_ab r_b). L is symmetric, so its upper triangle is all this reads: 21 row steps
-    // for 6 carried states where the product L P took 36 (20 % fewer instructions in the pass's
+    // for 6 carried states where the product L P took 36 (18 % fewer instructions in the pass's
     // largest part, callgrind).
     Eigen::Matrix<double, N, 1> quadratic = Eigen::Matrix<double, N, 1>::Zero();
 #pragma GCC unroll 15
