@@ -34,6 +34,7 @@ struct PlausibilityWarning {
         StanceRatio,        ///< the share of stance time far from normal gait
         ImplausibleSpeed,   ///< the foot moved faster than a foot can (the filter ran away)
         FewStances,         ///< too few stance phases for the recording's length
+        BarometerGap,       ///< stance heights far from the barometric ones (barometer not fused)
     };
     Kind kind = Kind::LongSwing;
     double start_s = 0.0;  ///< the span the finding concerns (recording time)

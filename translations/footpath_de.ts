@@ -3404,6 +3404,10 @@ von der Markierung: Δt = %1 s   Δx = %2 m   Δy = %3 m   Abstand %4 m</transla
         <translation>wenige Standphasen</translation>
     </message>
     <message>
+        <source>height vs barometer</source>
+        <translation>Höhe gegen Barometer</translation>
+    </message>
+    <message>
         <source>%1–%2 s</source>
         <translation>%1–%2 s</translation>
     </message>

@@ -3391,6 +3391,10 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
         <translation>支撑相过少</translation>
     </message>
     <message>
+        <source>height vs barometer</source>
+        <translation>高度与气压计不符</translation>
+    </message>
+    <message>
         <source>%1–%2 s</source>
         <translation>%1–%2 s</translation>
     </message>

@@ -55,6 +55,7 @@ QString warningLabel(Kind kind)
     case Kind::StanceRatio: return WarningOverlay::tr("stance share");
     case Kind::ImplausibleSpeed: return WarningOverlay::tr("foot too fast");
     case Kind::FewStances: return WarningOverlay::tr("few stances");
+    case Kind::BarometerGap: return WarningOverlay::tr("height vs barometer");
     }
     return QString::fromUtf8(warningKindName(kind));
 }
@@ -66,7 +67,7 @@ QString warningSpanText(const PlausibilityWarning& warning)
 
 bool concernsWholeWalk(Kind kind)
 {
-    return kind == Kind::StanceRatio || kind == Kind::FewStances;
+    return kind == Kind::StanceRatio || kind == Kind::FewStances || kind == Kind::BarometerGap;
 }
 
 std::vector<std::size_t> warningsOfStep(const Result& result, std::size_t step)

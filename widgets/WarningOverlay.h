@@ -19,9 +19,9 @@ class TimeBands;
 QString warningLabel(PlausibilityWarning::Kind kind);
 /// The finding's time span, "12.13-13.11 s".
 QString warningSpanText(const PlausibilityWarning& warning);
-/// Findings about the walk as a whole (the stance share, too few stances): their span is the whole
-/// walk, so they are neither drawn as a band over every plot nor mark every step; the summary and
-/// the labels still list them.
+/// Findings about the walk as a whole (the stance share, too few stances, heights drifting from the
+/// barometer's): their span is the whole walk or most of it, so they are neither drawn as a band
+/// over every plot nor mark every step; the summary and the labels still list them.
 bool concernsWholeWalk(PlausibilityWarning::Kind kind);
 /// Indices into result.warnings of the local findings whose span overlaps the stride that ends
 /// with steps[step]: from the end of the previous stance to the end of this one (the first step's

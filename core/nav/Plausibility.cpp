@@ -27,6 +27,8 @@ const char* warningKindName(PlausibilityWarning::Kind kind)
         return "implausible_speed";
     case K::FewStances:
         return "few_stances";
+    case K::BarometerGap:
+        return "barometer_gap";
     }
     return "unknown";
 }
@@ -241,6 +243,49 @@ void checkStanceCount(const Result& result, std::vector<PlausibilityWarning>& ou
                           result.steps.size(), duration)});
 }
 
+/// x rounded to tenths, with no negative zero ("+0.0 m", not "-0.0 m", for a height that did not change).
+double tenths(double x)
+{
+    return std::round(10.0 * x) / 10.0 + 0.0;
+}
+
+/// With pressure in the recording but the barometer not fused (use_baro off), each stance's height
+/// since the first stance against the barometer's (Step::baroHeight_m). The inertial height alone
+/// drifts by metres over a few minutes of 100 Hz walking and cannot see an elevator ride; the
+/// pressure drifts only with the weather, over hours. Two thirds of a floor apart, the heights and
+/// any floor read from them are not to be trusted, and fusing the barometer is the remedy.
+void checkHeightAgainstBarometer(const Result& result, const Parameters& params, const PlausibilityLimits& limits,
+                                 std::vector<PlausibilityWarning>& out)
+{
+    const std::vector<Step>& steps = result.steps;
+    if (params.use_baro || steps.size() < 2 || !std::isfinite(steps.front().baroHeight_m))
+        return;
+    const auto heightSinceFirst = [&](const Step& step) { return step.position_m.z() - steps.front().position_m.z(); };
+    const auto gapAt = [&](const Step& step) {
+        return heightSinceFirst(step) - (step.baroHeight_m - steps.front().baroHeight_m);
+    };
+    std::size_t firstApart = steps.size(), lastApart = 0, widest = 0;
+    for (std::size_t i = 1; i < steps.size(); ++i) {
+        const double gap = gapAt(steps[i]);
+        if (!(std::abs(gap) > limits.maxBarometerGap_m))  // a NaN (a stance without pressure) is no finding
+            continue;
+        firstApart = std::min(firstApart, i);
+        lastApart = i;
+        if (widest == 0 || std::abs(gap) > std::abs(gapAt(steps[widest])))
+            widest = i;
+    }
+    if (firstApart == steps.size())
+        return;
+    const Step& worst = steps[widest];
+    out.push_back({Kind::BarometerGap, steps[firstApart].stanceStart_s, steps[lastApart].stanceEnd_s,
+                   format("The stance heights and the barometer disagree by %.1f m at %.0f s (height since the first "
+                          "stance: %+.1f m on the path, %+.1f m from the pressure): the inertial height drifts and "
+                          "does not see an elevator ride, so heights and floors are not to be trusted. The "
+                          "barometric height (use_baro) holds them to the pressure.",
+                          std::abs(gapAt(worst)), worst.stanceStart_s, tenths(heightSinceFirst(worst)),
+                          tenths(worst.baroHeight_m - steps.front().baroHeight_m))});
+}
+
 }  // namespace
 
 std::vector<PlausibilityWarning> checkPlausibility(const Result& result, const Parameters& params,
@@ -255,6 +300,7 @@ std::vector<PlausibilityWarning> checkPlausibility(const Result& result, const P
     checkSpeed(result, limits, warnings);
     checkStanceShare(result, limits, warnings);
     checkStanceCount(result, warnings);
+    checkHeightAgainstBarometer(result, params, limits, warnings);
     std::stable_sort(warnings.begin(), warnings.end(),
                      [](const PlausibilityWarning& a, const PlausibilityWarning& b) { return a.start_s < b.start_s; });
     return warnings;

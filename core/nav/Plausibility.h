@@ -21,12 +21,15 @@ struct PlausibilityLimits {
     double maxQuietHold_s = 0.25;     ///< samples held before a late first stance without a warning:
                                       ///< a few at the start are the detector's window edge, not a walk
     double movingSpeed_mps = 0.3;     ///< a span is "moving" when the estimated speed exceeds this
+    double maxBarometerGap_m = 2.0;   ///< stance heights this far from the barometer's: two thirds of
+                                      ///< a 3 m floor (the shared walks' gaps are 0.2-1.5 m or 2.2-6.7 m)
 };
 
 /// Checks a result for what cannot be human gait: the recording does not start at rest, swings
 /// without a stance, strides too long, the filter running away (foot speed), a stance share far
-/// from gait, too few stances. Each finding names its time span and what blocked the detector
-/// where a stance was missed. The result must hold its samples, flags and steps.
+/// from gait, too few stances, and stance heights far from the barometer's when it is not fused.
+/// Each finding names its time span and what blocked the detector where a stance was missed. The
+/// result must hold its samples, flags and steps (with their barometric heights, MotionClasses).
 std::vector<PlausibilityWarning> checkPlausibility(const Result& result, const Parameters& params,
                                                    const PlausibilityLimits& limits = PlausibilityLimits());
 
