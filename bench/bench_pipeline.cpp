@@ -2,7 +2,9 @@
 // simulated walk at 100 Hz, offline and live, and on a real 200 Hz walk (a pyshoe-vicon trial repeated to a
 // minute) beside the textbook dense-matrix implementation of the same estimator (tests/DenseReferenceFilter).
 // Targets (issue 14): at least 5 million samples per second offline on real walking data, 10 times the
-// dense loop. BM_PostProcessing times the steps after the filter alone; BM_EkfPropagate,
+// dense loop; BM_SpeedRatioRealWalk gives that ratio from runs of the two side by side, which a
+// machine whose speed drifts moves far less than the ratio of two benchmarks' times. BM_PostProcessing
+// times the steps after the filter alone; BM_EkfPropagate,
 // BM_EkfStanceSample and BM_SmootherCapture the parts of the forward pass's work a sample. Run
 // with --benchmark_repetitions=5 --benchmark_report_aggregates_only=true on a busy machine.
 #include "DenseReferenceFilter.h"
@@ -16,8 +18,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
+#include <vector>
 
 using namespace footpath;
 
@@ -117,6 +123,70 @@ void BM_DenseReferenceRealWalk(benchmark::State& state)
     timeEstimates(state, realMinuteWalk(), denseReferenceEstimate);
 }
 BENCHMARK(BM_DenseReferenceRealWalk)->Unit(benchmark::kMillisecond)->MinTime(1.0)->Arg(0)->Arg(1)->Arg(2);
+
+/// Wall and process CPU time of one call, in ms.
+struct RunTimes {
+    double wall_ms = 0.0;
+    double cpu_ms = 0.0;
+};
+
+double processCpu_ms()
+{
+    timespec now{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
+}
+
+template <typename Estimate>
+RunTimes timeOneRun(Estimate estimate, const Recording& recording, const Parameters& params)
+{
+    const auto wallStart = std::chrono::steady_clock::now();
+    const double cpuStart_ms = processCpu_ms();
+    benchmark::DoNotOptimize(estimate(recording, params));
+    return {std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wallStart).count(),
+            processCpu_ms() - cpuStart_ms};
+}
+
+double median(std::vector<double> values)
+{
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    return *middle;
+}
+
+/// The speed ratio itself, robust to a machine whose speed drifts (a shared VM's moved by half
+/// between benchmarks a minute apart): each iteration runs the pipeline and the dense loop back to
+/// back on the real walk, and the counters are medians over the iterations of each one's time and
+/// of the pair's ratio. The ratio is given twice: by wall time (the pipeline's second thread
+/// counts in its favour) and by the process's CPU time (the work alone).
+void BM_SpeedRatioRealWalk(benchmark::State& state)
+{
+    const Recording& recording = realMinuteWalk();
+    if (recording.samples.empty()) {
+        state.SkipWithError("pyshoe-vicon/2017-11-22-11-22-03.csv is not in the shared datasets (set FOOTPATH_DATASETS)");
+        return;
+    }
+    const Parameters params = parametersFor(state);
+    std::vector<double> pipelineWall_ms, pipelineCpu_ms, denseWall_ms, wallRatio, cpuRatio;
+    for (auto _ : state) {
+        const RunTimes pipeline = timeOneRun(pipelineEstimate, recording, params);
+        const RunTimes dense = timeOneRun(denseReferenceEstimate, recording, params);
+        state.SetIterationTime(1e-3 * (pipeline.wall_ms + dense.wall_ms));
+        pipelineWall_ms.push_back(pipeline.wall_ms);
+        pipelineCpu_ms.push_back(pipeline.cpu_ms);
+        denseWall_ms.push_back(dense.wall_ms);
+        wallRatio.push_back(dense.wall_ms / pipeline.wall_ms);
+        cpuRatio.push_back(dense.cpu_ms / pipeline.cpu_ms);
+    }
+    state.counters["pipeline_ms"] = median(pipelineWall_ms);
+    state.counters["pipeline_cpu_ms"] = median(pipelineCpu_ms);
+    state.counters["dense_ms"] = median(denseWall_ms);
+    state.counters["ratio_wall"] = median(wallRatio);
+    state.counters["ratio_cpu"] = median(cpuRatio);
+    state.counters["samples"] = static_cast<double>(recording.samples.size());
+    setLabel(state);
+}
+BENCHMARK(BM_SpeedRatioRealWalk)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(21)->Arg(0)->Arg(1)->Arg(2);
 
 /// An ecg-xmu walk with a barometer (100 Hz, 2.5 minutes: stairs and an elevator), for the motion
 /// classes; empty when the shared recordings are not there.
