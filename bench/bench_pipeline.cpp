@@ -3,10 +3,10 @@
 // minute) beside the textbook dense-matrix implementation of the same estimator (tests/DenseReferenceFilter).
 // Targets (issue 14): at least 5 million samples per second offline on real walking data, 10 times the
 // dense loop; BM_SpeedRatioRealWalk gives that ratio from runs of the two side by side, which a
-// machine whose speed drifts moves far less than the ratio of two benchmarks' times. BM_PostProcessing
-// times the steps after the filter alone; BM_EkfPropagate,
-// BM_EkfStanceSample and BM_SmootherCapture the parts of the forward pass's work a sample. Run
-// with --benchmark_repetitions=5 --benchmark_report_aggregates_only=true on a busy machine.
+// machine whose speed drifts moves far less than the ratio of two benchmarks' times.
+// BM_PostProcessing times the steps after the filter alone; BM_EkfPropagate, BM_EkfStanceSample and
+// BM_SmootherCapture the parts of the forward pass's work a sample. Run with
+// --benchmark_repetitions=5 --benchmark_report_aggregates_only=true on a busy machine.
 #include "DenseReferenceFilter.h"
 #include "SimulatedWalks.h"
 #include "detect/StanceDetector.h"
