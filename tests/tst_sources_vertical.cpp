@@ -350,6 +350,7 @@ private slots:
         QVERIFY(s.stairStepsUp > 0);
         QVERIFY(std::abs(baro.position_m.back().z()) <= std::abs(inertial.position_m.back().z()) + 0.1);
     }
+
     // Stance heights against the barometer's (checkPlausibility): 8 stances whose path height leaves
     // the pressure's by drift_m per stance. Beyond the 2 m limit: one finding, over the stances that
     // are apart, naming the widest gap; none within it, with the barometer fused, or without pressure.
@@ -397,7 +398,8 @@ private slots:
         QCOMPARE(static_cast<int>(found.size()), findings);
         if (findings == 0)
             return;
-        // Apart from the fifth stance on (2.5 m, then 3.0 and 3.5 m less 0.01 m of pressure on odd ones).
+        // Apart from stance 5 (counted from 0) on: 2.5, 3.0 and 3.5 m, less the 0.01 m of pressure of
+        // the odd stances; the first three to count are 0.5-2.0 m apart, within the limit.
         QCOMPARE(found.front().start_s, 5.0);
         QCOMPARE(found.front().end_s, 7.3);
         const std::string& message = found.front().message;
