@@ -399,7 +399,7 @@ private slots:
         if (findings == 0)
             return;
         // Apart from stance 5 (counted from 0) on: 2.5, 3.0 and 3.5 m, less the 0.01 m of pressure of
-        // the odd stances; the first three to count are 0.5-2.0 m apart, within the limit.
+        // the odd stances; stances 1-4, 0.5-2.0 m apart, are within the limit.
         QCOMPARE(found.front().start_s, 5.0);
         QCOMPARE(found.front().end_s, 7.3);
         const std::string& message = found.front().message;
