@@ -260,19 +260,20 @@ void checkHeightAgainstBarometer(const Result& result, const Parameters& params,
     const std::vector<Step>& steps = result.steps;
     if (params.use_baro || steps.size() < 2 || !std::isfinite(steps.front().baroHeight_m))
         return;
+    // baroHeight_m is already the height since the first stance (MotionClasses); the path's is not.
     const auto heightSinceFirst = [&](const Step& step) { return step.position_m.z() - steps.front().position_m.z(); };
-    const auto gapAt = [&](const Step& step) {
-        return heightSinceFirst(step) - (step.baroHeight_m - steps.front().baroHeight_m);
-    };
     std::size_t firstApart = steps.size(), lastApart = 0, widest = 0;
+    double widestGap_m = 0.0;
     for (std::size_t i = 1; i < steps.size(); ++i) {
-        const double gap = gapAt(steps[i]);
-        if (!(std::abs(gap) > limits.maxBarometerGap_m))  // a NaN (a stance without pressure) is no finding
+        const double gap_m = heightSinceFirst(steps[i]) - steps[i].baroHeight_m;
+        if (!(std::abs(gap_m) > limits.maxBarometerGap_m))  // a NaN (a stance without pressure) is no finding
             continue;
         firstApart = std::min(firstApart, i);
         lastApart = i;
-        if (widest == 0 || std::abs(gap) > std::abs(gapAt(steps[widest])))
+        if (std::abs(gap_m) > widestGap_m) {
             widest = i;
+            widestGap_m = std::abs(gap_m);
+        }
     }
     if (firstApart == steps.size())
         return;
@@ -282,8 +283,7 @@ void checkHeightAgainstBarometer(const Result& result, const Parameters& params,
                           "stance: %+.1f m on the path, %+.1f m from the pressure): the inertial height drifts and "
                           "does not see an elevator ride, so heights and floors are not to be trusted. The "
                           "barometric height (use_baro) holds them to the pressure.",
-                          std::abs(gapAt(worst)), worst.stanceStart_s, tenths(heightSinceFirst(worst)),
-                          tenths(worst.baroHeight_m - steps.front().baroHeight_m))});
+                          widestGap_m, worst.stanceStart_s, tenths(heightSinceFirst(worst)), tenths(worst.baroHeight_m))});
 }
 
 }  // namespace
