@@ -20,7 +20,6 @@ using namespace footpath;
 
 namespace {
 
-constexpr std::size_t kMiB = 1024 * 1024;
 const QByteArray kDelimitedHeader = "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
 const QByteArray kXsensHead = "// Update Rate: 100.0Hz\nPacketCounter\tSampleTimeFine\tAcc_X\tAcc_Y\tAcc_Z\tGyr_X\tGyr_Y\tGyr_Z\n";
 

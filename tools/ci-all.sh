@@ -3,7 +3,9 @@
 # installing the packages):
 #   build       the normal build (warnings are errors) and the whole suite offscreen;
 #   build-asan  the same code with AddressSanitizer + UndefinedBehaviorSanitizer and the whole suite
-#               again (leaks and undefined behaviour fail a test; benchmarks are not built);
+#               again (leaks and undefined behaviour fail a test; benchmarks are not built), built
+#               with clang: it compiles the sanitized code in about half GCC's time, and its
+#               warnings check the code a second way;
 #   build-fuzz  clang's libFuzzer targets for every reader of outside bytes, each fuzzed for
 #               FOOTPATH_FUZZ_SECONDS (default 20) from its seed corpus.
 # Any failure stops the script with a non-zero exit.
@@ -19,7 +21,8 @@ cmake --build build
 QT_QPA_PLATFORM=offscreen ctest --test-dir build --output-on-failure -j"$jobs"
 
 step "sanitizer build and suite"
-cmake -S . -B build-asan -G Ninja -DFOOTPATH_WERROR=ON -DFOOTPATH_SANITIZE=ON -DFOOTPATH_BUILD_BENCHMARKS=OFF
+CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DFOOTPATH_WERROR=ON -DFOOTPATH_SANITIZE=ON \
+    -DFOOTPATH_BUILD_BENCHMARKS=OFF
 cmake --build build-asan
 QT_QPA_PLATFORM=offscreen ctest --test-dir build-asan --output-on-failure -j"$jobs"
 

@@ -518,17 +518,18 @@ void drawGaitFigures(PageComposer& page, QPainter& painter, const GaitStatistics
         drawBars(painter, r, stanceSteps, stances, tr("step"), tr("stance duration (s)"), 0.7);
     });
     double strideWidth = 0.0, stanceWidth = 0.0;
-    const auto [strideBins, strideCounts] = histogramBars(g.strideLengths_m, 0.01, strideWidth);
-    const auto [stanceBins, stanceCounts] = histogramBars(g.stanceDurations_s, 0.01, stanceWidth);
+    // Pairs, not structured bindings: C++17 does not let the lambda below capture those (clang refuses).
+    const auto strideHistogram = histogramBars(g.strideLengths_m, 0.01, strideWidth);
+    const auto stanceHistogram = histogramBars(g.stanceDurations_s, 0.01, stanceWidth);
     page.figure(tr("Figure 8. Histograms of stride length (left) and stance duration (right)."), page.mm(50),
                 [&](const QRectF& r) {
                     const QRectF left(r.left(), r.top(), r.width() / 2 - page.mm(2), r.height());
                     const QRectF right(r.center().x() + page.mm(2), r.top(), r.width() / 2 - page.mm(2), r.height());
                     painter.save();
-                    drawBars(painter, left, strideBins, strideCounts, tr("stride length (m)"), tr("strides"),
+                    drawBars(painter, left, strideHistogram.first, strideHistogram.second, tr("stride length (m)"), tr("strides"),
                              strideWidth * 0.9, 380);
                     painter.restore();
-                    drawBars(painter, right, stanceBins, stanceCounts, tr("stance duration (s)"), tr("stances"),
+                    drawBars(painter, right, stanceHistogram.first, stanceHistogram.second, tr("stance duration (s)"), tr("stances"),
                              stanceWidth * 0.9, 380);
                 });
 }
