@@ -526,11 +526,11 @@ void drawGaitFigures(PageComposer& page, QPainter& painter, const GaitStatistics
                     const QRectF left(r.left(), r.top(), r.width() / 2 - page.mm(2), r.height());
                     const QRectF right(r.center().x() + page.mm(2), r.top(), r.width() / 2 - page.mm(2), r.height());
                     painter.save();
-                    drawBars(painter, left, strideHistogram.first, strideHistogram.second, tr("stride length (m)"), tr("strides"),
-                             strideWidth * 0.9, 380);
+                    drawBars(painter, left, strideHistogram.first, strideHistogram.second, tr("stride length (m)"),
+                             tr("strides"), strideWidth * 0.9, 380);
                     painter.restore();
-                    drawBars(painter, right, stanceHistogram.first, stanceHistogram.second, tr("stance duration (s)"), tr("stances"),
-                             stanceWidth * 0.9, 380);
+                    drawBars(painter, right, stanceHistogram.first, stanceHistogram.second, tr("stance duration (s)"),
+                             tr("stances"), stanceWidth * 0.9, 380);
                 });
 }
 
