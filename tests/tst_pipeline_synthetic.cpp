@@ -337,6 +337,41 @@ private slots:
         }
     }
 
+    void skippingTheSmoothedVariancesChangesNoState()
+    {
+        // The command line, the self-tuning and the comparisons ask for no standard deviations: the
+        // smoother then runs its states' pass alone. Every state, step and warning is the same bit
+        // for bit, on one thread and on two; only errorStd is left empty. The filter alone keeps its
+        // own standard deviations.
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), mtiClassSensor(100.0, 5));
+        Parameters filterAlone;
+        filterAlone.estimator = static_cast<int>(EstimatorKind::Ekf);
+        const std::vector<std::pair<const char*, Parameters>> settings{
+            {"defaults", Parameters()}, {"15 states, ZARU", withBiasStates()}, {"filter alone", filterAlone}};
+        for (const auto& [setting, params] : settings) {
+            const Result full = runPipeline(walk.recording, params).result;
+            QVERIFY2(full.errorStd.size() == full.position_m.size(), setting);
+            for (const RtsSmoother::Threads threads : {RtsSmoother::Threads::One, RtsSmoother::Threads::Two}) {
+                const Result statesOnly =
+                    runPipeline(walk.recording, params, {}, threads, {}, RtsSmoother::Variances::Skip).result;
+                QVERIFY2(!statesOnly.steps.empty() && statesOnly.steps.size() == full.steps.size(), setting);
+                QVERIFY2(statesOnly.position_m == full.position_m && statesOnly.velocity_mps == full.velocity_mps,
+                         setting);
+                QVERIFY2(statesOnly.rollPitchYaw_rad == full.rollPitchYaw_rad
+                             && statesOnly.gyroBias_radps == full.gyroBias_radps
+                             && statesOnly.accBias_mps2 == full.accBias_mps2,
+                         setting);
+                QVERIFY2(statesOnly.forwardSpeed_mps == full.forwardSpeed_mps, setting);
+                QVERIFY2(statesOnly.warnings.size() == full.warnings.size(), setting);
+                QCOMPARE(statesOnly.summary.pathLength_m, full.summary.pathLength_m);
+                if (params.estimatorKind() == EstimatorKind::Smoother)
+                    QVERIFY2(statesOnly.errorStd.empty(), setting);
+                else
+                    QVERIFY2(statesOnly.errorStd == full.errorStd, setting);
+            }
+        }
+    }
+
     void aUsedResultsMemoryChangesNoDigit()
     {
         // A run into the memory of an older result (a slider's re-runs in the window) gives the

@@ -224,8 +224,14 @@ void TuneJob::start(std::vector<std::shared_ptr<const Recording>> recordings, co
             pointers, base, options,
             [this](const TuneProgress& p) { emit progressed(p.evaluations, p.budget, p.bestScore); }, cancel.get());
         if (withPaths && !recordings.empty() && result.outcome.error.empty()) {
-            result.before = std::make_shared<const Result>(runPipeline(*recordings.front(), base).result);
-            result.after = std::make_shared<const Result>(runPipeline(*recordings.front(), result.outcome.best).result);
+            // Drawn as two paths with their figures: no standard deviations.
+            const auto pathOf = [&](const Parameters& params) {
+                return std::make_shared<const Result>(runPipeline(*recordings.front(), params, {}, RtsSmoother::Threads::Two,
+                                                                  {}, RtsSmoother::Variances::Skip)
+                                                          .result);
+            };
+            result.before = pathOf(base);
+            result.after = pathOf(result.outcome.best);
         }
         return result;
     }));

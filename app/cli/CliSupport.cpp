@@ -128,7 +128,8 @@ ImportResult importInput(const CommandLine& cmd, bool echoWarnings)
 
 Result estimate(const Recording& recording, const Parameters& params)
 {
-    PipelineOutput output = runPipeline(recording, params);
+    // The command line writes no standard deviations (paths, steps, reports): the smoother's are not computed.
+    PipelineOutput output = runPipeline(recording, params, {}, RtsSmoother::Threads::Two, {}, RtsSmoother::Variances::Skip);
     if (!output.error.empty())
         throw BadInput{recording.source + ": " + output.error};
     return std::move(output.result);

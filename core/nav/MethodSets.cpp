@@ -85,7 +85,8 @@ ComparisonRow evaluateSet(const Recording& recording, const MethodSet& set, cons
     ProgressCallback progress;
     if (cancel)
         progress = [cancel](double) { return !cancel->load(); };
-    row.output = runPipeline(recording, set.params, progress, threads);
+    // A comparison shows paths, heights and figures, no standard deviations.
+    row.output = runPipeline(recording, set.params, progress, threads, {}, RtsSmoother::Variances::Skip);
     const Result& result = row.output.result;
     if (!row.output.error.empty() || result.cancelled || result.position_m.empty())
         return row;

@@ -164,7 +164,7 @@ namespace {
 /// cancelled.
 bool runFilter(const Recording& recording, const Parameters& params, StanceFlagsAhead& ahead,
                const ProgressCallback& progress, Result& result, const std::function<void()>& afterStates,
-               RtsSmoother::Threads threads)
+               RtsSmoother::Threads threads, RtsSmoother::Variances variances)
 {
     const std::vector<ImuSample>& samples = recording.samples;
     const StanceFlags& flags = result.flags;
@@ -207,10 +207,11 @@ bool runFilter(const Recording& recording, const Parameters& params, StanceFlags
     for (const Eigen::Vector3d& velocity : result.velocity_mps)
         result.forwardSpeed_mps.push_back(static_cast<float>(velocity.norm()));
     result.rollPitchYaw_rad.resize(samples.size());
-    result.errorStd.resize(samples.size());
+    if (variances == RtsSmoother::Variances::Compute)
+        result.errorStd.resize(samples.size());
     return smoother->smooth(
         result, [&](double fraction) { return !progress || progress(forwardShare + (1.0 - forwardShare) * fraction); },
-        afterStates, threads);
+        afterStates, threads, variances);
 }
 
 double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
@@ -312,7 +313,7 @@ void postProcess(const Recording& recording, const Parameters& params, Result& r
 }
 
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params, const ProgressCallback& progress,
-                           RtsSmoother::Threads threads, Result storage)
+                           RtsSmoother::Threads threads, Result storage, RtsSmoother::Variances variances)
 {
     PipelineOutput output;
     // A used result over twice this run's size (a long walk's before a short one) is let go:
@@ -345,7 +346,7 @@ PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
             if (completed)
                 finishStates();
         } else {
-            completed = runFilter(recording, params, ahead, progress, result, finishStates, threads);
+            completed = runFilter(recording, params, ahead, progress, result, finishStates, threads, variances);
         }
     }
     if (!completed) {

@@ -35,9 +35,14 @@ struct PipelineOutput {
 /// storage: a result nobody needs any more, whose per-sample memory the run fills again
 /// (reusingMemoryOf) unless it was made for over twice as many samples; the numbers are the same
 /// as with none.
+/// variances: Skip leaves Result::errorStd empty when the smoother runs, for a caller that reads
+/// no standard deviations (the command line, the self-tuning, the comparisons: only the window's
+/// state rows draw them). They are the larger of the smoother's two backward passes: a run on one
+/// thread takes about 40 % less time without them. The states are the same to the last bit. The
+/// filter alone records its own standard deviations either way (a square root of its diagonal).
 PipelineOutput runPipeline(const Recording& recording, const Parameters& params,
                            const ProgressCallback& progress = {}, RtsSmoother::Threads threads = RtsSmoother::Threads::Two,
-                           Result storage = {});
+                           Result storage = {}, RtsSmoother::Variances variances = RtsSmoother::Variances::Compute);
 
 /// A new, empty result that owns the memory of used's per-sample vectors (time, states, standard
 /// deviations, speed, stance flags, gait stance): emptied, their capacity kept. A slider's re-runs

@@ -170,15 +170,17 @@ void RtsSmoother::writeSmoothedState(Result& result, std::size_t k, const Eigen:
 }
 
 bool RtsSmoother::smooth(Result& result, const std::function<bool(double fraction)>& keepGoing,
-                         const std::function<void()>& afterStates, Threads threads) const
+                         const std::function<void()>& afterStates, Threads threads, Variances variances) const
 {
-    if (samples_ == 0 || result.position_m.size() != samples_ || result.errorStd.size() != samples_) {
+    const bool withVariances = variances == Variances::Compute;
+    if (samples_ == 0 || result.position_m.size() != samples_ || (withVariances && result.errorStd.size() != samples_)) {
         if (afterStates)
             afterStates();
         return true;
     }
-    if (threads == Threads::One) {
-        const bool completed = backwardPass(Pass::Both, &result, &result.errorStd, keepGoing);
+    if (!withVariances || threads == Threads::One) {
+        const bool completed = withVariances ? backwardPass(Pass::Both, &result, &result.errorStd, keepGoing)
+                                             : backwardPass(Pass::States, &result, nullptr, keepGoing);
         if (completed && afterStates)
             afterStates();
         return completed;
@@ -187,7 +189,7 @@ bool RtsSmoother::smooth(Result& result, const std::function<bool(double fractio
     // fraction reported is the mean of the two passes'; keepGoing is asked on this thread only.
     std::atomic_bool stop{false};
     std::atomic<double> variancesDone{0.0};
-    auto variances = std::async(std::launch::async, [this, &result, &stop, &variancesDone] {
+    auto variancesPass = std::async(std::launch::async, [this, &result, &stop, &variancesDone] {
         return smoothVariances(result.errorStd, [&stop, &variancesDone](double fraction) {
             variancesDone.store(fraction, std::memory_order_relaxed);
             return !stop.load(std::memory_order_relaxed);
@@ -200,10 +202,10 @@ bool RtsSmoother::smooth(Result& result, const std::function<bool(double fractio
     if (completed && afterStates)
         afterStates();
     using namespace std::chrono_literals;
-    while (completed && variances.wait_for(20ms) != std::future_status::ready)
+    while (completed && variancesPass.wait_for(20ms) != std::future_status::ready)
         completed = keepGoingAt(1.0);
     stop = !completed;
-    return variances.get() && completed;
+    return variancesPass.get() && completed;
 }
 
 bool RtsSmoother::smoothStates(Result& result, const std::function<bool(double fraction)>& keepGoing) const

@@ -64,9 +64,13 @@ public:
     /// this thread) said stop; result is then partly smoothed and afterStates may not have run.
     /// Threads::One: one pass for both, then afterStates, for a caller that keeps every core busy
     /// already (AutoTune); the same numbers.
+    /// Variances::Skip: the states alone, errorStd untouched (it may be empty), for a caller that
+    /// reads no standard deviations; the states are the same to the last bit.
     enum class Threads { One, Two };
+    enum class Variances { Compute, Skip };
     bool smooth(Result& result, const std::function<bool(double fraction)>& keepGoing = {},
-                const std::function<void()>& afterStates = {}, Threads threads = Threads::Two) const;
+                const std::function<void()>& afterStates = {}, Threads threads = Threads::Two,
+                Variances variances = Variances::Compute) const;
     /// The smoothed states alone: position, velocity, biases and attitude (written for every sample).
     bool smoothStates(Result& result, const std::function<bool(double fraction)>& keepGoing = {}) const;
     /// The smoothed standard deviations alone, into errorStd (one entry per captured sample).

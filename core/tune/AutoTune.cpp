@@ -83,7 +83,8 @@ std::vector<Evaluation> evaluateAll(const std::vector<const Recording*>& recordi
         const ProgressCallback keepGoing = [cancel](double) { return !(cancel && cancel->load()); };
         for (std::size_t task = next++; task < tasks; task = next++) {
             const std::size_t c = task / recordings.size(), r = task % recordings.size();
-            const PipelineOutput output = runPipeline(*recordings[r], candidates[c], keepGoing, perRun);
+            const PipelineOutput output =
+                runPipeline(*recordings[r], candidates[c], keepGoing, perRun, {}, RtsSmoother::Variances::Skip);
             if (!output.error.empty() || output.result.cancelled)
                 continue;
             evaluations[c].scores[r] = tuneScore(*recordings[r], output.result, criterion);
