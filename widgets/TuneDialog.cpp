@@ -226,9 +226,9 @@ void TuneJob::start(std::vector<std::shared_ptr<const Recording>> recordings, co
         if (withPaths && !recordings.empty() && result.outcome.error.empty()) {
             // Drawn as two paths with their figures: no standard deviations.
             const auto pathOf = [&](const Parameters& params) {
-                return std::make_shared<const Result>(runPipeline(*recordings.front(), params, {}, RtsSmoother::Threads::Two,
-                                                                  {}, RtsSmoother::Variances::Skip)
-                                                          .result);
+                PipelineOutput run = runPipeline(*recordings.front(), params, {}, RtsSmoother::Threads::Two, {},
+                                                 RtsSmoother::Variances::Skip);
+                return std::make_shared<const Result>(std::move(run.result));
             };
             result.before = pathOf(base);
             result.after = pathOf(result.outcome.best);
