@@ -73,6 +73,16 @@ struct Step {
     double baroHeight_m = std::nan("");  ///< barometric height at the stance against the first one; NaN without pressure
 };
 
+/// A movement between two stance phases that was no stride, so its two stances became one step: the
+/// foot moved less than a stride's distance or never turned at a swing's rate (a weight shift while
+/// standing, a moment the detector lost the stance). Listed so the merge is said, not hidden.
+struct MergedMovement {
+    double start_s = 0.0;         ///< the last stance sample before it
+    double end_s = 0.0;           ///< the first stance sample after it
+    double displacement_m = 0.0;  ///< between the mean positions of the two stances (3D: a stair rises)
+    double peakRate_radps = 0.0;  ///< the highest |angular rate| measured between them
+};
+
 /// A gait event (gait-lab terms, not the ZUPT stance): found by core/gait/GaitEvents.h.
 enum class GaitEventKind {
     HeelStrike,  ///< the foot meets the ground: stance begins
@@ -162,6 +172,9 @@ struct Result {
     std::vector<float> forwardSpeed_mps;
     StanceFlags flags;
     std::vector<Step> steps;
+    /// The movements between stance phases that were merged instead of counted as strides, in time
+    /// order (see appendStep in nav/Pipeline.h).
+    std::vector<MergedMovement> mergedMovements;
     /// Gait events (core/gait/GaitEvents.h) of every stride, in time order, including the first
     /// toe off and the last heel strike that have no complete stride around them.
     std::vector<GaitEvent> gaitEvents;

@@ -140,8 +140,14 @@ void TestIpolGaitEvents::realSidecars()
     QCOMPARE(int(reference.trialBoundaries.last), trialLast);
     for (const SampleRange& swing : reference.swings)
         QVERIFY(swing.first <= swing.last && swing.last < recording.samples.size());
-    QCOMPARE(reference.notes.size(), std::size_t(1));
+    QCOMPARE(reference.notes.size(), std::size_t(2));
     QVERIFY2(reference.notes.front().rfind("gait events from " + json.toStdString(), 0) == 0, reference.notes.front().c_str());
+    // The U-turn makes it the protocol's out-and-back walk: closed, 20 m (no closure or distance
+    // error was reported for these files before).
+    QVERIFY(reference.closedLoop);
+    QCOMPARE(reference.knownLength_m, 20.0);
+    QVERIFY2(reference.notes.back().rfind("closed walk of 20 m (UTurnBoundaries in " + json.toStdString(), 0) == 0,
+             reference.notes.back().c_str());
 
     QCOMPARE(int(warnings.size()), int(warningFragments.size()));
     const QString all = joined(warnings);
@@ -181,7 +187,7 @@ void TestIpolGaitEvents::eachFootTakesItsOwnEvents()
     QCOMPARE(int(recording.reference.swings.front().first), firstToeOff);
     QVERIFY(std::is_sorted(recording.reference.swings.begin(), recording.reference.swings.end(),
                            [](const SampleRange& a, const SampleRange& b) { return a.first < b.first; }));
-    QCOMPARE(recording.reference.notes.size(), std::size_t(1));
+    QCOMPARE(recording.reference.notes.size(), std::size_t(2));  // the events, and the out-and-back walk
     QVERIFY2(QString::fromStdString(recording.reference.notes.front()).contains(noteFragment),
              recording.reference.notes.front().c_str());
 }

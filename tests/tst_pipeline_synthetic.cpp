@@ -68,6 +68,18 @@ Result restingResult(const std::vector<double>& x_m, const std::vector<std::uint
     return result;
 }
 
+/// Samples whose angular rate about x is the given one (the rest zero): what fillStepsAndSummary
+/// reads of the recording.
+std::vector<ImuSample> samplesTurningAt(const std::vector<double>& rate_radps)
+{
+    std::vector<ImuSample> samples(rate_radps.size());
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+        samples[k].time_s = 0.01 * static_cast<double>(k);
+        samples[k].gyr_radps.x() = rate_radps[k];
+    }
+    return samples;
+}
+
 bool sameGaitEvents(const Result& a, const Result& b)
 {
     const auto sameEvent = [](const GaitEvent& x, const GaitEvent& y) {
@@ -87,28 +99,87 @@ private slots:
         // 0.5 s swing of 0.8 m, stance: two stance phases and one stride, not three and two.
         std::vector<double> x(150, 0.0);
         std::vector<std::uint8_t> stance(150, 1);
+        std::vector<double> rate(150, 0.0);
         for (std::size_t k = 30; k < 35; ++k)
             stance[k] = 0;
         for (std::size_t k = 60; k < 110; ++k) {
             stance[k] = 0;
             x[k] = 0.8 * static_cast<double>(k - 60) / 50.0;
+            rate[k] = 6.0;  // a walking swing's angular rate
         }
         for (std::size_t k = 110; k < 150; ++k)
             x[k] = 0.8;
         Result result = restingResult(x, stance);
-        fillStepsAndSummary(result);
+        fillStepsAndSummary(result, samplesTurningAt(rate));
         QCOMPARE(result.steps.size(), std::size_t(2));
         QCOMPARE(result.steps[0].stanceStart_s, 0.0);
         QCOMPARE(result.steps[0].stanceEnd_s, 0.59);
         QVERIFY(std::abs(result.steps[1].strideLength_m - 0.8) < 1e-12);
         QVERIFY(std::abs(result.summary.pathLength_m - 0.8) < 1e-12);
+        QCOMPARE(result.mergedMovements.size(), std::size_t(1));  // the merge is said
+        QCOMPARE(result.mergedMovements[0].start_s, 0.29);
+        QCOMPARE(result.mergedMovements[0].end_s, 0.35);
 
-        // A gap as short that moved the foot a stride away is a step (a shuffle is still a step).
+        // A gap as short that moved the foot 0.3 m with a swing's rate is a step (a shuffle is
+        // still a step).
         for (std::size_t k = 35; k < 150; ++k)
             x[k] += 0.3;
+        for (std::size_t k = 30; k < 35; ++k)
+            rate[k] = 3.0;
         Result moved = restingResult(x, stance);
-        fillStepsAndSummary(moved);
+        fillStepsAndSummary(moved, samplesTurningAt(rate));
         QCOMPARE(moved.steps.size(), std::size_t(3));
+        QVERIFY(moved.mergedMovements.empty());
+    }
+
+    void weightShiftWhileStandingIsNoStride()
+    {
+        // Standing 4 s, the weight shifted for 0.5 s (the foot tilts at 0.8 rad/s and creeps
+        // 7 mm), standing again, then a stride: one stride, not a 7 mm "stride" lasting 4 s
+        // (the start of the shared IPOL walk 1-1_lf had one).
+        std::vector<double> x(700, 0.0);
+        std::vector<std::uint8_t> stance(700, 1);
+        std::vector<double> rate(700, 0.0);
+        for (std::size_t k = 400; k < 450; ++k) {
+            stance[k] = 0;
+            x[k] = 0.007 * static_cast<double>(k - 400) / 50.0;
+            rate[k] = 0.8;
+        }
+        for (std::size_t k = 450; k < 700; ++k)
+            x[k] = 0.007;
+        for (std::size_t k = 550; k < 610; ++k) {
+            stance[k] = 0;
+            x[k] = 0.007 + 1.3 * static_cast<double>(k - 550) / 60.0;
+            rate[k] = 8.0;
+        }
+        for (std::size_t k = 610; k < 700; ++k)
+            x[k] = 1.307;
+        Result result = restingResult(x, stance);
+        fillStepsAndSummary(result, samplesTurningAt(rate));
+        QCOMPARE(result.summary.steps, std::size_t(1));
+        QCOMPARE(result.steps[0].stanceStart_s, 0.0);
+        QCOMPARE(result.steps[0].stanceEnd_s, 5.49);
+        QVERIFY(std::abs(result.steps[1].strideDuration_s - 6.1) < 1e-9);  // from the standing's start
+        QCOMPARE(result.mergedMovements.size(), std::size_t(1));
+        QVERIFY(std::abs(result.mergedMovements[0].displacement_m - 0.007 * 0.5) < 0.004);
+        QCOMPARE(result.mergedMovements[0].peakRate_radps, 0.8);
+
+        // The same creep of the foot at a swing's rate but no farther: still no stride.
+        for (std::size_t k = 400; k < 450; ++k)
+            rate[k] = 5.0;
+        Result tapped = restingResult(x, stance);
+        fillStepsAndSummary(tapped, samplesTurningAt(rate));
+        QCOMPARE(tapped.summary.steps, std::size_t(1));
+        // A real displacement without a swing's rate (the filter drifting while the foot shifts
+        // slowly) is no stride either.
+        for (std::size_t k = 450; k < 700; ++k)
+            x[k] += 0.4;
+        for (std::size_t k = 400; k < 450; ++k)
+            rate[k] = 0.6;
+        Result drifted = restingResult(x, stance);
+        fillStepsAndSummary(drifted, samplesTurningAt(rate));
+        QCOMPARE(drifted.summary.steps, std::size_t(1));
+        QVERIFY(drifted.mergedMovements[0].displacement_m > kMinStrideDistance_m);
     }
 
     void closedRectangleOfHundredMetresClosesWithinHalfPercent()

@@ -278,21 +278,37 @@ private slots:
 
     void summaryCsvHasUnitsInItsHeader()
     {
-        Summary summary;
-        summary.samples = 10;
-        summary.pathLength_m = 12.5;
+        Result result;
+        result.summary.samples = 10;
+        result.summary.pathLength_m = 12.5;
         std::ostringstream out;
-        writeSummaryCsv(out, summary);
+        writeSummaryCsv(out, result);
         QVERIFY(QString::fromStdString(out.str())
                     .startsWith("samples,duration_s,stance_phases,steps,path_length_m,end_to_start_m,"
                                 "end_to_start_pct,runtime_s,stair_steps_up,stair_steps_down,elevator_rides,"
-                                "stairs_climb_m,stairs_descent_m\n10,0,0,0,12.5,"));
+                                "stairs_climb_m,stairs_descent_m,gait_strides,gait_stride_time_s,"
+                                "gait_stride_length_m,gait_cadence_spm,gait_stance_pct,gait_swing_pct,"
+                                "gait_clearance_m,merged_movements,warnings\n10,0,0,0,12.5,"));
+        // No stride to average: empty gait cells, not zeros.
+        QVERIFY2(QString::fromStdString(out.str()).endsWith(",0,,,,,,,0,0\n"), out.str().c_str());
+
+        // The gait figures and the counts the window shows are there (they were missing).
+        result.gait.strides = 5;
+        result.gait.straightStrides = 4;
+        result.gait.cadence_spm = 104.5;
+        result.mergedMovements.push_back({1.0, 1.5, 0.004, 0.6});
+        result.warnings.push_back({PlausibilityWarning::Kind::LongSwing, 2.0, 5.0, "a missed stance"});
+        std::ostringstream filled;
+        writeSummaryCsv(filled, result);
+        QVERIFY2(QString::fromStdString(filled.str()).endsWith(",5,0,0,104.5,0,0,0,1,1\n"), filled.str().c_str());
     }
 
     void exportsCarryMotionClassesAndMethodNotes()
     {
         Result result;
         result.steps.resize(2);
+        result.steps[1].strideLength_m = 1.25;
+        result.steps[1].strideDuration_s = 1.1;
         result.steps[1].motion = MotionClass::StairsUp;
         result.steps[1].baroHeight_m = 0.25;
         result.summary.stairStepsUp = 1;
@@ -304,16 +320,21 @@ private slots:
         QCOMPARE(rows.size(), 3);
         QVERIFY(rows[0].contains(",stride_duration_s,motion,baro_height_m,heel_strike_s,"));
         QVERIFY2(rows[1].contains(",unknown,,"), qPrintable(rows[1]));  // no barometer: an empty cell
+        // The first step has no stride before it: empty cells, as the window shows "-" (it wrote 0,0).
+        QVERIFY2(rows[1].startsWith("1,0,0,0,0,0,,,unknown,"), qPrintable(rows[1]));
+        QVERIFY2(rows[2].contains(",1.25,1.1,"), qPrintable(rows[2]));
         QVERIFY2(rows[1].startsWith("1,") && rows[2].startsWith("2,"), "steps are numbered from 1");
         QVERIFY2(rows[2].contains(",stairs_up,0.25,"), qPrintable(rows[2]));
 
         const QJsonObject json =
-            QJsonDocument::fromJson(QByteArray::fromStdString(summaryToJson(result.summary, {}, result.methodNotes)))
+            QJsonDocument::fromJson(QByteArray::fromStdString(summaryToJson(result)))
                 .object();
         const QJsonObject motion = json.value("motion").toObject();
         QCOMPARE(motion.value("stair_steps_up").toInt(), 1);
         QCOMPARE(motion.value("stairs_climb_m").toDouble(), 0.25);
         QCOMPARE(motion.value("elevator_rides").toInt(), 0);
+        QVERIFY(json.value("gait").toObject().contains("cadence_spm"));
+        QCOMPARE(json.value("merged_movements").toArray().size(), 0);
         const QJsonArray notes = json.value("method_notes").toArray();
         QCOMPARE(notes.size(), 1);
         QCOMPARE(notes[0].toObject().value("method").toString(), QStringLiteral("iper"));

@@ -128,9 +128,9 @@ int runProcess(const CommandLine& cmd)
     writeIfAsked(cmd.stepsOut, [&](std::ostream& out) { writeStepsCsv(out, result); });
     printPlausibilityWarnings(cmd.input, result.warnings);
     writeIfAsked(cmd.summaryOut, [&](std::ostream& out) {
-        out << summaryToJson(result.summary, result.warnings, result.methodNotes);
+        out << summaryToJson(result);
     });
-    writeIfAsked(cmd.summaryCsvOut, [&](std::ostream& out) { writeSummaryCsv(out, result.summary); });
+    writeIfAsked(cmd.summaryCsvOut, [&](std::ostream& out) { writeSummaryCsv(out, result); });
     writeIfAsked(cmd.parametersCsvOut, [&](std::ostream& out) { writeParametersCsv(out, params); });
     const Summary& s = result.summary;
     std::printf("%s: %zu samples, %.2f s, %zu steps, path %.3f m, end-to-start %.3f m (%.2f %%), %.3f s\n",

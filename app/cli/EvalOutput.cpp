@@ -20,7 +20,7 @@ namespace footpath::cli {
 namespace {
 
 /// Which end of a metric's range is bad: errors grow, detection scores shrink.
-enum class Worst { Largest, Smallest };
+enum class Worst { Largest, Smallest, FarthestFromZero };
 
 /// A metric as a column of the batch table and, when it has a group, a line of the summary.
 struct Column {
@@ -40,10 +40,13 @@ const std::vector<Column>& columns()
         {"dbse_m", "DBSE m", "end-to-start DBSE (m)", 3, "closed loop", Worst::Largest},
         {"dbse_pct", "DBSE %", "end-to-start DBSE (% of length)", 2, "closed loop", Worst::Largest},
         {"distance_error_pct", "dist err %", "distance error (%)", 2, "known length", Worst::Largest},
-        {"stance_precision", "precision", "stance precision", 3, "gait events", Worst::Smallest},
-        {"stance_recall", "recall", "stance recall", 3, "gait events", Worst::Smallest},
-        {"stance_f1", "F1", "stance F1", 3, "gait events", Worst::Smallest},
+        {"gait_stance_precision", "gait P", "gait stance precision", 3, "gait events", Worst::Smallest},
+        {"gait_stance_recall", "gait R", "gait stance recall", 3, "gait events", Worst::Smallest},
         {"gait_stance_f1", "gait F1", "gait stance F1", 3, "gait events", Worst::Smallest},
+        {"stride_count_error", "strides +-", "strides - labelled swings", 0, "gait events", Worst::FarthestFromZero},
+        {"stance_precision", "rest P", "at rest (ZUPT) precision", 3, "gait events", Worst::Smallest},
+        {"stance_recall", "rest R", "at rest (ZUPT) recall", 3, "gait events", Worst::Smallest},
+        {"stance_f1", "rest F1", "at rest (ZUPT) F1", 3, "gait events", Worst::Smallest},
         {"heel_strike_error_ms", "HS ms", "heel strike error (ms, median)", 1, "gait events", Worst::Largest},
         {"toe_off_error_ms", "TO ms", "toe off error (ms, median)", 1, "gait events", Worst::Largest},
         {"steps", "steps", "steps", 0, nullptr, Worst::Largest},
@@ -82,7 +85,10 @@ Statistics statisticsOf(const std::vector<RecordingEvaluation>& evaluations, con
     stats.median = values.size() % 2 ? values[half] : (values[half - 1] + values[half]) / 2.0;
     for (double value : values)
         stats.mean += value / static_cast<double>(values.size());
-    stats.worst = column.worst == Worst::Largest ? values.back() : values.front();
+    if (column.worst == Worst::FarthestFromZero)
+        stats.worst = std::abs(values.back()) >= std::abs(values.front()) ? values.back() : values.front();
+    else
+        stats.worst = column.worst == Worst::Largest ? values.back() : values.front();
     return stats;
 }
 

@@ -58,16 +58,20 @@ void addStanceMetrics(std::vector<Metric>& metrics, const Recording& recording, 
     const Reference& r = recording.reference;
     if (r.swings.empty())
         return;
-    const StanceScore stance =
-        scoreStanceDetection(result.flags.stance, r.swings, r.hasTrialBoundaries ? &r.trialBoundaries : nullptr);
-    metrics.push_back({"stance_precision", "stance precision", stance.precision});
-    metrics.push_back({"stance_recall", "stance recall", stance.recall});
-    metrics.push_back({"stance_f1", "stance F1", stance.f1});
-    metrics.push_back({"stance_phase_count_error", "stance phases detected - labelled",
-                       static_cast<double>(stance.stepCountError), true});
-    const StanceScore gaitStance =
-        scoreStanceDetection(result.gaitStance, r.swings, r.hasTrialBoundaries ? &r.trialBoundaries : nullptr);
+    const SampleRange* trial = r.hasTrialBoundaries ? &r.trialBoundaries : nullptr;
+    // The gait events' stance (heel strike to toe off) is what a gait lab labels; the ZUPT flag
+    // marks only the part of it where the foot is at rest, so its recall is low by design.
+    const StanceScore gaitStance = scoreStanceDetection(result.gaitStance, r.swings, trial);
+    metrics.push_back({"gait_stance_precision", "gait stance precision", gaitStance.precision});
+    metrics.push_back({"gait_stance_recall", "gait stance recall", gaitStance.recall});
     metrics.push_back({"gait_stance_f1", "gait stance F1", gaitStance.f1});
+    const StrideCount strides = countStrides(result, r.swings, trial);
+    metrics.push_back({"stride_count_error", "strides - labelled swings",
+                       static_cast<double>(strides.error), true});
+    const StanceScore stance = scoreStanceDetection(result.flags.stance, r.swings, trial);
+    metrics.push_back({"stance_precision", "at rest (ZUPT) precision", stance.precision});
+    metrics.push_back({"stance_recall", "at rest (ZUPT) recall", stance.recall});
+    metrics.push_back({"stance_f1", "at rest (ZUPT) F1", stance.f1});
     const GaitEventTiming timing = scoreGaitEventTiming(result, r);
     metrics.push_back({"heel_strike_error_ms", "heel strike error (ms, median)",
                        1000.0 * timing.heelStrike.medianError_s});

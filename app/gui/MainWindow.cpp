@@ -615,7 +615,7 @@ void MainWindow::exportCsv()
     const std::pair<QString, std::function<void(std::ostream&)>> files[] = {
         {base + "-trajectory.csv", [&](std::ostream& out) { writeTrajectoryCsv(out, *result); }},
         {base + "-steps.csv", [&](std::ostream& out) { writeStepsCsv(out, *result); }},
-        {base + "-summary.csv", [&](std::ostream& out) { writeSummaryCsv(out, result->summary); }},
+        {base + "-summary.csv", [&](std::ostream& out) { writeSummaryCsv(out, *result); }},
         {base + "-parameters.csv", [&](std::ostream& out) { writeParametersCsv(out, params); }}};
     for (const auto& [path, write] : files)
         if (const std::string problem = writeFileAtomically(path.toStdString(), write); !problem.empty()) {

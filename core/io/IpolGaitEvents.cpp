@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 namespace footpath {
@@ -26,6 +27,15 @@ constexpr qint64 kMaxSidecarBytes = 1 << 20;
 constexpr double kLargestExactIndex = 9007199254740992.0;
 // An interval longer than this many median intervals is lost packets (as GapReport defines a gap).
 constexpr double kGapFactor = 1.5;
+/// The length of one IPOL trial: 10 m out and 10 m back.
+constexpr double kIpolOutAndBack_m = 20.0;
+
+std::string formatMetres(double metres)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%g m", metres);
+    return text;
+}
 
 struct Sidecar {
     QString path;
@@ -224,6 +234,20 @@ void warnAboutGaps(const std::string& recordingPath, const Recording& recording,
                        + " do not line up with its rows after the first gap, so its gait events are approximate");
 }
 
+/// A trial with a U-turn follows the dataset's protocol (Voisard et al. 2023): 10 m out, a U-turn,
+/// 10 m back to the start. So it is a closed walk of 20 m, and its closure and distance error can
+/// be reported like any other walk's.
+void markOutAndBack(const QJsonObject& root, const std::string& file, Reference& reference)
+{
+    if (!root.value("UTurnBoundaries").isArray() || root.value("UTurnBoundaries").toArray().size() != 2)
+        return;
+    reference.closedLoop = true;
+    if (reference.knownLength_m <= 0.0)
+        reference.knownLength_m = kIpolOutAndBack_m;
+    reference.notes.push_back("closed walk of " + formatMetres(reference.knownLength_m) + " (UTurnBoundaries in " + file
+                              + ": the protocol walks 10 m out, turns and walks 10 m back to the start)");
+}
+
 }  // namespace
 
 bool attachIpolGaitEvents(const std::string& recordingPath, Recording& recording, std::vector<std::string>& warnings)
@@ -251,6 +275,7 @@ bool attachIpolGaitEvents(const std::string& recordingPath, Recording& recording
     reference.notes.push_back("gait events from " + file + " (" + sidecar->footName + ": "
                               + std::to_string(reference.swings.size()) + " swing(s), trial samples "
                               + rangeText(events->trial) + ")");
+    markOutAndBack(*root, file, reference);
     return true;
 }
 

@@ -118,8 +118,12 @@ void writeStepsCsv(std::ostream& out, const Result& result)
         put(out, step.stanceStart_s, ',');
         put(out, step.stanceEnd_s, ',');
         putVector(out, step.position_m);
-        put(out, step.strideLength_m, ',');
-        put(out, step.strideDuration_s, ',');
+        if (i == 0)
+            out << ",,";  // the first stance has no stride before it: empty, not a stride of 0 m in 0 s
+        else {
+            put(out, step.strideLength_m, ',');
+            put(out, step.strideDuration_s, ',');
+        }
         out << motionClassName(step.motion) << ',';
         // An empty cell, not "nan", where there is no barometer: spreadsheets read it as missing.
         if (!std::isnan(step.baroHeight_m))
@@ -162,11 +166,31 @@ void putMethodNotesJson(std::ostream& out, const std::vector<MethodNote>& notes)
     out << (notes.empty() ? "]" : "\n  ]");
 }
 
+void putGaitJson(std::ostream& out, const GaitSummary& g)
+{
+    out << "  \"gait\": {\"strides\": " << g.strides << ", \"straight_strides\": " << g.straightStrides
+        << ", \"turning_strides\": " << g.turningStrides << ", \"stride_time_s\": " << g.strideTime_s
+        << ", \"stride_length_m\": " << g.strideLength_m << ", \"cadence_spm\": " << g.cadence_spm
+        << ", \"stance_pct\": " << g.stancePct << ", \"swing_pct\": " << g.swingPct
+        << ", \"clearance_m\": " << g.clearance_m << "},\n";
+}
+
+void putMergedMovementsJson(std::ostream& out, const std::vector<MergedMovement>& merged)
+{
+    out << "  \"merged_movements\": [";
+    for (std::size_t i = 0; i < merged.size(); ++i) {
+        const MergedMovement& m = merged[i];
+        out << (i == 0 ? "\n" : ",\n") << "    {\"start_s\": " << m.start_s << ", \"end_s\": " << m.end_s
+            << ", \"displacement_m\": " << m.displacement_m << ", \"peak_rate_radps\": " << m.peakRate_radps << "}";
+    }
+    out << (merged.empty() ? "]" : "\n  ]");
+}
+
 }  // namespace
 
-std::string summaryToJson(const Summary& s, const std::vector<PlausibilityWarning>& warnings,
-                          const std::vector<MethodNote>& methodNotes)
+std::string summaryToJson(const Result& result)
 {
+    const Summary& s = result.summary;
     std::ostringstream out;
     out.precision(10);
     out << "{\n"
@@ -179,17 +203,24 @@ std::string summaryToJson(const Summary& s, const std::vector<PlausibilityWarnin
         << "  \"end_to_start_pct\": " << s.endToStartPct << ",\n"
         << "  \"runtime_s\": " << s.runtime_s << ",\n";
     putMotionJson(out, s);
-    putWarningsJson(out, warnings);
+    putGaitJson(out, result.gait);
+    putMergedMovementsJson(out, result.mergedMovements);
     out << ",\n";
-    putMethodNotesJson(out, methodNotes);
+    putWarningsJson(out, result.warnings);
+    out << ",\n";
+    putMethodNotesJson(out, result.methodNotes);
     out << "\n}\n";
     return out.str();
 }
 
-void writeSummaryCsv(std::ostream& out, const Summary& s)
+void writeSummaryCsv(std::ostream& out, const Result& result)
 {
+    const Summary& s = result.summary;
+    const GaitSummary& g = result.gait;
     out << "samples,duration_s,stance_phases,steps,path_length_m,end_to_start_m,end_to_start_pct,runtime_s,"
-           "stair_steps_up,stair_steps_down,elevator_rides,stairs_climb_m,stairs_descent_m\n";
+           "stair_steps_up,stair_steps_down,elevator_rides,stairs_climb_m,stairs_descent_m,"
+           "gait_strides,gait_stride_time_s,gait_stride_length_m,gait_cadence_spm,gait_stance_pct,gait_swing_pct,"
+           "gait_clearance_m,merged_movements,warnings\n";
     out << s.samples << ',';
     put(out, s.duration_s, ',');
     out << s.stancePhases << ',' << s.steps << ',';
@@ -199,7 +230,14 @@ void writeSummaryCsv(std::ostream& out, const Summary& s)
     put(out, s.runtime_s, ',');
     out << s.stairStepsUp << ',' << s.stairStepsDown << ',' << s.elevatorRides << ',';
     put(out, s.stairsClimb_m, ',');
-    put(out, s.stairsDescent_m, '\n');
+    put(out, s.stairsDescent_m, ',');
+    out << g.strides << ',';
+    if (g.straightStrides == 0)
+        out << ",,,,,,";  // no stride to average: empty cells, not zeros
+    else
+        for (const double figure : {g.strideTime_s, g.strideLength_m, g.cadence_spm, g.stancePct, g.swingPct, g.clearance_m})
+            put(out, figure, ',');
+    out << result.mergedMovements.size() << ',' << result.warnings.size() << '\n';
 }
 
 void writeParametersCsv(std::ostream& out, const Parameters& params)

@@ -17,21 +17,26 @@ namespace footpath {
 void writeTrajectoryCsv(std::ostream& out, const Result& result);
 /// Steps CSV: step,stance_start_s,stance_end_s,x_m,y_m,z_m,stride_length_m,stride_duration_s,
 /// motion,baro_height_m,heel_strike_s,toe_off_s,gait_stance_pct,swing_pct,clearance_m,turning
-/// (step: the stance phase, numbered from 1; motion: motionClassName; baro_height_m empty without
+/// (step: the stance phase, numbered from 1; the stride columns empty for step 1, which no stride
+/// leads to; motion: motionClassName; baro_height_m empty without
 /// a barometer; the gait columns describe the gait stride whose heel strike to toe off holds the
 /// step's stance, empty when none does; turning 1 or 0).
 void writeStepsCsv(std::ostream& out, const Result& result);
 /// Summary as a header row and one value row; the motion-class counts and climbs follow the
-/// figures of every recording.
-void writeSummaryCsv(std::ostream& out, const Summary& summary);
+/// figures of every recording, then the gait figures (gait_*: the gait section's means, empty
+/// cells without a stride to average), the count of merged movements and of warnings.
+void writeSummaryCsv(std::ostream& out, const Result& result);
 /// Every parameter: name,value,unit,default,differs_from_default,group,description.
 void writeParametersCsv(std::ostream& out, const Parameters& params);
 /// Summary as one JSON object (samples, duration_s, steps, path_length_m, end_to_start_m, ...),
 /// then "motion" (stair_steps_up, stair_steps_down, elevator_rides, stairs_climb_m,
-/// stairs_descent_m), "warnings": the plausibility warnings as {kind, start_s, end_s, message}
-/// objects, and "method_notes": what the methods skipped, as {method, start_s, end_s, message}.
-std::string summaryToJson(const Summary& summary, const std::vector<PlausibilityWarning>& warnings = {},
-                          const std::vector<MethodNote>& methodNotes = {});
+/// stairs_descent_m), "gait" (strides, straight_strides, turning_strides and the means:
+/// stride_time_s, stride_length_m, cadence_spm, stance_pct, swing_pct, clearance_m),
+/// "merged_movements": the movements between stances that were no stride, as {start_s, end_s,
+/// displacement_m, peak_rate_radps}, "warnings": the plausibility warnings as {kind, start_s,
+/// end_s, message} objects, and "method_notes": what the methods skipped, as {method, start_s,
+/// end_s, message}.
+std::string summaryToJson(const Result& result);
 
 /// Writes through a temporary file that is renamed at the end, so a failed write never leaves a
 /// truncated file behind. Returns an error naming the path, or empty.

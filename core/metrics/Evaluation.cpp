@@ -191,6 +191,32 @@ StanceScore scoreStanceDetection(const std::vector<std::uint8_t>& stance, const 
     return score;
 }
 
+StrideCount countStrides(const Result& result, const std::vector<SampleRange>& swings,
+                         const SampleRange* trialBoundaries)
+{
+    StrideCount count;
+    if (swings.empty() || result.time_s.empty())
+        return count;
+    SampleRange trial{swings.front().first, swings.front().last};
+    for (const SampleRange& swing : swings) {
+        trial.first = std::min(trial.first, swing.first);
+        trial.last = std::max(trial.last, swing.last);
+    }
+    if (trialBoundaries)
+        trial = *trialBoundaries;
+    for (const SampleRange& swing : swings)
+        count.labelled += swing.first >= trial.first && swing.last <= trial.last;
+    const std::size_t lastSample = result.time_s.size() - 1;
+    const double from_s = result.time_s[std::min(trial.first, lastSample)];
+    const double to_s = result.time_s[std::min(trial.last, lastSample)];
+    for (std::size_t i = 1; i < result.steps.size(); ++i) {
+        const double swing_s = 0.5 * (result.steps[i - 1].stanceEnd_s + result.steps[i].stanceStart_s);
+        count.detected += swing_s >= from_s && swing_s <= to_s;
+    }
+    count.error = static_cast<long>(count.detected) - static_cast<long>(count.labelled);
+    return count;
+}
+
 EventTimingScore scoreEventTiming(const std::vector<double>& detected_s, const std::vector<double>& reference_s,
                                   double windowStart_s, double windowEnd_s, double missTolerance_s)
 {

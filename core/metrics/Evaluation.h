@@ -61,6 +61,18 @@ struct StanceScore {
 StanceScore scoreStanceDetection(const std::vector<std::uint8_t>& stance, const std::vector<SampleRange>& swings,
                                  const SampleRange* trialBoundaries = nullptr);
 
+/// Section 4's step-count error, on the strides the user sees (the steps after their merging, not
+/// the detector's raw stance runs, which a flicker splits): the strides whose swing (the middle
+/// between a step's stance and the one before) lies inside the trial, against the labelled swings
+/// inside it. Without trial boundaries, the span of the labelled swings stands for the trial.
+struct StrideCount {
+    std::size_t detected = 0;
+    std::size_t labelled = 0;
+    long error = 0;  ///< detected - labelled
+};
+StrideCount countStrides(const Result& result, const std::vector<SampleRange>& swings,
+                         const SampleRange* trialBoundaries = nullptr);
+
 /// Section 4, gait events: how far detected events lie from hand-labelled ones. For every reference
 /// event inside the window, the error is the distance to the nearest detected event (a missed
 /// event counts with the distance to the next one found, so misses raise the figures).

@@ -249,14 +249,15 @@ void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSamp
     result.errorStd.push_back(ekf.covariance().diagonal().cwiseMax(0.0).cwiseSqrt().cast<float>());
 }
 
-bool appendStep(Result& result, std::size_t first, std::size_t last)
+bool appendStep(Result& result, std::size_t first, std::size_t last, double peakRateBefore_radps)
 {
     Step step = makeStep(result, first, last);
     bool merged = false;
     if (!result.steps.empty()) {
         const Step& previous = result.steps.back();
-        if (result.time_s[first] - previous.stanceEnd_s <= kStanceMergeGap_s
-            && horizontalDistance(step.position_m, previous.position_m) <= kStanceMergeDistance_m) {
+        const double moved_m = (step.position_m - previous.position_m).norm();  // a stair step may rise more than it goes
+        if (moved_m < kMinStrideDistance_m || peakRateBefore_radps < kMinSwingRate_radps) {
+            result.mergedMovements.push_back({previous.stanceEnd_s, step.stanceStart_s, moved_m, peakRateBefore_radps});
             first = static_cast<std::size_t>(
                 std::lower_bound(result.time_s.begin(), result.time_s.end(), previous.stanceStart_s) - result.time_s.begin());
             result.steps.pop_back();
@@ -286,19 +287,24 @@ void summarize(Result& result, double pathLength_m)
     summary.endToStartPct = closure.dbsePct;
 }
 
-void fillStepsAndSummary(Result& result)
+void fillStepsAndSummary(Result& result, const std::vector<ImuSample>& samples)
 {
     const std::vector<std::uint8_t>& stance = result.flags.stance;
     result.steps.clear();
+    result.mergedMovements.clear();
+    double peakRate_radps = 0.0;  // of the samples since the last stance phase
     for (std::size_t k = 0; k < stance.size();) {
         if (!stance[k]) {
+            if (k < samples.size())
+                peakRate_radps = std::max(peakRate_radps, samples[k].gyr_radps.norm());
             ++k;
             continue;
         }
         std::size_t end = k;
         while (end < stance.size() && stance[end])
             ++end;
-        appendStep(result, k, end);
+        appendStep(result, k, end, peakRate_radps);
+        peakRate_radps = 0.0;
         k = end;
     }
     summarize(result, stancePathLength(result.steps));
@@ -306,7 +312,7 @@ void fillStepsAndSummary(Result& result)
 
 void postProcess(const Recording& recording, const Parameters& params, Result& result, GaitRates gaitRates)
 {
-    fillStepsAndSummary(result);
+    fillStepsAndSummary(result, recording.samples);
     detectGaitEvents(recording, std::move(gaitRates), result);
     classifyMotion(recording, params, result);
     result.warnings = checkPlausibility(result, params);

@@ -74,8 +74,9 @@ std::optional<RtsSmoother> smootherFor(const std::vector<ImuSample>& samples, co
 void recordState(Result& result, double time_s, const NavState& state);
 
 /// Stance phases of the result as steps (stance times, mean stance position, stride) and the summary
-/// figures that depend on them. Exposed for tests; runPipeline calls it.
-void fillStepsAndSummary(Result& result);
+/// figures that depend on them; samples are the recording's (their angular rate tells a swing from
+/// a weight shift, appendStep). Exposed for tests; runPipeline calls it.
+void fillStepsAndSummary(Result& result, const std::vector<ImuSample>& samples);
 
 /// What runPipeline derives from the filter's (or smoother's) states and stance flags in result:
 /// the steps and summary, the gait events, the motion classes and the plausibility warnings.
@@ -100,16 +101,20 @@ void filterSample(ErrorStateEkf& ekf, MeasurementSources& sources, const ImuSamp
                   std::optional<double> previousTime_s, const SampleStanceFlags& flags, Result& result);
 
 /// Appends the stance phase of samples [first, last) of result as a step, with its stride from the
-/// previous step; or, when it begins within kStanceMergeGap_s of the previous step's end no more
-/// than kStanceMergeDistance_m from it, extends that step over both (a stance the detector
-/// flickered out of for a moment is one stance, not a stride of a few millimetres). Returns true
+/// previous step; or, when the movement since the previous step was no stride (it moved the foot
+/// less than kMinStrideDistance_m, or its highest angular rate, peakRateBefore_radps, stayed under
+/// kMinSwingRate_radps), extends that step over both and lists the movement in
+/// result.mergedMovements. A weight shift while standing or a moment the detector lost the stance
+/// is no stride: counted as one it would add a stride of millimetres lasting seconds. Returns true
 /// when it merged. Summary fields are left alone.
-bool appendStep(Result& result, std::size_t first, std::size_t last);
+bool appendStep(Result& result, std::size_t first, std::size_t last, double peakRateBefore_radps);
 
-/// A stance resumed this soon after the previous one ended ...
-constexpr double kStanceMergeGap_s = 0.2;
-/// ... this close to it is the same stance (a real stride takes longer and goes further).
-constexpr double kStanceMergeDistance_m = 0.1;
+/// A stride moves the foot at least this far (in 3D: a step up a stair may rise more than it goes) ...
+constexpr double kMinStrideDistance_m = 0.1;
+/// ... and turns it faster than this at some moment of its swing. A walking swing peaks at 3-20
+/// rad/s, the slowest shuffles of the shared walks at 1.6 rad/s; shifting the weight while standing
+/// stays under 1.1 rad/s.
+constexpr double kMinSwingRate_radps = 1.0;
 
 /// Sets every summary field but runtime_s from the samples and steps so far, with the given path
 /// length (the sum of the steps' stride lengths). Constant time; result must hold a sample.

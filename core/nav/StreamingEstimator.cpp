@@ -73,6 +73,7 @@ struct StreamingEstimator::Impl {
     MeasurementSources sources{params};
     std::optional<double> previousTime_s;  ///< of the last estimated sample
     std::optional<std::size_t> stancePhaseStart;  ///< index in result of the open stance phase
+    double peakRateSinceStance_radps = 0.0;  ///< of the samples since the last stance phase (appendStep)
     double pathLength_m = 0.0;  ///< sum of the strides so far (stancePathLength, kept running)
     Result result;
 };
@@ -174,6 +175,8 @@ void StreamingEstimator::Impl::estimate(const ImuSample& sample, const SampleSta
     appendFlags(result.flags, flags);
     previousTime_s = sample.time_s;
     const std::size_t k = result.time_s.size() - 1;
+    if (!flags.stance)
+        peakRateSinceStance_radps = std::max(peakRateSinceStance_radps, sample.gyr_radps.norm());
     if (flags.stance && !stancePhaseStart)
         stancePhaseStart = k;
     else if (!flags.stance && stancePhaseStart)
@@ -191,11 +194,12 @@ void StreamingEstimator::Impl::hold(const ImuSample& sample, const SampleStanceF
 void StreamingEstimator::Impl::closeStancePhase(std::size_t end)
 {
     // Summed as stancePathLength sums, so live and offline agree to the last bit.
-    if (appendStep(result, *stancePhaseStart, end))
+    if (appendStep(result, *stancePhaseStart, end, peakRateSinceStance_radps))
         pathLength_m = stancePathLength(result.steps);
     else
         pathLength_m += result.steps.back().strideLength_m;
     stancePhaseStart.reset();
+    peakRateSinceStance_radps = 0.0;
 }
 
 StreamingEstimator::StreamingEstimator(const Parameters& params)
