@@ -150,6 +150,8 @@ private slots:
     void gait_pairsTheFeetByNameAndReportsDoubleSupport();
     void gait_refusesAnythingButOneWalksTwoFeet();
     void screenshotOfAHeaderlessFile_finishes();
+    void screenshotOfAFolderWithoutAPair_endsWithTheReason();
+    void guiUnknownView_namesTheNearest();
     void guiHelpAndVersion_needNoDisplay_data();
     void guiHelpAndVersion_needNoDisplay();
 
@@ -1096,6 +1098,27 @@ void TestCli::counts_printAsIntegers()
              qPrintable(process.out));
 }
 
+namespace {
+
+/// The workspace run offscreen with the arguments, its own settings and presets; the exit code
+/// (-1 when it had not ended after 60 s) and what it wrote to stderr.
+std::pair<int, QString> runGui(const QString& gui, const QString& work, const QStringList& arguments)
+{
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    environment.insert(QStringLiteral("XDG_CONFIG_HOME"), QDir(work).filePath(QStringLiteral("config")));
+    environment.insert(QStringLiteral("FOOTPATH_IMPORT_PRESETS"), QDir(work).filePath(QStringLiteral("presets")));
+    process.setProcessEnvironment(environment);
+    process.start(gui, arguments);
+    const bool finished = process.waitForFinished(60000);
+    if (!finished)
+        process.kill();
+    return {finished ? process.exitCode() : -1, QString::fromLocal8Bit(process.readAllStandardError())};
+}
+
+}  // namespace
+
 void TestCli::screenshotOfAHeaderlessFile_finishes()
 {
     // The workspace beside footpath-cli: a screenshot run needs no user even when the file needs
@@ -1115,17 +1138,7 @@ void TestCli::screenshotOfAHeaderlessFile_finishes()
     const QString prose = work.filePath(QStringLiteral("notes.txt"));
     QVERIFY(writeFile(prose, "A walk around the block.\nNothing else to say.\n"));
     const auto screenshot = [&](const QString& file, const QString& png) {
-        QProcess process;
-        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-        environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-        environment.insert(QStringLiteral("XDG_CONFIG_HOME"), work.filePath(QStringLiteral("config")));
-        environment.insert(QStringLiteral("FOOTPATH_IMPORT_PRESETS"), work.filePath(QStringLiteral("presets")));
-        process.setProcessEnvironment(environment);
-        process.start(gui, {file, QStringLiteral("--screenshot"), png});
-        const bool finished = process.waitForFinished(60000);
-        if (!finished)
-            process.kill();
-        return std::make_pair(finished ? process.exitCode() : -1, QString::fromLocal8Bit(process.readAllStandardError()));
+        return runGui(gui, work.path(), {file, QStringLiteral("--screenshot"), png});
     };
     const QString png = work.filePath(QStringLiteral("shot.png"));
     const auto [guessed, guessedErr] = screenshot(headerless, png);
@@ -1134,6 +1147,43 @@ void TestCli::screenshotOfAHeaderlessFile_finishes()
     const auto [refused, refusedErr] = screenshot(prose, work.filePath(QStringLiteral("prose.png")));
     QVERIFY2(refused == kExitBadInput, qPrintable(refusedErr));
     QVERIFY2(refusedErr.contains(QStringLiteral("does not look like sensor data")), qPrintable(refusedErr));
+}
+
+void TestCli::screenshotOfAFolderWithoutAPair_endsWithTheReason()
+{
+    // It waited forever for a result that a folder without a left/right pair never gives.
+    const QString gui = QFileInfo(QString::fromUtf8(FOOTPATH_CLI)).dir().filePath(QStringLiteral("footpath"));
+    if (!QFileInfo(gui).isExecutable())
+        QSKIP("the footpath binary is not built");
+    QTemporaryDir work;
+    const QString folder = work.filePath(QStringLiteral("walks"));
+    QVERIFY(QDir().mkpath(folder));
+    QVERIFY(QFile::copy(walkCsv_, QDir(folder).filePath(QStringLiteral("only-one.csv"))));
+    const QString png = work.filePath(QStringLiteral("shot.png"));
+    const auto [code, err] = runGui(gui, work.path(), {folder, QStringLiteral("--screenshot"), png});
+    QVERIFY2(code == kExitBadInput, qPrintable(QStringLiteral("exit %1: %2").arg(code).arg(err)));
+    QVERIFY2(err.contains(QStringLiteral("footpath: ")) && err.size() > 20, qPrintable(err));
+    QVERIFY(!QFileInfo::exists(png));
+}
+
+void TestCli::guiUnknownView_namesTheNearest()
+{
+    // "--view trajectory" exited 0 without a word.
+    const QString gui = QFileInfo(QString::fromUtf8(FOOTPATH_CLI)).dir().filePath(QStringLiteral("footpath"));
+    if (!QFileInfo(gui).isExecutable())
+        QSKIP("the footpath binary is not built");
+    QTemporaryDir work;
+    const auto [code, err] = runGui(gui, work.path(), {walkCsv_, QStringLiteral("--view"), QStringLiteral("trajectory"),
+                                                        QStringLiteral("--screenshot"), work.filePath("x.png")});
+    QCOMPARE(code, kExitBadInput);
+    QVERIFY2(err.contains(QStringLiteral("unknown view 'trajectory'; did you mean trajectory2d")), qPrintable(err));
+    QVERIFY2(err.contains(QStringLiteral("summary, steps, gait")), qPrintable(err));
+    // The summary's views exist now: a screenshot with the gait charts in front finishes.
+    const QString png = work.filePath(QStringLiteral("gait.png"));
+    const auto [shown, shownErr] = runGui(gui, work.path(), {walkCsv_, QStringLiteral("--view"), QStringLiteral("gait"),
+                                                              QStringLiteral("--screenshot"), png});
+    QVERIFY2(shown == 0, qPrintable(shownErr));
+    QVERIFY(QFileInfo(png).size() > 0);
 }
 
 void TestCli::guiHelpAndVersion_needNoDisplay_data()

@@ -1,6 +1,7 @@
 // The whole pipeline on simulated walks with known truth.
 #include "metrics/Evaluation.h"
 #include "nav/Pipeline.h"
+#include "nav/Plausibility.h"
 #include "sim/WalkSimulator.h"
 
 #include <QtTest>
@@ -180,6 +181,25 @@ private slots:
         fillStepsAndSummary(drifted, samplesTurningAt(rate));
         QCOMPARE(drifted.summary.steps, std::size_t(1));
         QVERIFY(drifted.mergedMovements[0].displacement_m > kMinStrideDistance_m);
+    }
+
+    void aStrideWarningNamesTheStepTheTableShows()
+    {
+        // "Stride 2 is 11.66 m long" flagged the table's step 3: the warning counted strides from
+        // 1 while the step table, the steps CSV and the report number steps (stances) from 1.
+        const SimulatedWalk walk = simulateWalk(straightLinePath(20.0), WalkSimulatorConfig());
+        Result result = run(walk.recording);
+        QVERIFY(result.steps.size() > 5);
+        const std::size_t index = 3;  // the table's step 4
+        result.steps[index].strideLength_m = 11.66;
+        const std::vector<PlausibilityWarning> warnings = checkPlausibility(result, Parameters());
+        const auto found = std::find_if(warnings.begin(), warnings.end(), [](const PlausibilityWarning& w) {
+            return w.kind == PlausibilityWarning::Kind::StrideLength;
+        });
+        QVERIFY(found != warnings.end());
+        QVERIFY2(found->message.rfind("The stride to step 4 is 11.66 m long", 0) == 0, found->message.c_str());
+        QCOMPARE(found->start_s, result.steps[index - 1].stanceEnd_s);
+        QCOMPARE(found->end_s, result.steps[index].stanceStart_s);
     }
 
     void closedRectangleOfHundredMetresClosesWithinHalfPercent()

@@ -1,6 +1,8 @@
 #include "SummaryPanel.h"
+#include "TestData.h"
 #include "WarningOverlay.h"
 #include "gait/GaitEvents.h"
+#include "io/Import.h"
 #include "nav/Pipeline.h"
 #include "sim/WalkSimulator.h"
 
@@ -94,7 +96,7 @@ std::shared_ptr<const Result> withWarnings(std::size_t& markedStep)
     const Step& step = result->steps[markedStep];
     result->warnings = {
         {PlausibilityWarning::Kind::StanceRatio, 1.0, result->time_s.back(), "The foot is at rest 90 % of the time."},
-        {PlausibilityWarning::Kind::StrideLength, previous.stanceEnd_s, step.stanceStart_s, "Stride 7 is 4.20 m long."},
+        {PlausibilityWarning::Kind::StrideLength, previous.stanceEnd_s, step.stanceStart_s, "The stride to step 8 is 4.20 m long."},
     };
     return result;
 }
@@ -364,6 +366,47 @@ private slots:
         QCOMPARE(score.detectedPhases, score.referencePhases);
         QVERIFY2(score.precision > 0.95, qPrintable(QString::number(score.precision)));
         QVERIFY(figureText(panel, "stanceF1").contains(QLocale().toString(score.f1, 'f', 3)));
+    }
+
+    void labelledWalkShowsTheGaitStanceFirstAndSaysWhatWasMerged()
+    {
+        // The shared IPOL walk whose first "stride" was a weight shift (0.006 m lasting 4.6 s):
+        // against its labels the summary showed ZUPT precision / recall / F1 1.000 / 0.26 / 0.41
+        // with no word, and a stride count that was not the labelled swings'.
+        FOOTPATH_REQUIRE_DATASETS();
+        ImportResult read = importRecording(datasetPath("xsens-mtw-ipol/1-1_lf.txt").toStdString());
+        QVERIFY(read.ok());
+        auto recording = std::make_shared<const Recording>(std::move(read.recording));
+        const auto result = std::make_shared<const Result>(runPipeline(*recording, Parameters()).result);
+        SummaryPanel panel;
+        panel.setRecording(recording);
+        panel.setResult(result);
+        // The gait lab's figure comes first, and each row says what it compares.
+        QVERIFY(figureShown(panel, "gaitStance"));
+        const QStringList gaitFigures = figureText(panel, "gaitStance").split(QStringLiteral(" / "));
+        QCOMPARE(gaitFigures.size(), 3);
+        QVERIFY2(QLocale().toDouble(gaitFigures[2]) > 0.95, qPrintable(figureText(panel, "gaitStance")));
+        auto* gaitName = panel.findChild<QLabel*>(QStringLiteral("figureName_gaitStance"));
+        auto* restName = panel.findChild<QLabel*>(QStringLiteral("figureName_stanceF1"));
+        QVERIFY(gaitName && restName);
+        QVERIFY(gaitName->y() < restName->y());
+        QVERIFY(restName->text().contains(QStringLiteral("ZUPT")));
+        QVERIFY(restName->toolTip().contains(QStringLiteral("low by design")));
+        // Strides against the labelled swings of the trial: equal.
+        const StrideCount strides = *panel.statistics().strideCount;
+        QCOMPARE(strides.labelled, std::size_t(17));
+        QCOMPARE(strides.detected, strides.labelled);
+        QCOMPARE(figureText(panel, "stancePhases"), QStringLiteral("17 detected, 17 labelled swings"));
+        // The standing's weight shifts were merged into their stances, and the count says so.
+        QVERIFY(!result->mergedMovements.empty());
+        QVERIFY(result->mergedMovements.front().displacement_m < 0.02);
+        QVERIFY(result->mergedMovements.front().end_s - result->mergedMovements.front().start_s > 0.4);
+        QVERIFY2(figureText(panel, "strides").contains(QStringLiteral("merged")), qPrintable(figureText(panel, "strides")));
+        auto* count = panel.findChild<QLabel*>(QStringLiteral("figure_strides"));
+        QVERIFY(count->toolTip().contains(QStringLiteral("shifting the weight")));
+        QCOMPARE(result->summary.steps, std::size_t(17));
+        for (std::size_t i = 1; i < result->steps.size(); ++i)
+            QVERIFY2(result->steps[i].strideLength_m > kMinStrideDistance_m * 0.5, qPrintable(QString::number(i)));
     }
 
     void aResultOfAnotherRecordingIsNotEvaluated()

@@ -9,6 +9,7 @@
 #include "TrajectoryView2D.h"
 #include "TrajectoryView3D.h"
 #include "WarningOverlay.h"
+#include "nav/Pipeline.h"
 #include "nav/MethodSets.h"
 
 #include <QCoreApplication>
@@ -242,11 +243,17 @@ std::pair<QVector<double>, QVector<double>> histogramBars(const std::vector<doub
     return {centres, counts};
 }
 
-QList<QStringList> summaryRows(const GaitStatistics& g, const Summary& s)
+QList<QStringList> summaryRows(const GaitStatistics& g, const Summary& s, std::size_t mergedMovements)
 {
     QList<QStringList> rows{{tr("Figure"), tr("Value")}};
     rows << QStringList{tr("Path length (between stances)"), tr("%1 m").arg(formatFigure(g.pathLength_m, 2))}
-         << QStringList{tr("Steps (strides of this foot)"), QString::number(s.steps)}
+         << QStringList{tr("Steps (strides of this foot)"),
+                        mergedMovements == 0
+                            ? QString::number(s.steps)
+                            : tr("%1 (%2 movements without a swing, under %3 m or %4 rad/s, merged into their stances)")
+                                  .arg(s.steps)
+                                  .arg(mergedMovements)
+                                  .arg(formatFigure(kMinStrideDistance_m, 2), formatFigure(kMinSwingRate_radps, 1))}
          << QStringList{tr("Cadence, both feet"), tr("%1 steps/min").arg(formatFigure(g.cadence_stepsPerMin, 1))}
          << QStringList{tr("Mean stride length"),
                         tr("%1 m (sd %2 m)").arg(formatFigure(g.meanStrideLength_m, 3), formatFigure(g.strideLengthStd_m, 3))}
@@ -265,11 +272,21 @@ QList<QStringList> summaryRows(const GaitStatistics& g, const Summary& s)
                             tr("%1 m = %2 % of %3 m").arg(formatFigure(g.distanceError->error_m, 3),
                                                          formatFigure(g.distanceError->errorPct, 2),
                                                          formatFigure(g.distanceError->reference_m, 2))};
+    const auto scores = [](const StanceScore& score) {
+        return QStringLiteral("%1 / %2 / %3").arg(formatFigure(score.precision, 3), formatFigure(score.recall, 3),
+                                                  formatFigure(score.f1, 3));
+    };
+    if (g.gaitStanceScore)
+        rows << QStringList{tr("Gait stance (heel strike to toe off) against the labels: precision / recall / F1"),
+                            scores(*g.gaitStanceScore)};
+    if (g.strideCount)
+        rows << QStringList{tr("Strides in the labelled trial"), tr("%1 detected, %2 labelled swings")
+                                                                     .arg(g.strideCount->detected)
+                                                                     .arg(g.strideCount->labelled)};
     if (g.stanceScore)
-        rows << QStringList{tr("Stance detection precision / recall / F1"),
-                            QStringLiteral("%1 / %2 / %3").arg(formatFigure(g.stanceScore->precision, 3),
-                                                               formatFigure(g.stanceScore->recall, 3),
-                                                               formatFigure(g.stanceScore->f1, 3))};
+        rows << QStringList{tr("Foot at rest (ZUPT) against the labelled stance: precision / recall / F1 (the foot "
+                               "rests only mid-stance: a low recall is expected)"),
+                            scores(*g.stanceScore)};
     return rows;
 }
 
@@ -644,7 +661,9 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
     page.paragraph(QFileInfo(content.recordingPath).fileName(), 11.0);
     page.table(headerRows(content), {0.3, 0.7}, 9.0, false);
     page.heading(tr("Summary"));
-    page.table(summaryRows(computeGaitStatistics(*content.result, content.recording.get()), content.result->summary),
+    const Result& result = *content.result;
+    page.table(summaryRows(computeGaitStatistics(result, content.recording.get()), result.summary,
+                           result.mergedMovements.size()),
                {0.5, 0.5}, 9.0);
     if (const QString motion = motionCountsSentence(*content.result); !motion.isEmpty())
         page.paragraph(MotionLanes::tr("Motion (barometer): %1.").arg(motion));

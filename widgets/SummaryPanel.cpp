@@ -4,6 +4,7 @@
 #include "PlotInteraction.h"
 #include "WarningOverlay.h"
 #include "gait/GaitEvents.h"
+#include "nav/Pipeline.h"
 
 #include <QAbstractTableModel>
 #include <QApplication>
@@ -98,9 +99,13 @@ void addReferenceEvaluation(const Result& result, const Recording& recording, Ga
         stats.loopClosure = computeLoopClosure(result.position_m, result.summary.pathLength_m, reference.knownLength_m);
     if (reference.knownLength_m > 0.0)
         stats.distanceError = computeDistanceError(result.summary.pathLength_m, reference.knownLength_m);
-    if (!reference.swings.empty() && result.flags.stance.size() == recording.samples.size())
-        stats.stanceScore = scoreStanceDetection(result.flags.stance, reference.swings,
-                                                 reference.hasTrialBoundaries ? &reference.trialBoundaries : nullptr);
+    if (reference.swings.empty() || result.flags.stance.size() != recording.samples.size())
+        return;
+    const SampleRange* trial = reference.hasTrialBoundaries ? &reference.trialBoundaries : nullptr;
+    stats.stanceScore = scoreStanceDetection(result.flags.stance, reference.swings, trial);
+    stats.strideCount = countStrides(result, reference.swings, trial);
+    if (result.gaitStance.size() == recording.samples.size())
+        stats.gaitStanceScore = scoreStanceDetection(result.gaitStance, reference.swings, trial);
 }
 
 /// The smallest 1, 2, 2.5 or 5 times a power of ten that is at least width.
@@ -428,6 +433,17 @@ SummaryPanel::SummaryPanel(QWidget* parent) : QWidget(parent)
 
 SummaryPanel::~SummaryPanel() = default;
 
+bool SummaryPanel::showTab(const QString& name)
+{
+    static const QStringList names{QStringLiteral("steps"), QStringLiteral("per-step"), QStringLiteral("distributions"),
+                                   QStringLiteral("gait")};  // in the order of the tabs
+    const qsizetype index = names.indexOf(name);
+    if (index < 0)
+        return false;
+    tabs_->setCurrentIndex(int(index));
+    return true;
+}
+
 QWidget* SummaryPanel::createFigures()
 {
     auto* walk = createFigureGroup(tr("Walk"), {{"pathLength", tr("Path length")},
@@ -442,10 +458,22 @@ QWidget* SummaryPanel::createFigures()
                                                                       {"armse3d", tr("ARMSE 3D")},
                                                                       {"loopClosure", tr("Loop closure")},
                                                                       {"distanceError", tr("Distance error")},
-                                                                      {"stancePrecision", tr("Stance precision")},
-                                                                      {"stanceRecall", tr("Stance recall")},
-                                                                      {"stanceF1", tr("Stance F1")},
-                                                                      {"stancePhases", tr("Stance phases")}});
+                                                                      {"gaitStance", tr("Gait stance P / R / F1")},
+                                                                      {"stancePhases", tr("Strides in the trial")},
+                                                                      {"stancePrecision", tr("At rest (ZUPT) precision")},
+                                                                      {"stanceRecall", tr("At rest (ZUPT) recall")},
+                                                                      {"stanceF1", tr("At rest (ZUPT) F1")}});
+    const QString gaitStanceTip = tr("The gait events' stance (heel strike to toe off) against the labelled one, "
+                                     "sample by sample: precision, recall and F1. This is the figure to compare "
+                                     "with a gait lab's labels.");
+    const QString restTip = tr("The detector's foot at rest (the zero-velocity updates) against the labelled "
+                               "stance. The foot rests only in the middle of its stance, so the recall is low by "
+                               "design; the precision says no swing was taken for rest.");
+    figures_.at("gaitStance").name->setToolTip(gaitStanceTip);
+    figures_.at("stancePhases").name->setToolTip(tr("Strides whose swing lies inside the labelled trial, "
+                                                    "against the labelled swings there"));
+    for (const char* key : {"stancePrecision", "stanceRecall", "stanceF1"})
+        figures_.at(key).name->setToolTip(restTip);
     gaitGroup_ = createFigureGroup(tr("Gait (heel strike to toe off)"),
                                    {{"gaitStrides", tr("Strides")},
                                     {"gaitStrideTime", tr("Stride time")},
@@ -627,6 +655,7 @@ QGroupBox* SummaryPanel::createFigureGroup(const QString& title, const std::vect
     for (const auto& [key, name] : rows) {
         FigureRow row{new QLabel(name), new QLabel};
         row.value->setObjectName(QStringLiteral("figure_") + key);
+        row.name->setObjectName(QStringLiteral("figureName_") + key);
         row.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         row.value->setTextInteractionFlags(Qt::TextSelectableByMouse);
         // As wide as the longest figure, so none is clipped whatever the first result shows.
@@ -858,6 +887,24 @@ void SummaryPanel::setFigure(const QString& key, const QString& text)
     row.value->setText(text);
 }
 
+/// What the stride count left out and why, for the tooltip of the count (empty when nothing was merged).
+QString SummaryPanel::mergedMovementsText(const std::vector<MergedMovement>& merged)
+{
+    if (merged.empty())
+        return {};
+    QStringList lines{tr("Movements between stances that were no stride (under %1 m, or never turning at a "
+                         "swing's %2 rad/s: shifting the weight while standing), merged into one stance:")
+                          .arg(number(kMinStrideDistance_m, 2), number(kMinSwingRate_radps, 1))};
+    constexpr std::size_t kListed = 12;
+    for (std::size_t i = 0; i < std::min(merged.size(), kListed); ++i)
+        lines << tr("%1-%2 s: %3 m, at most %4 rad/s")
+                     .arg(number(merged[i].start_s, 2), number(merged[i].end_s, 2), number(merged[i].displacement_m, 3),
+                          number(merged[i].peakRate_radps, 2));
+    if (merged.size() > kListed)
+        lines << tr("... and %1 more").arg(merged.size() - kListed);
+    return lines.join(QLatin1Char('\n'));
+}
+
 void SummaryPanel::showWalkFigures()
 {
     const GaitStatistics& s = statistics_;
@@ -867,7 +914,10 @@ void SummaryPanel::showWalkFigures()
         return;
     }
     setFigure("pathLength", tr("%1 m").arg(number(s.pathLength_m, 2)));
-    setFigure("strides", tr("%1 / %2").arg(s.stancePhases).arg(s.strides));
+    const std::size_t merged = result_->mergedMovements.size();
+    setFigure("strides", merged == 0 ? tr("%1 / %2").arg(s.stancePhases).arg(s.strides)
+                                     : tr("%1 / %2 (%3 merged: no swing)").arg(s.stancePhases).arg(s.strides).arg(merged));
+    figures_.at("strides").value->setToolTip(mergedMovementsText(result_->mergedMovements));
     setFigure("duration", tr("%1 s").arg(number(s.duration_s, 1)));
     setFigure("cadence", tr("%1 steps/min (%2 strides/min)")
                              .arg(number(s.cadence_stepsPerMin, 0), number(s.strideRate_perMin, 1)));
@@ -937,6 +987,7 @@ void SummaryPanel::showReferenceFigures()
     showRow("distanceError", s.distanceError.has_value());
     for (const char* key : {"stancePrecision", "stanceRecall", "stanceF1", "stancePhases"})
         showRow(key, s.stanceScore.has_value());
+    showRow("gaitStance", s.gaitStanceScore.has_value());
     referenceGroup_->setVisible(s.armse || s.loopClosure || s.distanceError || s.stanceScore);
 
     if (s.armse) {
@@ -956,10 +1007,13 @@ void SummaryPanel::showReferenceFigures()
         setFigure("stancePrecision", number(score.precision, 3));
         setFigure("stanceRecall", number(score.recall, 3));
         setFigure("stanceF1", number(score.f1, 3));
-        setFigure("stancePhases", tr("%1 detected, %2 labelled")
-                                      .arg(score.detectedPhases)
-                                      .arg(score.referencePhases));
     }
+    if (s.strideCount)
+        setFigure("stancePhases", tr("%1 detected, %2 labelled swings").arg(s.strideCount->detected).arg(s.strideCount->labelled));
+    if (s.gaitStanceScore)
+        setFigure("gaitStance", tr("%1 / %2 / %3")
+                                    .arg(number(s.gaitStanceScore->precision, 3), number(s.gaitStanceScore->recall, 3),
+                                         number(s.gaitStanceScore->f1, 3)));
     QStringList notes;
     if (recording_ && referenceGroup_->isVisibleTo(this))
         for (const std::string& note : recording_->reference.notes)

@@ -57,7 +57,9 @@ struct GaitStatistics {
     std::optional<ArmseResult> armse;           ///< reference position at every sample
     std::optional<LoopClosure> loopClosure;     ///< walk ends where it started
     std::optional<DistanceError> distanceError; ///< known walked length
-    std::optional<StanceScore> stanceScore;     ///< hand-labelled gait events
+    std::optional<StanceScore> gaitStanceScore; ///< hand-labelled gait events: heel strike to toe off
+    std::optional<StanceScore> stanceScore;     ///< the same labels: the foot at rest (ZUPT flag)
+    std::optional<StrideCount> strideCount;     ///< strides against the labelled swings
 };
 
 /// recording may be null; it must be the recording result was estimated from (its reference is
@@ -109,6 +111,9 @@ public:
     bool isShowingLive() const { return live_; }
     /// Forgets the recorded walk (and shows nothing, unless the live session is shown).
     void clear();
+    /// Brings one of the tabs below the figures to the front: "steps", "per-step", "distributions"
+    /// or "gait". Returns false for any other name.
+    bool showTab(const QString& name);
 
     const GaitStatistics& statistics() const { return statistics_; }
 
@@ -147,6 +152,7 @@ private:
 
     void refresh();
     void showWalkFigures();
+    static QString mergedMovementsText(const std::vector<MergedMovement>& merged);
     void showGaitFigures();
     void showBothFeetFigures();
     void showReferenceFigures();

@@ -22,6 +22,7 @@
 #include "TuneFolderDialog.h"
 #include "ReportWriter.h"
 #include "io/FootPairing.h"
+#include "io/NearestNames.h"
 #include "io/ResultWriters.h"
 
 #include <QActionGroup>
@@ -310,7 +311,14 @@ void MainWindow::createViewMenu()
         viewMenu_->addAction(widget->toggleViewAction());
 }
 
-void MainWindow::showView(const QString& name)
+const QStringList& MainWindow::viewNames()
+{
+    static const QStringList names{"signals", "detector", "states", "trajectory2d", "trajectory3d",
+                                   "motion",  "summary",  "steps",  "gait"};
+    return names;
+}
+
+QString MainWindow::showView(const QString& name)
 {
     if (name == QLatin1String("signals"))
         signalTabs_->setCurrentWidget(signalPlots_);
@@ -326,7 +334,17 @@ void MainWindow::showView(const QString& name)
         signalTabs_->setCurrentWidget(flags_);
         trajectoryTabs_->setCurrentWidget(trajectory2D_);
         setPathColouring(name);
+    } else if (name == QLatin1String("summary") || summary_->showTab(name)) {
+        if (auto* summaryDock = findChild<QDockWidget*>(QStringLiteral("summaryDock")))
+            summaryDock->raise();
+    } else {
+        std::vector<std::string> candidates;
+        for (const QString& view : viewNames())
+            candidates.push_back(view.toStdString());
+        return tr("unknown view '%1'%2; the views are %3")
+            .arg(name, QString::fromStdString(didYouMean(name.toStdString(), candidates)), viewNames().join(QStringLiteral(", ")));
     }
+    return {};
 }
 
 void MainWindow::addPathColouringMenu()

@@ -56,8 +56,11 @@ public:
     OtherFootSession* otherFoot() const { return otherFoot_; }
     AnalysisSession* session() const { return session_; }
     /// Brings a view to the front: "signals", "detector", "states", "trajectory2d" or "trajectory3d";
-    /// "motion" shows the detector (with the motion lane) and colours the paths by motion class.
-    void showView(const QString& name);
+    /// "motion" shows the detector (with the motion lane) and colours the paths by motion class;
+    /// "summary", "steps" and "gait" raise the summary with its figures, step table or gait charts.
+    /// Returns an error naming the views (and the nearest one) for any other name, else empty.
+    QString showView(const QString& name);
+    static const QStringList& viewNames();
     /// Colours the 2D and 3D paths: "none", "time", "speed" or "motion" (the 3D view knows motion only).
     void setPathColouring(const QString& name);
     /// Opens the method comparison; given sets ("zupt;zupt,zaru;feliz") are ticked and run (once a

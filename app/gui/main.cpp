@@ -71,7 +71,7 @@ struct GuiOptions {
     QCommandLineOption assignment{
         "set", QCoreApplication::translate("main", "Set one parameter, as footpath-cli does (repeatable)"), "name=value"};
     QCommandLineOption view{
-        "view", QCoreApplication::translate("main", "Show this view: signals, detector, states, trajectory2d or trajectory3d"),
+        "view", QCoreApplication::translate("main", "Show this view: signals, detector, states, trajectory2d, trajectory3d, motion, summary, steps or gait"),
         "name"};
     QCommandLineOption compare{
         "compare",
@@ -181,7 +181,10 @@ int main(int argc, char** argv)
     if (params != footpath::Parameters())
         window.session()->setParameters(params, QApplication::translate("main", "Parameters from the command line"));
     if (parser.isSet(view))
-        window.showView(parser.value(view));
+        if (const QString error = window.showView(parser.value(view)); !error.isEmpty()) {
+            std::fprintf(stderr, "footpath: %s\n", qPrintable(error));
+            return 2;
+        }
     if (parser.isSet(compare))
         if (const QString error = window.showComparison(parser.value(compare)); !error.isEmpty()) {
             std::fprintf(stderr, "footpath: %s\n", qPrintable(error));
@@ -193,8 +196,11 @@ int main(int argc, char** argv)
     const QStringList files = parser.positionalArguments();
     if (files.isEmpty())
         window.openRecording(QString::fromUtf8(kSampleWalk));
-    else if (const QString problem = window.openRecordings(files); !problem.isEmpty())
+    else if (const QString problem = window.openRecordings(files); !problem.isEmpty()) {
         std::fprintf(stderr, "footpath: %s\n", qPrintable(problem));
+        if (parser.isSet(screenshot))
+            return 2;  // nothing will be drawn to grab: waiting for it would never end
+    }
     if (parser.isSet(connectPort))
         window.connectLive(parser.value(connectPort));
     if (parser.isSet(screenshot) && parser.isSet(connectPort)) {

@@ -165,6 +165,13 @@ void checkSwings(const Result& result, const Parameters& params, const Plausibil
     }
 }
 
+/// Steps are numbered from 1 wherever a user sees them (the step table, the steps CSV, the report):
+/// a warning names the step its stride leads to by that number.
+std::size_t stepNumber(std::size_t stepIndex)
+{
+    return stepIndex + 1;
+}
+
 void checkStrides(const Result& result, const PlausibilityLimits& limits, std::vector<PlausibilityWarning>& out)
 {
     for (std::size_t i = 1; i < result.steps.size(); ++i) {
@@ -172,14 +179,14 @@ void checkStrides(const Result& result, const PlausibilityLimits& limits, std::v
         const Step& step = result.steps[i];
         if (step.strideLength_m > limits.maxStrideLength_m)
             out.push_back({Kind::StrideLength, previous.stanceEnd_s, step.stanceStart_s,
-                           format("Stride %zu is %.2f m long; human strides stay under %.1f m, so the stance between "
-                                  "was missed or the filter drifted.",
-                                  i, step.strideLength_m, limits.maxStrideLength_m)});
+                           format("The stride to step %zu is %.2f m long; human strides stay under %.1f m, so the "
+                                  "stance between was missed or the filter drifted.",
+                                  stepNumber(i), step.strideLength_m, limits.maxStrideLength_m)});
         else if (step.strideDuration_s < limits.minStrideDuration_s && step.strideLength_m > limits.minStrideLength_m)
             out.push_back({Kind::StrideDuration, previous.stanceStart_s, step.stanceStart_s,
-                           format("Stride %zu took only %.2f s for %.2f m; a human stride takes at least %.1f s, so a "
-                                  "stance was probably found in the middle of a swing.",
-                                  i, step.strideDuration_s, step.strideLength_m, limits.minStrideDuration_s)});
+                           format("The stride to step %zu took only %.2f s for %.2f m; a human stride takes at least "
+                                  "%.1f s, so a stance was probably found in the middle of a swing.",
+                                  stepNumber(i), step.strideDuration_s, step.strideLength_m, limits.minStrideDuration_s)});
     }
 }
 
