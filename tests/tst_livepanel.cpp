@@ -15,14 +15,17 @@
 #include "nav/Pipeline.h"
 #include "nav/StreamingEstimator.h"
 
+#include <QApplication>
 #include <QFileInfo>
 #include <QLabel>
+#include <QMessageBox>
 #include <QStandardPaths>
 #include <qcustomplot.h>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QThread>
+#include <QTimer>
 #include <QtTest>
 
 #include <algorithm>
@@ -41,6 +44,7 @@ private slots:
     void notShownCountsWhatABusyWindowMissed();
     void recordsFromFirstSample();
     void offersReconnectWhenPortVanishes();
+    void reconnectAsksBeforeDroppingUnsavedSamples();
     void viewsSayNotConnected();
     void badPortSaysNotConnectedAndShowsTheError();
     void defaultRecordingNameHasDeviceAndTime();
@@ -107,6 +111,23 @@ void checkRecordingIsReceivedTail(const QString& mtb, const std::vector<LiveSamp
         QVERIFY2(sameValues(a, b), qPrintable(QStringLiteral("recorded sample %1 differs").arg(k)));
         QVERIFY(std::abs((a.time_s - recorded.front().time_s) - (b.time_s - received[offset].imu.time_s)) < 1e-9);
     }
+}
+
+/// Answers the next message box with `button` once it is shown (polling the modal widget, as a
+/// user's click would come), and keeps its text in `*text`.
+void answerNextQuestion(QMessageBox::StandardButton button, QString* text)
+{
+    auto* poll = new QTimer;
+    poll->setInterval(20);
+    QObject::connect(poll, &QTimer::timeout, poll, [poll, button, text] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box)
+            return;
+        *text = box->text();
+        box->button(button)->click();
+        poll->deleteLater();
+    });
+    poll->start();
 }
 
 Recording asRecording(const std::vector<LiveSample>& received)
@@ -391,6 +412,59 @@ void TestLivePanel::offersReconnectWhenPortVanishes()
     QCOMPARE(importRecording(continued.toStdString()).recording.samples.size(), panel.sampleCount());
     checkRecordingIsReceivedTail(continued, panel.receivedSamples());
     QVERIFY(offer->isVisible());
+}
+
+void TestLivePanel::reconnectAsksBeforeDroppingUnsavedSamples()
+{
+    // Reconnect started a new session at 0 samples: the 600 the dock said were kept were gone,
+    // without the question Connect asks.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString link = dir.filePath(QStringLiteral("ttyMTi4"));
+    Emulator emulator;  // unplugged after 3 s of streaming, plugged in again 1 s later
+    const QString problem = emulator.start(
+        link, QString(),
+        kFaults + QStringList{QStringLiteral("--disconnect-after"), QStringLiteral("3"), QStringLiteral("--replug-after"),
+                              QStringLiteral("1")});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+
+    LivePanel panel;
+    panel.show();
+    QSignalSpy ended(panel.session(), &DeviceSession::ended);
+    QVERIFY(panel.connectTo(link));
+    QTRY_VERIFY_WITH_TIMEOUT(ended.count() == 1, 30000);
+    const std::size_t received = panel.sampleCount();
+    QVERIFY(received > 100);
+    QVERIFY(panel.hasUnsavedSamples());
+    ReconnectOffer* offer = panel.reconnectOffer();
+    QTRY_VERIFY_WITH_TIMEOUT(offer->reconnectButton()->isEnabled(), 8000);
+
+    // Cancel keeps everything: the samples, the offer, no new session.
+    QString question;
+    answerNextQuestion(QMessageBox::Cancel, &question);
+    offer->reconnectButton()->click();
+    QVERIFY2(question.contains(QStringLiteral("%1 samples").arg(received)), qPrintable(question));
+    QVERIFY2(question.contains(QStringLiteral("reconnecting")), qPrintable(question));
+    QCOMPARE(panel.sampleCount(), received);
+    QCOMPARE(panel.session()->state(), SessionState::Idle);
+    QVERIFY(offer->isVisible());
+    // Connect asks the same (it did before), and so does quitting the window (mayEndSession).
+    answerNextQuestion(QMessageBox::Cancel, &question);
+    QVERIFY(!panel.connectTo(link));
+    QVERIFY2(question.contains(QStringLiteral("connecting again")), qPrintable(question));
+    answerNextQuestion(QMessageBox::Cancel, &question);
+    QVERIFY(!panel.mayEndSession(LivePanel::SessionEnding::Quit));
+    QVERIFY2(question.contains(QStringLiteral("quitting")), qPrintable(question));
+    QCOMPARE(panel.sampleCount(), received);
+
+    // Discard: the user chose; the new session starts.
+    answerNextQuestion(QMessageBox::Discard, &question);
+    offer->reconnectButton()->click();
+    QVERIFY(!offer->isVisible());
+    QTRY_VERIFY_WITH_TIMEOUT(panel.session()->state() != SessionState::Idle, 5000);
+    panel.disconnectDevice();
+    QTRY_VERIFY_WITH_TIMEOUT(ended.count() == 2, 30000);
+    emulator.stop();
 }
 
 void TestLivePanel::viewsSayNotConnected()

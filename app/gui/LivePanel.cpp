@@ -398,10 +398,10 @@ void LivePanel::refreshPorts()
         port_->setEditText(current);
 }
 
-void LivePanel::connectTo(const QString& port)
+bool LivePanel::connectTo(const QString& port, SessionEnding ending)
 {
-    if (session_->state() != SessionState::Idle)
-        return;
+    if (session_->state() != SessionState::Idle || !mayEndSession(ending))
+        return false;
     reconnect_->withdraw();
     port_->setEditText(port);
     lastPort_ = port;
@@ -427,6 +427,7 @@ void LivePanel::connectTo(const QString& port)
     viewTimer_->start();
     updateButtons();
     emit sessionStarted();
+    return true;
 }
 
 void LivePanel::disconnectDevice()
@@ -522,9 +523,7 @@ void LivePanel::onConnectClicked()
             showError(tr("Choose a port or type its path."));
             return;
         }
-        if (hasUnsavedSamples() && !confirmDiscardingSamples())
-            return;
-        connectTo(port);
+        connectTo(port);  // asks about unsaved samples first
     } else {
         disconnectDevice();
     }
@@ -595,13 +594,33 @@ void LivePanel::onSaveClicked()
     updateButtons();
 }
 
-/// Connecting again clears the samples in memory: the user saves them first or agrees to lose them.
-bool LivePanel::confirmDiscardingSamples()
+bool LivePanel::mayEndSession(SessionEnding ending)
 {
-    const QMessageBox::StandardButton answer = QMessageBox::question(
-        this, tr("Unsaved samples"),
-        tr("The last session's %1 samples were not recorded. Save them before connecting again?").arg(received_.size()),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    return !hasUnsavedSamples() || confirmDiscardingSamples(ending);
+}
+
+/// A new session (or quitting) clears the samples in memory: the user saves them first or agrees to
+/// lose them.
+bool LivePanel::confirmDiscardingSamples(SessionEnding ending)
+{
+    const QString count = QString::number(received_.size());
+    QString question;
+    switch (ending) {
+    case SessionEnding::Connect:
+        question = tr("The last session's %1 samples were not recorded. Save them before connecting again?").arg(count);
+        break;
+    case SessionEnding::Reconnect:
+        question = tr("The %1 samples received before the port went away were not recorded. Reconnecting starts a new "
+                      "session without them. Save them before reconnecting?")
+                       .arg(count);
+        break;
+    case SessionEnding::Quit:
+        question = tr("The live session's %1 samples were not recorded. Save them before quitting?").arg(count);
+        break;
+    }
+    const QMessageBox::StandardButton answer =
+        QMessageBox::question(this, tr("Unsaved samples"), question,
+                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Save)
         onSaveClicked();
     return answer == QMessageBox::Discard || (answer == QMessageBox::Save && samplesSaved_);
@@ -638,7 +657,7 @@ void LivePanel::updateNotice()
 void LivePanel::onReconnect()
 {
     if (!lastPort_.isEmpty())
-        connectTo(lastPort_);
+        connectTo(lastPort_, SessionEnding::Reconnect);
 }
 
 void LivePanel::onStateChanged(SessionState state)

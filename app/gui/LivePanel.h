@@ -42,8 +42,16 @@ public:
     explicit LivePanel(QWidget* parent = nullptr);
     ~LivePanel() override;
 
-    /// Starts a session on `port` with the baud and rate chosen in the panel.
-    void connectTo(const QString& port);
+    /// Starts a session on `port` with the baud and rate chosen in the panel. A new session
+    /// starts with no samples: unsaved ones of the last session are offered for saving first
+    /// (mayEndSession); returns false when the user kept them (Cancel) or a session is running.
+    /// What ends the samples in memory, for the question asked before it happens.
+    enum class SessionEnding { Connect, Reconnect, Quit };
+    bool connectTo(const QString& port, SessionEnding ending = SessionEnding::Connect);
+    /// Whether the samples in memory may go: true when they are recorded or saved already, or the
+    /// user saved them now or chose to discard them; false when the user cancelled. Every path
+    /// that ends them asks here (Connect, Reconnect, quitting the window).
+    bool mayEndSession(SessionEnding ending);
     void disconnectDevice();
     /// Records to `mtbPath` and a CSV beside it with the same base name. Before a session is
     /// streaming, the recording starts with the first sample of the next connection.
@@ -114,7 +122,7 @@ private:
     void onConnectClicked();
     void onRecordClicked();
     void onSaveClicked();
-    bool confirmDiscardingSamples();
+    bool confirmDiscardingSamples(SessionEnding ending);
     void showError(const QString& message);
     void updateNotice();
     void onReconnect();

@@ -908,6 +908,10 @@ void MainWindow::restoreLayout()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    if (!live_->mayEndSession(LivePanel::SessionEnding::Quit)) {
+        event->ignore();  // the user keeps the window to save the samples another way
+        return;
+    }
     settings_.setWindowGeometry(saveGeometry());
     settings_.setWindowState(saveState());
     QMainWindow::closeEvent(event);

@@ -40,10 +40,9 @@ ReconnectOffer::ReconnectOffer(QWidget* parent)
 
     poll_->setInterval(kPollInterval_ms);
     connect(poll_, &QTimer::timeout, this, &ReconnectOffer::checkPort);
-    connect(reconnect_, &QPushButton::clicked, this, [this] {
-        withdraw();
-        emit reconnectRequested();
-    });
+    // Withdrawn by the panel once the new session starts: the user may still keep the old
+    // samples (Cancel in the panel's question), and then the offer stays.
+    connect(reconnect_, &QPushButton::clicked, this, &ReconnectOffer::reconnectRequested);
     connect(dismiss, &QPushButton::clicked, this, &ReconnectOffer::withdraw);
     hide();
 }
