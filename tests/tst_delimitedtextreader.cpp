@@ -406,7 +406,7 @@ void TestDelimitedTextReader::errors_reportMessageLineAndColumn_data()
         << QByteArray("0,0,0,9.8,0,0,0\n")
         << QStringList{"time_s", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyro_z"} << none << 0 << 0
         << QStringList{"unknown column role 'gyro_z'", "expected one of time_s, time_ms, time_us, counter, acc_x",
-                       "pressure_pa, skip"};
+                       "pressure_pa, pressure_hpa, pressure_kpa, skip"};
     // A column-map problem is not tied to a line of the file.
     QTest::newRow("column map missing a role")
         << QByteArray("0,0,0,9.8,0,0,0\n")
@@ -561,7 +561,7 @@ void TestDelimitedTextReader::columnRoleNames_listsTheCanonicalRoles()
 {
     const std::vector<std::string> expected{"time_s", "time_ms", "time_us", "counter", "acc_x",       "acc_y", "acc_z",
                                             "gyr_x",  "gyr_y",   "gyr_z",   "mag_x",   "mag_y", "mag_z", "pressure_pa",
-                                            "skip"};
+                                            "pressure_hpa", "pressure_kpa", "skip"};
     QVERIFY(footpath::columnRoleNames() == expected);
 }
 

@@ -2,6 +2,7 @@
 // recording and on crafted files. Expected counts and rates were read off the files with
 // independent scripts (awk / Python: rows, median time step, median |a|), not with Footpath.
 #include "TestData.h"
+#include "io/ColumnMapGuess.h"
 #include "io/ColumnNames.h"
 #include "io/Import.h"
 #include "io/ImportPresets.h"
@@ -465,6 +466,84 @@ private slots:
         const ColumnMapGuess prose = guessColumnMap(writeFile(dir, "prose.txt", "Hello there.\nNo data.\n").toStdString(), {});
         QVERIFY(!prose.confident);
         QVERIFY2(QString::fromStdString(prose.doubt).contains("does not look like sensor data"), prose.doubt.c_str());
+    }
+
+    void columnGuess_readsTheHeaderAndChecksRolesAgainstTheValues()
+    {
+        // A logger's export whose gyroscope names are not known: the dialog used to propose the
+        // usual headerless layout, time in ms (a 200 kHz rate for this seconds column) and the
+        // magnetometer's x as a pressure in Pa. Now the names give the roles they can, the values
+        // the time unit, and the magnetometer stays a magnetometer.
+        QByteArray text = "Time,AX,AY,AZ,Roll rate,Pitch rate,Yaw rate,MX,MY,MZ\n";
+        for (int k = 0; k < 400; ++k)
+            text += QByteArray::number(0.005 * k, 'f', 3) + ",0.01,0.02,-1.0,0.01,0.0,0.02,0.21,0.05,-0.43\n";
+        QTemporaryDir dir;
+        const std::string path = writeFile(dir, "export.csv", text).toStdString();
+        const ColumnMapGuess guess = guessColumnMap(path, {});
+        QCOMPARE(guess.headerLine, std::size_t(1));
+        QCOMPARE(guess.headerNames.size(), std::size_t(10));
+        QCOMPARE(QString::fromStdString(guess.headerNames[4]), QStringLiteral("Roll rate"));
+        QCOMPARE(guess.columnMap, (std::vector<std::string>{"time_s", "acc_x", "acc_y", "acc_z", "skip", "skip", "skip",
+                                                            "mag_x", "mag_y", "mag_z"}));
+        QVERIFY(!guess.confident);  // no gyroscope: the user says which columns hold it
+        QVERIFY2(QString::fromStdString(guess.doubt).contains("gyr"), guess.doubt.c_str());
+        QString notes;
+        for (const std::string& note : guess.notes)
+            notes += QString::fromStdString(note) + "\n";
+        QVERIFY2(notes.contains("time in seconds, 200 Hz"), qPrintable(notes));
+        QVERIFY2(notes.contains("Roll rate"), qPrintable(notes));
+
+        // With the gyroscope named by the user, the file reads right; the header row is said to be
+        // replaced by the map, not reported as a damaged row.
+        ImportOptions options;
+        options.columnMap = {"time_s", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "mag_x", "mag_y", "mag_z"};
+        const ColumnMapCheck fine = checkColumnMap(headOfFile(path, kColumnGuessBytes), path, options);
+        QVERIFY2(fine.refusals.empty(), fine.refusals.empty() ? "" : fine.refusals.front().c_str());
+        QVERIFY2(fine.doubts.empty(), fine.doubts.empty() ? "" : fine.doubts.front().c_str());
+        const ImportResult read = importOrFail(QString::fromStdString(path), options);
+        QCOMPARE(read.recording.samples.size(), std::size_t(400));
+        QVERIFY(!read.recording.warnings.empty());
+        QVERIFY2(QString::fromStdString(read.recording.warnings.front()).startsWith("line 1 is a header row (Time, AX"),
+                 read.recording.warnings.front().c_str());
+        for (const std::string& warning : read.recording.warnings)
+            QVERIFY2(warning.find("skipped") == std::string::npos, warning.c_str());
+
+        // What the old guess proposed is refused before Open, saying why.
+        options.columnMap[0] = "time_ms";
+        const ColumnMapCheck tooFast = checkColumnMap(headOfFile(path, kColumnGuessBytes), path, options);
+        QVERIFY(!tooFast.refusals.empty());
+        QVERIFY2(QString::fromStdString(tooFast.refusals.front()).contains("rate is 2e+05 Hz"), tooFast.refusals.front().c_str());
+        options.columnMap[0] = "time_s";
+        options.columnMap[7] = "pressure_pa";
+        const ColumnMapCheck noBarometer = checkColumnMap(headOfFile(path, kColumnGuessBytes), path, options);
+        QVERIFY(!noBarometer.refusals.empty());
+        QVERIFY2(QString::fromStdString(noBarometer.refusals.front()).contains("no barometer"),
+                 noBarometer.refusals.front().c_str());
+    }
+
+    void columnGuess_skipsAColumnThatHoldsNoPressure()
+    {
+        // Headerless: time in ms, acc in m/s^2, gyr, then three unit-norm floats (a magnetometer):
+        // read as the usual layout, column 8 was a pressure and the barometric height +-3000 m.
+        QByteArray text;
+        for (int k = 0; k < 300; ++k)
+            text += QByteArray::number(1000 + 10 * k) + ",0.3,-0.2,9.79,0.01,-0.02,0.005,0.5512,0.1021,-0.8277\n";
+        QTemporaryDir dir;
+        const ColumnMapGuess guess = guessColumnMap(writeFile(dir, "log.txt", text).toStdString(), {});
+        QVERIFY(guess.headerNames.empty());
+        QCOMPARE(QString::fromStdString(guess.columnMap[0]), QStringLiteral("time_ms"));
+        QCOMPARE(QString::fromStdString(guess.columnMap[7]), QStringLiteral("skip"));
+        QVERIFY2(guess.confident, guess.doubt.c_str());
+        QVERIFY(std::any_of(guess.notes.begin(), guess.notes.end(),
+                            [](const std::string& note) { return note.find("no air pressure") != std::string::npos; }));
+        // A pressure in hPa is taken as one.
+        QByteArray hpa;
+        for (int k = 0; k < 300; ++k)
+            hpa += QByteArray::number(0.01 * k, 'f', 2) + ",0.3,-0.2,9.79,0.01,-0.02,0.005,1013.2\n";
+        const ColumnMapGuess inHpa = guessColumnMap(writeFile(dir, "hpa.txt", hpa).toStdString(), {});
+        QCOMPARE(QString::fromStdString(inHpa.columnMap[0]), QStringLiteral("time_s"));  // the values' steps, not the usual ms
+        QCOMPARE(QString::fromStdString(inHpa.columnMap[7]), QStringLiteral("pressure_hpa"));
+        QVERIFY2(inHpa.confident, inHpa.doubt.c_str());
     }
 
     void nearestNames_suggestCloseNamesOnly()

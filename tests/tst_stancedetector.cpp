@@ -1,6 +1,7 @@
 #include "TestData.h"
 #include "detect/StanceDetector.h"
 #include "detect/StanceFlagsAhead.h"
+#include "io/ColumnMapGuess.h"
 #include "io/Import.h"
 #include "nav/Alignment.h"
 

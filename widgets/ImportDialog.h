@@ -1,5 +1,6 @@
 #pragma once
 
+#include "io/ColumnMapGuess.h"
 #include "io/Import.h"
 
 #include <QDialog>

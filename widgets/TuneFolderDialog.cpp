@@ -1,6 +1,7 @@
 #include "TuneFolderDialog.h"
 
 #include "AnalysisSession.h"
+#include "io/ColumnMapGuess.h"
 #include "io/Import.h"
 #include "io/ParameterIo.h"
 

@@ -129,7 +129,12 @@ std::optional<ColumnMeaning> recogniseHeaderName(const std::string& name)
     // outputs, not a reference, and stay skipped.
     if (name == "zv_vicon_opt")
         return ColumnMeaning{ColumnRole::RefStance};
-    const SplitName split = splitName(name);
+    // A device's node prefix ("inertial-6253.76535:scaledAccelX", MicroStrain SensorConnect) names
+    // the sensor, not the quantity; "scaled" says the values are in physical units.
+    const std::string quantityName = name.substr(name.find_last_of(':') == std::string::npos ? 0 : name.find_last_of(':') + 1);
+    SplitName split = splitName(quantityName);
+    if (split.letters.rfind("scaled", 0) == 0)
+        split.letters.erase(0, 6);
     const std::string& letters = split.letters;
     for (const Quantity& quantity : kQuantities) {
         const std::string word = quantity.word;
@@ -159,7 +164,7 @@ const std::vector<std::string>& columnRoleNames()
 {
     static const std::vector<std::string> names = {"time_s", "time_ms", "time_us", "counter", "acc_x", "acc_y",
                                                    "acc_z",  "gyr_x",   "gyr_y",   "gyr_z",   "mag_x", "mag_y",
-                                                   "mag_z",  "pressure_pa", "skip"};
+                                                   "mag_z",  "pressure_pa", "pressure_hpa", "pressure_kpa", "skip"};
     return names;
 }
 

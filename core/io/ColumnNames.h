@@ -25,13 +25,14 @@ struct ColumnMeaning {
 
 /// Recognises common header spellings: "time", "timestamp", "t_s", "Time (ms)"; "acc_x", "AccX",
 /// "ax", "accel_x_g", "Acc X [m/s^2]"; "gyr_x", "gyro_x_dps", "wx", "gx", "Gyr_X (deg/s)"; "mag_x",
-/// "mx"; "pressure", "baro", "pressure_hpa"; "counter", "packetcounter". Returns nothing for
+/// "mx"; "pressure", "baro", "pressure_hpa"; "counter", "packetcounter"; a node prefix and
+/// "scaled" are read past ("inertial-6253.76535:scaledAccelX", MicroStrain). Returns nothing for
 /// names it does not know (those columns are skipped), so an unexpected column never becomes
 /// data by accident.
 std::optional<ColumnMeaning> recogniseHeaderName(const std::string& name);
 
 /// Column-map roles (--columns): time_s, time_ms, time_us, counter, acc_x..z, gyr_x..z,
-/// mag_x..z, pressure_pa, skip. Returns nothing for an unknown role.
+/// mag_x..z, pressure_pa, pressure_hpa, pressure_kpa, skip. Returns nothing for an unknown role.
 std::optional<ColumnMeaning> columnMapRole(const std::string& role);
 
 /// The roles a column map may name, for messages and help texts.

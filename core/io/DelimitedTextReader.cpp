@@ -137,6 +137,8 @@ private:
         return RowOutcome::Skipped;
     }
     bool nextContentLine(std::string& line);
+    bool isNamesOnly(const std::string& line);
+    bool skipHeader(std::string& line, bool layoutFromIt);
     bool layoutFromMap();
     bool layoutFromHeader(const std::string& header);
     bool addReferenceColumns();
@@ -187,6 +189,29 @@ bool TextParser::nextContentLine(std::string& line)
             return true;
     }
     return false;
+}
+
+/// A line of names, not one number among them: a header row (a damaged data row keeps numbers).
+bool TextParser::isNamesOnly(const std::string& line)
+{
+    splitLine(line, delimiter_, cells_);
+    return std::none_of(cells_.begin(), cells_.end(), isNumeric)
+           && std::any_of(cells_.begin(), cells_.end(), [](const std::string& cell) { return !trim(cell).empty(); });
+}
+
+/// Moves past the header row. One the column map replaces is said, not reported as a damaged row.
+bool TextParser::skipHeader(std::string& line, bool layoutFromIt)
+{
+    if (!layoutFromIt) {
+        splitLine(line, delimiter_, cells_);
+        std::vector<std::string> names;
+        for (const std::string& cell : cells_)
+            names.push_back(trim(cell));
+        result_.recording.warnings.push_back("line " + std::to_string(lineNumber_) + " is a header row ("
+                                             + listedColumnNames(names, ColumnCount::Stated)
+                                             + "); the column map replaces it");
+    }
+    return nextContentLine(line);
 }
 
 bool TextParser::layoutFromMap()
@@ -474,7 +499,7 @@ ImportResult TextParser::run()
     if (!laidOut || !checkRequiredRoles())
         return std::move(result_);
     lineNumber_ = firstLine;
-    bool more = hasHeader ? nextContentLine(line) : true;
+    bool more = hasHeader || isNamesOnly(line) ? skipHeader(line, hasHeader) : true;
     if (more) {
         // "9,81" with a semicolon or tab delimiter is a decimal comma, not two cells.
         decimalComma_ = delimiter_ != ',' && line.find(',') != std::string::npos;
@@ -566,6 +591,34 @@ bool startsWithHeaderRow(const std::string& firstKilobytes)
     return std::any_of(cells.begin(), cells.end(), [](const std::string& cell) {
         return !trim(cell).empty() && !isNumeric(cell);
     });
+}
+
+std::vector<TextRow> splitTextRows(const std::string& text, std::size_t maxRows)
+{
+    std::vector<TextRow> rows;
+    char delimiter = 0;
+    std::size_t lineNumber = 0;
+    std::istringstream in(text);
+    for (std::string line; rows.size() < maxRows && std::getline(in, line);) {
+        ++lineNumber;
+        if (lineNumber == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+            line.erase(0, 3);
+        if (isBlank(line))
+            continue;
+        if (delimiter == 0)
+            delimiter = detectDelimiter(line);
+        TextRow row{lineNumber, {}};
+        splitLine(line, delimiter, row.cells);
+        for (std::string& cell : row.cells)
+            cell = trim(cell);
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+bool parseCell(const std::string& cell, double& value)
+{
+    return parseNumber(cell, false, value) || parseNumber(cell, true, value);
 }
 
 ImportResult readDelimitedText(std::istream& in, const std::string& sourceName, const ImportOptions& options,

@@ -4,6 +4,7 @@
 
 #include <istream>
 #include <string>
+#include <vector>
 
 namespace footpath {
 
@@ -40,5 +41,17 @@ bool looksLikeSensorText(const std::string& firstKilobytes);
 
 /// True if the first non-empty line of the text looks like column names rather than numbers.
 bool startsWithHeaderRow(const std::string& firstKilobytes);
+
+/// One line of delimited text split into cells as the reader splits it, with its line number in
+/// the file (1-based, counting blank lines, as the reader's messages count them).
+struct TextRow {
+    std::size_t line = 0;
+    std::vector<std::string> cells;  ///< trimmed of blanks and quotes
+};
+/// The first maxRows non-blank lines of text, the delimiter detected from the first of them (a
+/// spreadsheet's byte-order mark removed).
+std::vector<TextRow> splitTextRows(const std::string& text, std::size_t maxRows);
+/// A cell as a number, with a decimal point or a decimal comma; false for anything else.
+bool parseCell(const std::string& cell, double& value);
 
 }  // namespace footpath

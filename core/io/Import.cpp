@@ -19,7 +19,6 @@ namespace {
 constexpr double kStandardGravity_mps2 = 9.80665;
 constexpr double kDegToRad = M_PI / 180.0;
 constexpr std::size_t kDetectionBytes = 64 * 1024;
-constexpr std::size_t kGuessBytes = 256 * 1024;  // some 4000 rows of a headerless IMU log
 
 std::string formatNumber(double value, int precision = 4)
 {
@@ -334,57 +333,6 @@ const char* unitName(TimeUnit unit)
     case TimeUnit::Microseconds: return "us";
     default: return "unknown";
     }
-}
-
-namespace {
-
-std::vector<std::string> usualColumnMap(std::size_t columns)
-{
-    std::vector<std::string> roles = {"time_ms", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"};
-    for (std::size_t c = roles.size(); c < columns; ++c)
-        roles.emplace_back(c == 7 ? "pressure_pa" : "skip");
-    roles.resize(columns);
-    return roles;
-}
-
-/// The first bytes of a file, ended at a line break when there is one.
-std::string headOfFile(const std::string& path, std::size_t bytes)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::string head(bytes, '\0');
-    in.read(head.data(), static_cast<std::streamsize>(head.size()));
-    head.resize(static_cast<std::size_t>(std::max<std::streamsize>(0, in.gcount())));
-    if (const auto lastBreak = head.rfind('\n'); head.size() == bytes && lastBreak != std::string::npos)
-        head.resize(lastBreak + 1);
-    return head;
-}
-
-}  // namespace
-
-ColumnMapGuess guessColumnMap(const std::string& path, const ImportOptions& options)
-{
-    ColumnMapGuess guess;
-    // A few thousand rows tell as well as the whole file, and a dialog opening must not wait for
-    // a long recording to be read.
-    const std::string head = headOfFile(path, kGuessBytes);
-    guess.columnMap = options.columnMap.empty() ? usualColumnMap(columnCount(firstLineOf(head))) : options.columnMap;
-    ImportOptions tried = options;
-    tried.columnMap = guess.columnMap;
-    tried.progress = nullptr;
-    std::istringstream in(head);
-    const ImportResult read = importStream(in, head.size(), path, tried);
-    if (!read.ok()) {
-        guess.doubt = read.error->text();
-        return guess;
-    }
-    const double gravity = sampledMedian(read.recording.samples, accNorm);
-    const double rate = read.info.rate_hz;
-    if (!(gravity > 7.0 && gravity < 13.0))
-        guess.doubt = "read so, the median |a| is " + formatNumber(gravity) + " m/s\u00b2, not gravity";
-    else if (!(rate >= 10.0 && rate <= 2000.0))
-        guess.doubt = "read so, the rate is " + formatNumber(rate) + " Hz, not an IMU's";
-    guess.confident = guess.doubt.empty();
-    return guess;
 }
 
 const std::vector<std::string>& importFormatNames()

@@ -81,19 +81,6 @@ ImportResult importRecording(const std::string& path, const ImportOptions& optio
 ImportResult importStream(std::istream& in, std::size_t size, const std::string& name,
                           const ImportOptions& options = {});
 
-/// What a headerless text file most likely holds, and whether reading it so looks right.
-struct ColumnMapGuess {
-    std::vector<std::string> columnMap;
-    bool confident = false;  ///< read with it, the file gives gravity and a sampling rate of an IMU
-    std::string doubt;       ///< why not, when not confident
-};
-
-/// The column map the import dialog starts with: options.columnMap when given, else the usual
-/// layout of a headerless IMU log (time_ms, acc, gyr, then pressure_pa, the rest skipped). It is
-/// confident when the file's first 256 KiB read with it and give gravity as the median |a| and a
-/// rate of 10-2000 Hz.
-ColumnMapGuess guessColumnMap(const std::string& path, const ImportOptions& options);
-
 /// The names --format accepts: "xsens-text", "xsens-mtb", "delimited", "pyshoe-vicon".
 const std::vector<std::string>& importFormatNames();
 
