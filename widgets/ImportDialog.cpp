@@ -1,5 +1,6 @@
 #include "ImportDialog.h"
 
+#include "io/ColumnMapGuess.h"
 #include "io/ColumnNames.h"
 #include "io/ImportPresets.h"
 
@@ -7,7 +8,6 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
-#include <QFile>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -16,15 +16,15 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QRegularExpression>
 #include <QTableWidget>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace footpath {
 
 namespace {
 
-constexpr int kPreviewRows = 8;
+constexpr std::size_t kPreviewRows = 12;
 
 QComboBox* unitBox(const QStringList& labels, const QStringList& values, QWidget* parent)
 {
@@ -42,23 +42,11 @@ std::function<void(const QString&)>& unattendedHandler()
 
 }  // namespace
 
-QList<QStringList> ImportDialog::previewRows(const QString& path, int maxRows)
-{
-    QList<QStringList> rows;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
-        return rows;
-    static const QRegularExpression separators(QStringLiteral("[,;\\t ]+"));
-    while (!file.atEnd() && rows.size() < maxRows) {
-        const QString line = QString::fromUtf8(file.readLine(64 * 1024)).trimmed();
-        if (!line.isEmpty())
-            rows << line.split(separators, Qt::SkipEmptyParts);
-    }
-    return rows;
-}
-
 ImportDialog::ImportDialog(const QString& path, const QString& problem, const ImportOptions& start, QWidget* parent)
-    : QDialog(parent), path_(path), preview_(previewRows(path, kPreviewRows))
+    : QDialog(parent)
+    , path_(path)
+    , head_(headOfFile(path.toStdString(), kColumnGuessBytes))
+    , preview_(splitTextRows(head_, kPreviewRows))
 {
     setWindowTitle(tr("How to read %1").arg(QFileInfo(path).fileName()));
     auto* layout = new QVBoxLayout(this);
@@ -88,20 +76,26 @@ ImportDialog::ImportDialog(const QString& path, const QString& problem, const Im
     layout->addLayout(form);
 
     table_ = new QTableWidget(this);
-    layout->addWidget(new QLabel(tr("What each column holds (first lines of the file below):"), this));
+    layout->addWidget(new QLabel(tr("What each column holds (the first lines of the file below, numbered as in the file):"), this));
+    headerNote_ = new QLabel(this);
+    headerNote_->setObjectName(QStringLiteral("importHeaderNote"));
+    headerNote_->setWordWrap(true);
+    layout->addWidget(headerNote_);
     layout->addWidget(table_, 1);
-    int columns = 0;
-    for (const QStringList& row : preview_)
-        columns = std::max(columns, int(row.size()));
-    buildColumnEditors(columns);
-    // The same guess footpath-cli users get told about: given roles, else the usual layout.
+    // The same guess footpath-cli users get told about: given roles, else the header's names, else
+    // the usual layout, with the time unit and the pressure column decided by the values.
     const ColumnMapGuess guess = guessColumnMap(path.toStdString(), start);
     guessConfident_ = guess.confident;
     guessDoubt_ = QString::fromStdString(guess.doubt);
-    for (int i = 0; i < roleBoxes_.size(); ++i)
-        roleBoxes_[i]->setCurrentText(i < int(guess.columnMap.size())
-                                          ? QString::fromStdString(guess.columnMap[std::size_t(i)])
-                                          : QStringLiteral("skip"));
+    int columns = int(guess.headerNames.size());
+    for (const TextRow& row : preview_)
+        columns = std::max(columns, int(row.cells.size()));
+    buildColumnEditors(columns, guess);
+    checkText_ = new QLabel(this);
+    checkText_->setObjectName(QStringLiteral("importCheck"));
+    checkText_->setWordWrap(true);
+    checkText_->setTextFormat(Qt::RichText);
+    layout->addWidget(checkText_);
 
     auto* saveRow = new QHBoxLayout;
     save_ = new QCheckBox(tr("Save as import preset named"), this);
@@ -112,34 +106,91 @@ ImportDialog::ImportDialog(const QString& path, const QString& problem, const Im
     layout->addLayout(saveRow);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
-    buttons->button(QDialogButtonBox::Ok)->setText(tr("Open"));
+    open_ = buttons->button(QDialogButtonBox::Ok);
+    open_->setText(tr("Open"));
     layout->addWidget(buttons);
     connect(buttons, &QDialogButtonBox::accepted, this, &ImportDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &ImportDialog::reject);
     connect(presets_, &QComboBox::currentIndexChanged, this, &ImportDialog::applyPreset);
     connect(presetName_, &QLineEdit::textEdited, this, [this] { save_->setChecked(true); });
-    resize(760, 480);
+    // A preset changes every box at once: one check after them, not one per box.
+    auto* recheckSoon = new QTimer(this);
+    recheckSoon->setSingleShot(true);
+    recheckSoon->setInterval(0);
+    connect(recheckSoon, &QTimer::timeout, this, &ImportDialog::recheck);
+    for (QComboBox* box : roleBoxes_ + QList<QComboBox*>{accUnit_, gyrUnit_, timeUnit_})
+        connect(box, &QComboBox::currentIndexChanged, recheckSoon, qOverload<>(&QTimer::start));
+    connect(rate_, &QDoubleSpinBox::valueChanged, recheckSoon, qOverload<>(&QTimer::start));
+    recheck();
+    resize(820, 560);
 }
 
-void ImportDialog::buildColumnEditors(int columns)
+/// One role box per column over the preview; the header row, when the file has one, titles the
+/// columns instead of posing as data, and every row is labelled with its line in the file.
+void ImportDialog::buildColumnEditors(int columns, const ColumnMapGuess& guess)
 {
+    std::vector<TextRow> rows = preview_;
+    if (guess.headerLine > 0 && !rows.empty() && rows.front().line == guess.headerLine)
+        rows.erase(rows.begin());
     table_->setColumnCount(columns);
-    table_->setRowCount(int(preview_.size()) + 1);
-    table_->setVerticalHeaderLabels(QStringList{tr("role")});
+    table_->setRowCount(int(rows.size()) + 1);
+    QStringList titles;
+    for (int c = 0; c < columns; ++c) {
+        const QString name = c < int(guess.headerNames.size()) ? QString::fromStdString(guess.headerNames[std::size_t(c)])
+                                                                : QString();
+        titles << (name.isEmpty() ? tr("column %1").arg(c + 1) : tr("%1: %2").arg(c + 1).arg(name));
+    }
+    table_->setHorizontalHeaderLabels(titles);
+    QStringList lineLabels{tr("role")};
+    for (const TextRow& row : rows)
+        lineLabels << tr("line %1").arg(row.line);
+    table_->setVerticalHeaderLabels(lineLabels);
+    headerNote_->setText(guess.headerLine > 0
+                             ? tr("Line %1 is the file's header: its names title the columns, and the roles below "
+                                  "replace it.")
+                                   .arg(guess.headerLine)
+                             : tr("The file has no header row: say what each column holds."));
     QStringList roles;
     for (const std::string& role : columnRoleNames())
         roles << QString::fromStdString(role);
     for (int c = 0; c < columns; ++c) {
         auto* box = new QComboBox(table_);
         box->addItems(roles);
+        box->setCurrentText(c < int(guess.columnMap.size()) ? QString::fromStdString(guess.columnMap[std::size_t(c)])
+                                                             : QStringLiteral("skip"));
         table_->setCellWidget(0, c, box);
         roleBoxes_ << box;
-        for (int r = 0; r < preview_.size(); ++r)
-            if (c < preview_[r].size())
-                table_->setItem(r + 1, c, new QTableWidgetItem(preview_[r][c]));
+        for (int r = 0; r < int(rows.size()); ++r)
+            if (c < int(rows[std::size_t(r)].cells.size()))
+                table_->setItem(r + 1, c, new QTableWidgetItem(QString::fromStdString(rows[std::size_t(r)].cells[std::size_t(c)])));
     }
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    QStringList notes;
+    for (const std::string& note : guess.notes)
+        notes << QString::fromStdString(note).toHtmlEscaped();
+    guessNotes_ = notes.join(QStringLiteral("<br>"));
+}
+
+/// The file's first part read with the settings as they are now: what it gives, what cannot be
+/// right (Open waits until it is mended) and what is unusual.
+void ImportDialog::recheck()
+{
+    check_ = checkColumnMap(head_, path_.toStdString(), options());
+    QStringList lines;
+    for (const std::string& refusal : check_.refusals)
+        lines << QStringLiteral("<span style='color:#b00020'>%1</span>")
+                     .arg(tr("Cannot be right: %1").arg(QString::fromStdString(refusal).toHtmlEscaped()));
+    for (const std::string& doubt : check_.doubts)
+        lines << QStringLiteral("<span style='color:#a05a00'>%1</span>")
+                     .arg(tr("Check: %1").arg(QString::fromStdString(doubt).toHtmlEscaped()));
+    if (!check_.reading.empty())
+        lines << tr("Read so, the first lines give: %1").arg(QString::fromStdString(check_.reading).toHtmlEscaped());
+    if (!guessNotes_.isEmpty())
+        lines << tr("From the values: %1").arg(guessNotes_);
+    checkText_->setText(lines.join(QStringLiteral("<br>")));
+    open_->setEnabled(check_.refusals.empty());
+    open_->setToolTip(check_.refusals.empty() ? QString() : tr("Mend the roles or units first: the file cannot be read right so"));
 }
 
 void ImportDialog::setUnattended(std::function<void(const QString&)> onNoAnswer)

@@ -13,6 +13,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
+class QPushButton;
 class QTableWidget;
 
 namespace footpath {
@@ -30,8 +31,9 @@ public:
     /// The preset saved on accept, or empty.
     QString savedPresetName() const { return savedPreset_; }
 
-    /// The first non-empty lines of a text file, split into cells as the reader splits them.
-    static QList<QStringList> previewRows(const QString& path, int maxRows);
+    /// What the current settings read from the first part of the file, checked (shown under the
+    /// preview; Open is disabled while it holds a refusal).
+    const ColumnMapCheck& check() const { return check_; }
 
     /// A run without a user (a screenshot under xvfb): exec() then shows nothing; it accepts the
     /// settings the dialog starts with when reading the file with them looks right, and otherwise
@@ -40,13 +42,15 @@ public:
     int exec() override;
 
 private:
-    void buildColumnEditors(int columns);
+    void buildColumnEditors(int columns, const ColumnMapGuess& guess);
+    void recheck();
     void applyPreset(int index);
     void showUnits(AccUnit acc, GyrUnit gyr, TimeUnit time);
     void accept() override;
 
     QString path_;
-    QList<QStringList> preview_;
+    std::string head_;            ///< the first part of the file, which the checks read
+    std::vector<TextRow> preview_;  ///< its first rows, with their line numbers in the file
     QTableWidget* table_;
     QList<QComboBox*> roleBoxes_;
     QComboBox* presets_;
@@ -57,7 +61,12 @@ private:
     QCheckBox* save_;
     QLineEdit* presetName_;
     QLabel* problem_;
+    QLabel* headerNote_;
+    QLabel* checkText_;
+    QPushButton* open_;
+    ColumnMapCheck check_;
     QString savedPreset_;
+    QString guessNotes_;  ///< what the values decided in the guess, as HTML lines
     QString guessDoubt_;  ///< why the starting column map may be wrong; empty when it reads well
     bool guessConfident_ = false;
 };

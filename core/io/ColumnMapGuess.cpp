@@ -203,7 +203,9 @@ ColumnMapCheck checkColumnMap(const std::string& head, const std::string& path, 
     std::istringstream in(head);
     const ImportResult read = importStream(in, head.size(), path, tried);
     if (!read.ok()) {
-        check.refusals.push_back(read.error->text());
+        // The dialog names the file already: the place in it and the message.
+        const ReadError& error = *read.error;
+        check.refusals.push_back((error.line > 0 ? "line " + std::to_string(error.line) + ": " : std::string()) + error.message);
         return check;
     }
     const std::vector<ImuSample>& samples = read.recording.samples;
