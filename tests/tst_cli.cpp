@@ -152,6 +152,7 @@ private slots:
     void screenshotOfAHeaderlessFile_finishes();
     void screenshotOfAFolderWithoutAPair_endsWithTheReason();
     void guiUnknownView_namesTheNearest();
+    void guiColumns_readTheFileAsTold();
     void guiHelpAndVersion_needNoDisplay_data();
     void guiHelpAndVersion_needNoDisplay();
 
@@ -1184,6 +1185,37 @@ void TestCli::guiUnknownView_namesTheNearest()
                                                               QStringLiteral("--screenshot"), png});
     QVERIFY2(shown == 0, qPrintable(shownErr));
     QVERIFY(QFileInfo(png).size() > 0);
+}
+
+void TestCli::guiColumns_readTheFileAsTold()
+{
+    // The workspace had no --columns or --import-preset: a file its guess reads wrong could not be
+    // opened from the command line.
+    const QString gui = QFileInfo(QString::fromUtf8(FOOTPATH_CLI)).dir().filePath(QStringLiteral("footpath"));
+    if (!QFileInfo(gui).isExecutable())
+        QSKIP("the footpath binary is not built");
+    QTemporaryDir work;
+    QStringList lines = readLines(walkCsv_).mid(1);  // headerless, the gyroscope before the accelerometer
+    for (QString& line : lines) {
+        QStringList cells = line.split(QLatin1Char(','));
+        const QStringList acc = cells.mid(1, 3), gyr = cells.mid(4, 3);
+        cells = QStringList{cells[0]} + gyr + acc;
+        line = cells.join(QLatin1Char(','));
+    }
+    const QString swapped = work.filePath(QStringLiteral("swapped.txt"));
+    QVERIFY(writeFile(swapped, lines.join(QLatin1Char('\n')).toUtf8() + "\n"));
+    const auto [guessed, guessedErr] = runGui(gui, work.path(), {swapped, QStringLiteral("--screenshot"), work.filePath("a.png")});
+    QVERIFY2(guessed == kExitBadInput && guessedErr.contains(QStringLiteral("not gravity")), qPrintable(guessedErr));
+    const QString map = QStringLiteral("time_s,gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z");
+    const QString png = work.filePath(QStringLiteral("b.png"));
+    const auto [told, toldErr] = runGui(gui, work.path(), {swapped, QStringLiteral("--columns"), map, QStringLiteral("--screenshot"), png});
+    QVERIFY2(told == 0, qPrintable(toldErr));
+    QVERIFY(QFileInfo(png).size() > 0);
+    const auto [badPreset, badPresetErr] =
+        runGui(gui, work.path(), {swapped, QStringLiteral("--import-preset"), QStringLiteral("no-such-preset"),
+                                  QStringLiteral("--screenshot"), png});
+    QCOMPARE(badPreset, kExitBadInput);
+    QVERIFY2(badPresetErr.contains(QStringLiteral("no-such-preset")), qPrintable(badPresetErr));
 }
 
 void TestCli::guiHelpAndVersion_needNoDisplay_data()

@@ -58,7 +58,7 @@ const char* const kImportOptions = R"(
 Import options (every format is detected from the content; these override or complete it):
   --format NAME              xsens-text, xsens-mtb, delimited, pyshoe-vicon
   --columns role,role,...    a file without a header: one role per column, from time_s, time_ms,
-                             time_us, counter, acc_x..z, gyr_x..z, mag_x..z, pressure_pa, skip
+                             time_us, counter, acc_x..z, gyr_x..z, mag_x..z, pressure_pa|hpa|kpa, skip
   --acc-unit mps2|g  --gyr-unit radps|degps  --time-unit s|ms|us  --rate HZ
   --import-preset NAME|FILE  read with a saved column map and units
   --save-import-preset NAME  save the column map and units given here under NAME

@@ -6,6 +6,7 @@
 #include "MainWindow.h"
 #include "RecordingLoader.h"
 #include "Result.h"
+#include "io/ImportPresets.h"
 #include "io/ParameterIo.h"
 #include "nav/BulkAllocator.h"
 
@@ -56,6 +57,21 @@ QString readParameters(const QString& preset, const QStringList& assignments, fo
     return problems.empty() ? QString() : QString::fromStdString(problems.front());
 }
 
+/// The import options --columns and --import-preset give (empty when neither is set); an error
+/// message on failure.
+QString readImportOptions(const QString& columns, const QString& presetName, footpath::ImportOptions& options)
+{
+    for (const QString& role : columns.split(QLatin1Char(','), Qt::SkipEmptyParts))
+        options.columnMap.push_back(role.trimmed().toStdString());
+    if (presetName.isEmpty())
+        return {};
+    footpath::ImportPreset preset;
+    if (const std::string problem = footpath::loadImportPreset(presetName.toStdString(), preset); !problem.empty())
+        return QString::fromStdString(problem);
+    footpath::applyImportPreset(preset, options);
+    return {};
+}
+
 /// The command line's options, declared once for the help-only run and the real one.
 struct GuiOptions {
     QCommandLineOption screenshot{"screenshot",
@@ -73,6 +89,14 @@ struct GuiOptions {
     QCommandLineOption view{
         "view", QCoreApplication::translate("main", "Show this view: signals, detector, states, trajectory2d, trajectory3d, motion, summary, steps or gait"),
         "name"};
+    QCommandLineOption columns{
+        "columns",
+        QCoreApplication::translate("main", "Read the recording with this column map, as footpath-cli does "
+                                            "(time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,...)"),
+        "roles"};
+    QCommandLineOption importPreset{
+        "import-preset", QCoreApplication::translate("main", "Read the recording with a saved import preset"),
+        "name|file"};
     QCommandLineOption compare{
         "compare",
         QCoreApplication::translate("main", "Open the method comparison and run these sets, e.g. \"zupt;zupt,zaru;feliz\""),
@@ -87,8 +111,8 @@ struct GuiOptions {
             "recording", QCoreApplication::translate("main", "Recording to open; two files (or a folder): the left and "
                                                              "the right foot of one walk"),
             "[recording [recording]]");
-        for (const QCommandLineOption* option : {&screenshot, &preset, &assignment, &view, &compare, &language,
-                                                 &connectPort})
+        for (const QCommandLineOption* option : {&screenshot, &preset, &assignment, &view, &compare, &columns,
+                                                 &importPreset, &language, &connectPort})
             parser.addOption(*option);
     }
 };
@@ -177,6 +201,13 @@ int main(int argc, char** argv)
         return 2;
     }
 
+    footpath::ImportOptions importOptions;
+    if (const QString error = readImportOptions(parser.value(options.columns), parser.value(options.importPreset), importOptions);
+        !error.isEmpty()) {
+        std::fprintf(stderr, "footpath: %s\n", qPrintable(error));
+        return 2;
+    }
+
     footpath::MainWindow window(settings);
     if (params != footpath::Parameters())
         window.session()->setParameters(params, QApplication::translate("main", "Parameters from the command line"));
@@ -196,6 +227,8 @@ int main(int argc, char** argv)
     const QStringList files = parser.positionalArguments();
     if (files.isEmpty())
         window.openRecording(QString::fromUtf8(kSampleWalk));
+    else if (files.size() == 1 && (parser.isSet(options.columns) || parser.isSet(options.importPreset)))
+        window.openRecording(files.first(), importOptions);
     else if (const QString problem = window.openRecordings(files); !problem.isEmpty()) {
         std::fprintf(stderr, "footpath: %s\n", qPrintable(problem));
         if (parser.isSet(screenshot))
