@@ -132,6 +132,30 @@ private slots:
         QCOMPARE(outcome.bestScore, outcome.baseScore);
     }
 
+    void searchSpaceHoldsOnlyAFootsRest()
+    {
+        // "Tune for this recording" set the shortest stance to 0.00096 s (strides 23 -> 29): the
+        // default space may not reach below a foot's rest.
+        for (const Parameters& base : {Parameters(), fixedThresholdBase()})
+            for (const TuneDimension& dimension : defaultTuneSpace(base))
+                if (dimension.name == "zv_min_stance_s")
+                    QVERIFY2(dimension.low >= kMinTunedStance_s, qPrintable(QString::number(dimension.low)));
+        const TuneOutcome outcome = tuneParameters(pointers_, Parameters(), TuneOptions{});
+        QVERIFY(outcome.error.empty());
+        QVERIFY(outcome.best.zv_min_stance_s >= kMinTunedStance_s);
+        // On these simulated walks the strides hold, and nothing is cautioned about.
+        QVERIFY2(outcome.cautions.empty(), outcome.cautions.empty() ? "" : outcome.cautions.front().c_str());
+    }
+
+    void stridesThatJumpAreCautionedAbout()
+    {
+        QCOMPARE(strideCaution({23, 0.05}, {29, 0.31}),
+                 std::string("strides 23 -> 29, stride length spread 0.05 -> 0.31 m"));
+        QCOMPARE(strideCaution({23, 0.05}, {24, 0.06}), std::string());  // within what tuning may change
+        QCOMPARE(strideCaution({10, 0.05}, {12, 0.05}), std::string("strides 10 -> 12"));
+        QCOMPARE(strideCaution({10, 0.10}, {10, 0.30}), std::string("stride length spread 0.1 -> 0.3 m"));
+    }
+
     void saysWhenNothingCanBeScored()
     {
         Recording open = walks_.front();

@@ -527,6 +527,24 @@ void TuneDialog::showOutcome(const TuneJobResult& result)
         showPathFigures(result.before->summary, result.after->summary);
         showPaths(result.before, result.after);
     }
+    showCautions(outcome.cautions);
+}
+
+/// What tuning changed beyond the figure (strides split or lost), said before the parameters are
+/// used, after the path-length warning when there is one.
+void TuneDialog::showCautions(const std::vector<std::string>& cautions)
+{
+    if (cautions.empty())
+        return;
+    QStringList lines;
+    if (warning_->isVisible() && !warning_->text().isEmpty())
+        lines << warning_->text();
+    lines << tr("Beware: the tuned parameters change the strides, not only the figure (a swing split in two or a "
+                "stance lost looks like this):");
+    for (const std::string& caution : cautions)
+        lines << QString::fromStdString(caution);
+    warning_->setText(lines.join(QLatin1Char('\n')));
+    warning_->setVisible(true);
 }
 
 void TuneDialog::showPathFigures(const Summary& before, const Summary& after)

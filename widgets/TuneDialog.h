@@ -140,6 +140,7 @@ private:
     void onFinished();
     void showOutcome(const TuneJobResult& result);
     /// The path's length and end-to-start distance before and after, and a warning when it changed much.
+    void showCautions(const std::vector<std::string>& cautions);
     void showPathFigures(const Summary& before, const Summary& after);
     void showPaths(const std::shared_ptr<const Result>& before, const std::shared_ptr<const Result>& after);
     void setStage(bool running, bool done);

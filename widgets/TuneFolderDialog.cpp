@@ -438,9 +438,17 @@ void TuneFolderDialog::onFinished()
                                             result.bestScore);
         const QString how = result.cancelled ? tr("Stopped after %n evaluation(s).", nullptr, result.evaluations)
                                              : tr("Done: %n evaluation(s).", nullptr, result.evaluations);
-        message_->setText(how + QLatin1Char(' ')
-                          + (changed == 0 ? tr("No better parameters were found; the current ones stay.")
-                                          : tr("Save them as a preset, or apply them to the workspace.")));
+        QString text = how + QLatin1Char(' ')
+                       + (changed == 0 ? tr("No better parameters were found; the current ones stay.")
+                                       : tr("Save them as a preset, or apply them to the workspace."));
+        if (!result.cautions.empty()) {
+            QStringList cautions;
+            for (const std::string& caution : result.cautions)
+                cautions << QString::fromStdString(caution);
+            text += QLatin1Char('\n') + tr("Beware: the tuned parameters change the strides, not only the figure: %1")
+                                            .arg(cautions.join(QStringLiteral("; ")));
+        }
+        message_->setText(text);
     }
     setStage(false, true);
     emit tuningFinished();

@@ -83,6 +83,8 @@ void printText(const TuneInputs& inputs, const TuneOutcome& outcome, TuneCriteri
         std::printf("no setting beat the starting parameters; the preset holds them unchanged\n");
     for (const auto& [name, values] : changed)
         std::printf("%-24s %.6g -> %.6g\n", name.c_str(), values.first, values.second);
+    for (const std::string& caution : outcome.cautions)
+        std::printf("caution     %s: the tuned parameters change the strides, not only the figure\n", caution.c_str());
     std::printf("saved       %s\n", presetPath.c_str());
 }
 
@@ -98,6 +100,9 @@ void printJson(const TuneInputs& inputs, const TuneOutcome& outcome, TuneCriteri
         }
         rows.append(row);
     }
+    QJsonArray cautions;
+    for (const std::string& caution : outcome.cautions)
+        cautions.append(QString::fromStdString(caution));
     QJsonObject changed;
     for (const auto& [name, values] : changedParameters(base, outcome.best))
         changed[QString::fromStdString(name)] = QJsonArray{values.first, values.second};
@@ -108,6 +113,7 @@ void printJson(const TuneInputs& inputs, const TuneOutcome& outcome, TuneCriteri
                            {"after", outcome.bestScore},
                            {"recordings", rows},
                            {"changed", changed},
+                           {"cautions", cautions},
                            {"preset", QString::fromStdString(presetPath)}};
     std::cout << QJsonDocument(json).toJson().toStdString();
 }

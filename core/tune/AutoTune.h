@@ -29,6 +29,20 @@ struct TuneDimension {
     bool logScale = false;
 };
 
+/// The shortest stance the default search space allows: a shorter one is no rest of a foot.
+constexpr double kMinTunedStance_s = 0.03;
+
+/// A walk's strides as tuning watches them: how many, and how much their lengths vary.
+struct StrideFigures {
+    std::size_t count = 0;
+    double lengthSpread_m = 0.0;  ///< sample standard deviation of the stride lengths
+};
+
+/// What tuned parameters changed about a walk's strides that a better figure cannot explain: the
+/// count by more than 10 % (two strides at least), or the lengths' spread past 1.5 times and
+/// 5 cm more ("strides 23 -> 29, stride length spread 0.05 -> 0.31 m"); empty when they held.
+std::string strideCaution(const StrideFigures& before, const StrideFigures& after);
+
 /// The default search space: the adaptive detector (offset, fraction, "never" bound, minimum stance)
 /// and the filter's noise (Q velocity, Q attitude, R ZUPT); with the C1/C2/C3 detector its three
 /// bounds instead of the adaptive ones.
@@ -65,6 +79,10 @@ struct TuneOutcome {
     int evaluations = 0;
     bool cancelled = false;
     std::string error;  ///< empty on success: no recording has what the criterion needs, a bad space
+    /// Changes of the best parameters that a better figure cannot explain, one line a recording
+    /// ("walk.csv: strides 23 -> 29, stride length spread 0.05 -> 0.31 m"): a swing split into
+    /// two, a stance lost. Said before the parameters are used; empty when the strides held.
+    std::vector<std::string> cautions;
 };
 
 /// Searches the space for the parameters that minimise the mean criterion over the recordings: the
