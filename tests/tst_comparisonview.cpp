@@ -183,6 +183,21 @@ private slots:
         window.session()->undoStack()->undo();
         QVERIFY(window.session()->parameters() == before);
 
+        // Parameters changed (as "Use the tuned parameters" changes them): the window marks the
+        // comparison stale, and the PDF says so too (it passed the rows off as current).
+        Parameters tuned = window.session()->parameters();
+        tuned.r_zupt_mps *= 2.0;
+        window.session()->setParameters(tuned, QStringLiteral("Tuned parameters"));
+        QVERIFY(panel->isStale());
+        if (!QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty()) {
+            const QString pdf = dir_.filePath("stale.pdf");
+            QVERIFY(window.writeReport(pdf).isEmpty());
+            const QString text = pdfText(pdf).simplified();
+            QVERIFY2(text.contains(QStringLiteral("Method comparison (stale)")), qPrintable(text.left(400)));
+            QVERIFY(text.contains(QStringLiteral("Run the comparison again to update it")));
+        }
+        window.session()->undoStack()->undo();
+
         // Closing the panel takes the paths away; no comparison in the report then.
         window.findChild<QDockWidget*>(QStringLiteral("comparisonDock"))->close();
         QVERIFY(view2D->overlayCurves().empty());

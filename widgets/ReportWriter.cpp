@@ -473,11 +473,15 @@ void writeWarnings(PageComposer& page, const Result& result)
 }
 
 /// The comparison table as the window shows it, the best value per column in bold with a star.
-void writeComparison(PageComposer& page, const std::vector<ComparisonRow>& rows)
+void writeComparison(PageComposer& page, const std::vector<ComparisonRow>& rows, bool stale)
 {
     if (rows.empty())
         return;
-    page.heading(tr("Method comparison"));
+    page.heading(stale ? tr("Method comparison (stale)") : tr("Method comparison"));
+    if (stale)
+        page.paragraph(tr("Stale: the parameters changed after this comparison ran, so its rows were estimated with "
+                          "other parameters than the rest of this report. Run the comparison again to update it."),
+                       9.0, true);
     page.paragraph(tr("Every method set run on this recording with the same detector and noise parameters; the best "
                       "value of a column is in bold and marked %1.").arg(bestMarker().trimmed()));
     const std::vector<ComparisonColumn> columns = comparisonColumns(rows);
@@ -670,7 +674,7 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
     writeGait(page, content);
     writeWarnings(page, *content.result);
     writeMethodNotes(page, *content.result);
-    writeComparison(page, content.comparison);
+    writeComparison(page, content.comparison, content.comparisonStale);
     // The heading with its first figure (at its smallest), not alone at the foot of a page.
     page.ensureRoom(page.mm(12 + 0.65 * 110 + 8));
     page.heading(tr("Figures"));

@@ -28,6 +28,9 @@ struct ReportContent {
     QString device;                                      ///< sensor/device when known
     /// The window's method comparison, when it has one: a "Method comparison" section.
     std::vector<ComparisonRow> comparison;
+    /// The parameters changed since the comparison ran (the window marks it stale): the section
+    /// says so instead of passing the rows off as this report's.
+    bool comparisonStale = false;
     /// Both feet open: the result is the left foot's, otherPaths holds the right's path in its
     /// frame (drawn in the path figures), bothFeet the double support and symmetry ("Both feet").
     QString pathLabel;  ///< the main path's key entry; empty: "Foot path"

@@ -460,8 +460,10 @@ ReportContent MainWindow::reportContent() const
     content.result = session_->result();
     content.parameters = session_->parameters();
     content.parameterSource = content.parameters == Parameters() ? tr("defaults") : tr("adjusted in the window");
-    if (comparisonDock_ && !comparisonDock_->isHidden())
+    if (comparisonDock_ && !comparisonDock_->isHidden()) {
         content.comparison = comparison_->rows();
+        content.comparisonStale = comparison_->isStale();
+    }
     if (otherFoot_->isActive()) {
         content.pathLabel = tr("Left foot");
         content.otherPaths = otherFootOverlays();
