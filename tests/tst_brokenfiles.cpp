@@ -45,7 +45,15 @@ private slots:
         QTest::newRow("empty") << QByteArray() << "" << 0 << "the file is empty";
         QTest::newRow("blank lines only") << QByteArray("\n \n\t\n") << "" << 0 << "the file is empty";
         QTest::newRow("binary junk") << randomBytes(4096, 1, 'x') << "" << 0
-                                     << "binary content that is not an Xsens .mtb log";
+                                     << "binary content of no format Footpath knows";
+        // A container is named for what it is (a .mat was called "not an Xsens .mtb log").
+        QByteArray mat("MATLAB 5.0 MAT-file, Platform: GLNXA64, Created on: Mon Nov 30 10:00:00 2026");
+        mat.append(QByteArray(128 - mat.size(), ' ') + randomBytes(1024, 3, '\x0e'));
+        QTest::newRow("MATLAB v5") << mat << "" << 0 << "a MATLAB .mat file (v5), a format Footpath does not read";
+        QTest::newRow("HDF5") << QByteArray("\x89HDF\r\n\x1a\n", 8) + randomBytes(512, 4, '\0') << "" << 0
+                              << "an HDF5 file";
+        QTest::newRow("SQLite") << QByteArray("SQLite format 3\0", 16) + randomBytes(512, 5, '\x10') << "" << 0
+                                << "an SQLite database";
         QTest::newRow("UTF-16") << QByteArray("\xFF\xFEt\0i\0m\0e\0", 10) << "" << 0 << "UTF-16 text";
         QTest::newRow("wrong delimiter") << QByteArray("time_s|acc_x|acc_y|acc_z|gyr_x|gyr_y|gyr_z\n0|0|0|9.8|0|0|0\n")
                                          << "" << 1 << "one column only";

@@ -26,6 +26,7 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QTableView>
+#include <QMenu>
 #include <QMenuBar>
 #include <QSignalSpy>
 #include <QSlider>
@@ -441,6 +442,12 @@ private slots:
         QVERIFY2(listed.filter(open + QStringLiteral("=File > Open recording")).size() == 1, qPrintable(listed.join('\n')));
         QVERIFY2(listed.filter(compare + QStringLiteral("=Analysis > Compare methods")).size() == 1,
                  qPrintable(listed.join('\n')));
+        // Ctrl+1..7 go down the View menu in order (States was Ctrl+7, between 4 and 5).
+        QStringList numbered;
+        for (QAction* action : window.findChild<QMenu*>(QStringLiteral("viewMenu"))->actions())
+            if (const QKeySequence key = action->shortcut(); key.count() == 1 && key[0].key() >= Qt::Key_1 && key[0].key() <= Qt::Key_9)
+                numbered << action->shortcut().toString(QKeySequence::PortableText);
+        QCOMPARE(numbered, (QStringList{"Ctrl+1", "Ctrl+2", "Ctrl+3", "Ctrl+4", "Ctrl+5", "Ctrl+6", "Ctrl+7"}));
     }
 
     void germanTranslationIsUsed()

@@ -71,6 +71,21 @@ private slots:
         QCOMPARE(history.previous()->parameters.gyr_max_radps, 1.5);
     }
 
+    void afterAnUndoTheLatestChangeIsTheUndoneOneReversed()
+    {
+        // "Last change" said "First run" after an undo back to the first run (its own change).
+        RunHistory history;
+        record(history, 1.0, 40.0, nullptr, 0);
+        record(history, 1.5, 43.0, &stepA, 1);
+        QVERIFY2(history.latestChange().contains(QStringLiteral("1 \u2192 1.5")), qPrintable(history.latestChange()));
+        record(history, 1.0, 40.0, nullptr, 0);  // undo
+        QCOMPARE(history.current()->number, 1);
+        const QString change = history.latestChange();
+        QVERIFY2(change.startsWith(QStringLiteral("Back to run 1: ")), qPrintable(change));
+        QVERIFY2(change.contains(QStringLiteral("1.5 \u2192 1")), qPrintable(change));
+        QVERIFY(!change.contains(QStringLiteral("First run")));
+    }
+
     void goingBackFindsTheRunAgainAndThePreviousIsTheOneLeft()
     {
         RunHistory history;

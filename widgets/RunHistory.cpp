@@ -115,6 +115,16 @@ void RunHistory::makeCurrent(int row)
     emit currentChanged();
 }
 
+QString RunHistory::latestChange() const
+{
+    const Run* before = previous();
+    const Run* now = current();
+    if (!before || !now)
+        return {};
+    return now->number < before->number ? tr("Back to run %1: %2").arg(now->number).arg(describeChange(before->parameters, now->parameters))
+                                        : describeChange(before->parameters, now->parameters);
+}
+
 const Run* RunHistory::runAt(int row) const
 {
     return row >= 0 && row < rowCount() ? &runs_[static_cast<std::size_t>(row)] : nullptr;

@@ -70,6 +70,9 @@ public:
 
     const Run* current() const;
     const Run* previous() const;  ///< the run current before the latest change; null for none
+    /// What the latest change did, from previous() to current(): after an undo back to an earlier
+    /// run, the undone change reversed (not the earlier run's own "First run"); empty without both.
+    QString latestChange() const;
     const Run* runAt(int row) const;
     int currentRow() const;
 

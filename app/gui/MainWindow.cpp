@@ -291,6 +291,7 @@ void MainWindow::createEditMenu()
 void MainWindow::createViewMenu()
 {
     viewMenu_ = menuBar()->addMenu(tr("&View"));
+    viewMenu_->setObjectName(QStringLiteral("viewMenu"));
     viewMenu_->addAction(tr("&Trajectory 2D"), QKeySequence(Qt::CTRL | Qt::Key_1), this,
                          [this] { trajectoryTabs_->setCurrentWidget(trajectory2D_); });
     viewMenu_->addAction(tr("Trajectory &3D"), QKeySequence(Qt::CTRL | Qt::Key_2), this,
@@ -299,11 +300,12 @@ void MainWindow::createViewMenu()
                          [this] { signalTabs_->setCurrentWidget(signalPlots_); });
     viewMenu_->addAction(tr("Stance &detector"), QKeySequence(Qt::CTRL | Qt::Key_4), this,
                          [this] { signalTabs_->setCurrentWidget(flags_); });
-    viewMenu_->addAction(tr("S&tates"), QKeySequence(Qt::CTRL | Qt::Key_7), this,
+    // Numbered in the menu's order: the recorded walk's views, then the live ones.
+    viewMenu_->addAction(tr("S&tates"), QKeySequence(Qt::CTRL | Qt::Key_5), this,
                          [this] { signalTabs_->setCurrentWidget(statePlots_); });
-    viewMenu_->addAction(tr("&Live path"), QKeySequence(Qt::CTRL | Qt::Key_5), this,
+    viewMenu_->addAction(tr("&Live path"), QKeySequence(Qt::CTRL | Qt::Key_6), this,
                          [this] { trajectoryTabs_->setCurrentWidget(live_->views()->trajectory2D()); });
-    viewMenu_->addAction(tr("Live si&gnals"), QKeySequence(Qt::CTRL | Qt::Key_6), this,
+    viewMenu_->addAction(tr("Live si&gnals"), QKeySequence(Qt::CTRL | Qt::Key_7), this,
                          [this] { signalTabs_->setCurrentWidget(live_->views()->signalPlots()); });
     addPathColouringMenu();
     viewMenu_->addSeparator();
@@ -791,7 +793,7 @@ void MainWindow::showGhost()
         trajectory3D_->setGhostPath(ghost ? ghost->position_m : none);
     }
     if (before && now)
-        summary_->showChange(&before->figures, now->figures, now->change);
+        summary_->showChange(&before->figures, now->figures, history_->latestChange());
     else
         summary_->showChange(nullptr, RunFigures(), QString());
 }

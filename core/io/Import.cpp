@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 namespace footpath {
 
@@ -72,6 +73,26 @@ std::string firstLineOf(const std::string& head)
     return line;
 }
 
+/// What a container format the file is in says of itself at its start ("a MATLAB .mat file (v5)"),
+/// or empty: such a file is named for what it is, not called a broken log.
+std::string knownContainer(const std::string& head)
+{
+    const auto startsWith = [&head](std::string_view magic) { return head.compare(0, magic.size(), magic) == 0; };
+    if (startsWith("MATLAB 7.3 MAT-file"))
+        return "a MATLAB .mat file (v7.3, HDF5)";
+    if (startsWith("MATLAB 5.0 MAT-file"))
+        return "a MATLAB .mat file (v5)";
+    if (startsWith("\x89HDF\r\n\x1a\n"))
+        return "an HDF5 file";
+    if (startsWith(std::string_view("SQLite format 3\0", 16)))
+        return "an SQLite database (a ROS 2 bag?)";
+    if (startsWith("PK\x03\x04"))
+        return "a ZIP archive (unpack it first)";
+    if (startsWith("\x1f\x8b"))
+        return "a gzip-compressed file (unpack it first)";
+    return {};
+}
+
 /// Which reader a file needs, from its content; an error message when none fits.
 std::string detectFormat(const std::string& head, const ImportOptions& options, std::string& error)
 {
@@ -79,10 +100,14 @@ std::string detectFormat(const std::string& head, const ImportOptions& options, 
         error = "UTF-16 text (byte-order mark at byte 0): save the file as UTF-8 or plain ASCII";
         return {};
     }
+    if (const std::string container = knownContainer(head); !container.empty()) {
+        error = container + ", a format Footpath does not read: export its samples as CSV (time, acc, gyr)";
+        return {};
+    }
     if (looksBinary(head)) {
         if (!head.empty() && static_cast<unsigned char>(head.front()) == 0xFA)
             return "xsens-mtb";
-        error = "binary content that is not an Xsens .mtb log (it does not start with the Xbus preamble 0xFA)";
+        error = "binary content of no format Footpath knows (an Xsens .mtb log starts with the Xbus preamble 0xFA)";
         return {};
     }
     if (head.find_first_not_of(" \t\r\n") == std::string::npos) {
