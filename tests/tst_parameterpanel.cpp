@@ -238,8 +238,9 @@ private slots:
             const SliderScale scale = SliderScale::forField(f, parameterValue(Parameters(), f));
             const QByteArray name(f.name);
             QCOMPARE(scale.toValue(0), scale.hasZeroStop() ? 0.0 : f.minimum);
-            QCOMPARE(scale.toValue(scale.maximumPosition()), f.maximum);
-            QCOMPARE(scale.toPosition(f.maximum), scale.maximumPosition());
+            QCOMPARE(scale.toValue(scale.maximumPosition()), scale.sliderMaximum());
+            QVERIFY(scale.sliderMaximum() <= f.maximum);
+            QCOMPARE(scale.toPosition(f.maximum), scale.maximumPosition());  // a larger typed value: the end
             QCOMPARE(scale.toPosition(scale.hasZeroStop() ? 0.0 : f.minimum), 0);
             for (int position = 0; position <= scale.maximumPosition(); ++position) {
                 const double value = scale.toValue(position);
@@ -248,6 +249,30 @@ private slots:
                          qPrintable(QStringLiteral("%1 position %2 -> %3").arg(f.name).arg(position).arg(value)));
             }
         }
+    }
+
+    void aWideLinearRangeSpansTheUsefulValues()
+    {
+        // A 50-pixel drag moved the shortest stance from 0.02 to 0.66 s: its slider spanned the
+        // whole 0-2 s range. It spans 0-0.5 s now (ten times the default 0.05 s), and the field
+        // still takes anything up to 2 s.
+        const SliderScale stance = scaleOf("zv_min_stance_s");
+        QCOMPARE(stance.sliderMaximum(), 0.5);
+        QCOMPARE(stance.toPosition(1.5), stance.maximumPosition());
+        const double perPosition = (stance.toValue(stance.maximumPosition()) - stance.toValue(0)) / stance.maximumPosition();
+        QVERIFY(perPosition <= 0.5e-3 + 1e-12);
+        QStringList spanned;
+        for (const ParameterField& f : parameterFields())
+            if (f.kind == ParameterField::Kind::Real) {
+                const SliderScale scale = SliderScale::forField(f, parameterValue(Parameters(), f));
+                if (scale.sliderMaximum() < f.maximum)
+                    spanned << QStringLiteral("%1 0-%2 of %3").arg(f.name).arg(scale.sliderMaximum()).arg(f.maximum);
+                // Every default is on its slider, never beyond the end.
+                QVERIFY2(parameterValue(Parameters(), f) <= scale.sliderMaximum(), f.name);
+            }
+        qInfo("%s", qPrintable(spanned.join(QStringLiteral("; "))));
+        ParameterPanel panel;
+        QVERIFY(panel.findChild<QSlider*>("slider_zv_min_stance_s")->toolTip().contains(QStringLiteral("the slider up to 0.5")));
     }
 
     void theLogMappingHitsTheMiddleWithinOnePosition_data()

@@ -41,6 +41,9 @@ constexpr int kPositionsPerDecade = 100;
 constexpr int kLinearSteps = 1000;
 constexpr int kDecadesBelowMaximum = 6;
 constexpr int kLogSignificantDigits = 3;
+/// A linear slider from 0 spans up to this many times the default (rounded up to 1, 2, 2.5 or 5
+/// times a power of ten) when the field's maximum lies beyond.
+constexpr double kLinearSpanOfDefault = 10.0;
 
 int decimalExponent(double value)
 {
@@ -71,6 +74,16 @@ double lowestPositiveFor(double maximum, double defaultValue)
     if (defaultValue > 0.0 && defaultValue < lowest)
         return std::pow(10.0, decimalExponent(defaultValue));
     return lowest;
+}
+
+/// The smallest 1, 2, 2.5 or 5 times a power of ten at or above value (> 0).
+double roundNumberAtLeast(double value)
+{
+    const double power = std::pow(10.0, decimalExponent(value));
+    for (const double mantissa : {1.0, 2.0, 2.5, 5.0})
+        if (mantissa * power >= value * (1.0 - 1e-12))
+            return mantissa * power;
+    return 10.0 * power;
 }
 
 QLocale numberLocale()
@@ -123,11 +136,14 @@ SliderScale SliderScale::forField(const ParameterField& field, double defaultVal
     SliderScale scale;
     scale.minimum_ = field.minimum;
     scale.maximum_ = field.maximum;
+    scale.sliderMaximum_ = field.maximum;
     const bool positiveRangeSpansDecades = field.minimum > 0.0 && field.maximum / field.minimum >= 100.0;
     const bool smallValuesAboveZero =
         field.minimum == 0.0 && field.maximum > 0.0 && defaultValue < field.maximum / 100.0;
     if (!positiveRangeSpansDecades && !smallValuesAboveZero) {
         scale.steps_ = kLinearSteps;
+        if (field.minimum == 0.0 && defaultValue > 0.0)
+            scale.sliderMaximum_ = std::min(field.maximum, roundNumberAtLeast(kLinearSpanOfDefault * defaultValue));
         return scale;
     }
     scale.logarithmic_ = true;
@@ -149,7 +165,7 @@ int SliderScale::toPosition(double value) const
     if (std::isnan(value))
         return 0;
     if (!logarithmic_) {
-        const double fraction = (value - minimum_) / (maximum_ - minimum_);
+        const double fraction = (value - minimum_) / (sliderMaximum_ - minimum_);
         return std::clamp(static_cast<int>(std::lround(fraction * steps_)), 0, steps_);
     }
     if (zeroStop_ && value <= 0.0)
@@ -171,8 +187,8 @@ double SliderScale::linearValue(int position) const
     if (position == 0)
         return minimum_;
     if (position == steps_)
-        return maximum_;
-    const double step = (maximum_ - minimum_) / steps_;
+        return sliderMaximum_;
+    const double step = (sliderMaximum_ - minimum_) / steps_;
     return roundToDecimalExponent(minimum_ + position * step, decimalExponent(step));
 }
 
@@ -351,9 +367,13 @@ QString fieldToolTip(const ParameterField& field, double defaultValue)
     if (field.kind == ParameterField::Kind::Choice)
         return ParameterPanel::tr("%1<br>Choices in presets: %2<br>Default: %3")
             .arg(head, choiceNames(field), QString::fromUtf8(field.choiceNames.at(static_cast<std::size_t>(defaultValue))));
-    return ParameterPanel::tr("%1<br>Range: %2 to %3 %4<br>Default: %5 %4<br>Up/Down in the value field: one slider "
+    const double sliderEnd = SliderScale::forField(field, defaultValue).sliderMaximum();
+    const QString span = sliderEnd < field.maximum
+                             ? ParameterPanel::tr(" (the slider up to %1; type a larger value)").arg(formatValue(sliderEnd))
+                             : QString();
+    return ParameterPanel::tr("%1<br>Range: %2 to %3 %4%6<br>Default: %5 %4<br>Up/Down in the value field: one slider "
                               "step; Page Up/Down: ten")
-        .arg(head, formatValue(field.minimum), formatValue(field.maximum), unitText(field), formatValue(defaultValue));
+        .arg(head, formatValue(field.minimum), formatValue(field.maximum), unitText(field), formatValue(defaultValue), span);
 }
 
 }  // namespace

@@ -33,6 +33,11 @@ namespace footpath {
 /// the default if the default is smaller, so the default is always on the scale). Everything else
 /// (the detector thresholds, gravity, declination) is linear.
 ///
+/// A linear field from 0 whose default is far below its maximum (the shortest stance: 0.05 of up
+/// to 2 s) spans only up to the round number (1, 2, 2.5, 5 x 10^n) at or above ten times the default: over the whole
+/// range a 50-pixel drag moved it from 0.02 to 0.66 s. Values beyond are typed; the slider then
+/// rests at its end.
+///
 /// Resolution: 100 positions per decade (2.3 % per position) or 1000 over a linear range. Values
 /// from a position are rounded to 3 significant digits (log) or to the power of ten at or below one
 /// position (linear), so the numeric field shows tidy numbers; the rounding never moves a value to
@@ -47,6 +52,9 @@ public:
     int pageStep() const;
     int toPosition(double value) const;
     double toValue(int position) const;
+    /// The value at the slider's far end: the field's maximum, or less where the slider spans
+    /// only the useful part of a wide linear range.
+    double sliderMaximum() const { return sliderMaximum_; }
 
 private:
     int firstLogPosition() const { return zeroStop_ ? 1 : 0; }
@@ -55,6 +63,7 @@ private:
 
     double minimum_ = 0.0;
     double maximum_ = 1.0;
+    double sliderMaximum_ = 1.0;
     double lowestPositive_ = 1.0;  ///< value at the first logarithmic position
     bool logarithmic_ = false;
     bool zeroStop_ = false;
