@@ -126,6 +126,36 @@ private slots:
         QVERIFY2(!negativeZero.hasMatch(), qPrintable(negativeZero.captured()));
     }
 
+    void valuesStayWholeAndTablesStartWithTheirRows()
+    {
+        // A tuned value was printed "0.\n000958747" (wrapped after its point), and the Parameters
+        // table started with its heading and two rows at a page's foot.
+        QTemporaryDir dir;
+        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), WalkSimulatorConfig());
+        ReportContent content;
+        content.recordingPath = "simulated.csv";
+        content.recording = std::make_shared<const Recording>(walk.recording);
+        content.parameters.q_vel_mps = 0.000958747;
+        content.parameters.zv_min_stance_s = 0.0412345;
+        content.result = std::make_shared<const Result>(runPipeline(*content.recording, content.parameters).result);
+        const QString pdf = outputDir(dir) + "/wide-values-report.pdf";
+        QCOMPARE(writePdfReport(content, pdf), QString());
+        const QString text = run("pdftotext", {"-layout", pdf, "-"});
+        QVERIFY(text.contains(QRegularExpression("\\* q_vel_mps\\s+0\\.000958747\\s")));
+        QVERIFY(text.contains(QRegularExpression("\\* zv_min_stance_s\\s+0\\.0412345\\s")));
+        // The page that holds a table's heading holds its first rows too.
+        const QStringList pages = text.split(QLatin1Char('\f'));
+        for (const auto& [heading, firstRows] :
+             {std::pair{QStringLiteral("Parameters ("), QStringList{"alignment_s", "gravity_mps2", "declination_rad", "detector"}},
+              std::pair{QStringLiteral("Steps\n"), QStringList{"Stance from", "\n1 ", "\n2 ", "\n3 "}}}) {
+            const auto page = std::find_if(pages.begin(), pages.end(), [&](const QString& p) { return p.contains(heading); });
+            QVERIFY2(page != pages.end(), qPrintable(heading));
+            for (const QString& row : firstRows)
+                QVERIFY2(QString(*page).replace(QRegularExpression("\n[ \t]+"), "\n").contains(row),
+                         qPrintable(heading + " without " + row));
+        }
+    }
+
     void aLongWalksPathFigureLeavesOutItsStanceMarkers()
     {
         // 600 m straight on: strides of 1.4 m are about 2 px apart on the page's path figures, so

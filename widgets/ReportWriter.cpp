@@ -37,6 +37,8 @@ QString tr(const char* text)
 /// writer's device units; sizes are given in millimetres and converted once.
 class PageComposer {
 public:
+    static constexpr int kRowsKeptWithHeading = 5;
+
     PageComposer(QPdfWriter& writer, QCPPainter& painter) : writer_(writer), painter_(painter)
     {
         unitsPerMm_ = writer.resolution() / 25.4;
@@ -88,6 +90,20 @@ public:
             drawRow(rows[r], widths, font, rowHeight, header && r == 0);
         }
         y_ += mm(2);
+    }
+
+    /// Starts a new page unless the heading, the table's header and its first rows (up to
+    /// kRowsKeptWithHeading) fit on this one: a heading and two rows at a page's foot, the rest on
+    /// the next page, read as an orphan.
+    void keepHeadingWithTable(const QList<QStringList>& rows, const QList<double>& widths, double sizePt = 8.5)
+    {
+        QFont font = painter_.font();
+        font.setPointSizeF(sizePt);
+        const double lineHeight = QFontMetricsF(font, &writer_).height() * 1.35;
+        double height = mm(12);  // the heading's room, as heading() keeps it
+        for (int r = 0; r < rows.size() && r <= kRowsKeptWithHeading; ++r)
+            height += rowHeightFor(rows[r], widths, font, lineHeight, r == 0);
+        ensureRoom(height);
     }
 
     /// A figure of the given height with a caption; draw() paints into the rectangle it is given.
@@ -679,10 +695,17 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
     page.ensureRoom(page.mm(12 + 0.65 * 110 + 8));
     page.heading(tr("Figures"));
     drawFigures(page, painter, content);
+    // The values' columns as wide as a number of six digits in bold ("0.000958747" wrapped after
+    // its point at 0.12 of the page).
+    const QList<QStringList> parameters = parameterRows(content.parameters);
+    const QList<double> parameterWidths{0.22, 0.15, 0.13, 0.08, 0.42};
+    page.keepHeadingWithTable(parameters, parameterWidths, 7.5);
     page.heading(tr("Parameters (* and bold: differs from the default)"));
-    page.table(parameterRows(content.parameters), {0.2, 0.12, 0.12, 0.1, 0.46}, 7.5);
+    page.table(parameters, parameterWidths, 7.5);
+    const QList<QStringList> steps = stepRows(*content.result);
+    page.keepHeadingWithTable(steps, stepColumnWidths(*content.result), 7.5);
     page.heading(tr("Steps"));
-    page.table(stepRows(*content.result), stepColumnWidths(*content.result), 7.5);
+    page.table(steps, stepColumnWidths(*content.result), 7.5);
     // What reading the file raised, apart from the plausibility of the result (its own section).
     page.heading(tr("Import notes (reading the file)"));
     for (const std::string& note : content.recording->reference.notes)
