@@ -2,6 +2,7 @@
 #include "DecimatedGraph.h"
 #include "DeferredReplot.h"
 #include "LegendChecks.h"
+#include "PlotInteraction.h"
 #include "WarningOverlay.h"
 #include "detect/StanceDetector.h"
 #include "nav/Pipeline.h"
@@ -303,6 +304,50 @@ private slots:
         plots.setResult(std::make_shared<const Result>(standing));
         QTRY_COMPARE(wholeReplots.count(), 1);
         QVERIFY(!legendNames(plots, QStringLiteral("Stance")));
+    }
+
+    void aPressureRowsTicksAreRoundAndDistinct()
+    {
+        // The pressure row, made when a file with pressure opens, kept QCustomPlot's own ticker:
+        // 1004, 1003.75, 1003.5 (or 997.25, 997.225) and, in a small row, labels on each other.
+        Walk walk = simulatedWalk(false, true);
+        auto recording = std::make_shared<Recording>(*walk.recording);
+        for (std::size_t k = 0; k < recording->samples.size(); ++k)  // 997.2 hPa, a few Pa of wobble
+            recording->samples[k].pressure_pa = 99722.0 + 3.0 * std::sin(0.01 * static_cast<double>(k));
+        SignalPlots plots;
+        plots.resize(600, 700);
+        plots.show();
+        plots.setRecording(recording);
+        plots.setResult(walk.result);
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        plots.plot()->replot();
+        QCPAxis* pressure = plots.axisRect(Row::Pressure)->axis(QCPAxis::atLeft);
+        QVERIFY(dynamic_cast<ReadableTicker*>(pressure->ticker().data()));
+        plots.plot()->replot();  // the ticks of the ticker the first pass gave
+        const QVector<QString> labels = pressure->tickVectorLabels();
+        QVERIFY(labels.size() >= 2);
+        QCOMPARE(QSet<QString>(labels.begin(), labels.end()).size(), labels.size());
+        const double spacing = std::abs(pressure->coordToPixel(pressure->tickVector()[1]) - pressure->coordToPixel(pressure->tickVector()[0]));
+        QVERIFY2(spacing >= QFontMetrics(pressure->tickLabelFont()).height(), qPrintable(QString::number(spacing)));
+    }
+
+    void warningLabelsStayInsideTheirSpanOrBesideIt()
+    {
+        // "height vs barometer" ran past its bar and out of the lane at the plot's right edge.
+        const LabelPlace fits = warningLabelPlace(60, 30, 100, 200, 0, 500);
+        QVERIFY(fits.inside);
+        QCOMPARE(fits.start, 103.0);
+        QCOMPARE(fits.width, 60.0);
+        const LabelPlace elided = warningLabelPlace(120, 30, 100, 200, 0, 500);  // elided to the bar
+        QVERIFY(elided.inside);
+        QCOMPARE(elided.width, 94.0);
+        const LabelPlace after = warningLabelPlace(120, 30, 100, 110, 0, 500);  // a narrow bar: beside it
+        QVERIFY(!after.inside);
+        QCOMPARE(after.start, 113.0);
+        const LabelPlace before = warningLabelPlace(120, 30, 450, 460, 0, 500);  // at the lane's end: before it
+        QVERIFY(!before.inside);
+        QVERIFY(before.start + before.width <= 447.0);
+        QCOMPARE(before.width, 120.0);
     }
 
     void warningsAreShadedInEveryRowWithALane()

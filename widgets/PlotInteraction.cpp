@@ -94,6 +94,11 @@ QString csvNumber(double value)
 
 }  // namespace
 
+/// The least room between tick labels: a line of text and a gap up an axis, a number and a gap
+/// along it.
+constexpr int kMinTickSpacingVertical_px = 26;
+constexpr int kMinTickSpacingHorizontal_px = 70;
+
 QString formatPlotNumber(double value, int decimals)
 {
     QString text = QString::number(value, 'f', std::max(0, decimals));
@@ -148,6 +153,13 @@ void useReadableTicks(QCustomPlot* plot)
             const QCPAxisTicker* ticker = axis->ticker().data();
             if (axis->scaleType() == QCPAxis::stLinear && ticker != nullptr && typeid(*ticker) == typeid(QCPAxisTicker))
                 axis->setTicker(QSharedPointer<ReadableTicker>::create());
+            // As many ticks as the axis has room for: a 70-pixel row's five labels touched.
+            if (auto* readable = dynamic_cast<ReadableTicker*>(axis->ticker().data())) {
+                const bool vertical = axis->orientation() == Qt::Vertical;
+                const int length = vertical ? rect->height() : rect->width();
+                const int spacing = vertical ? kMinTickSpacingVertical_px : kMinTickSpacingHorizontal_px;
+                readable->setTickCount(std::clamp(length / spacing, 2, 6));
+            }
         }
     }
 }
@@ -252,7 +264,9 @@ PlotInteraction::PlotInteraction(QCustomPlot* plot) : QObject(plot), plot_(plot)
         menu->setAttribute(Qt::WA_DeleteOnClose);
         menu->popup(plot_->mapToGlobal(pos));
     });
-    useReadableTicks(plot_);
+    // Rows added after this (a pressure row appears with a file that has one) get round ticks
+    // too: their default ticker labelled a pressure axis 1004, 1003.75, 1003.5 and collided.
+    connect(plot_, &QCustomPlot::beforeReplot, this, [this] { useReadableTicks(plot_); });
 }
 
 QCPAxisRect* PlotInteraction::rowAt(const QPointF& pixel, bool includeAxisMargin) const

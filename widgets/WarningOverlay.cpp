@@ -99,6 +99,19 @@ QString warningsToolTip(const std::vector<PlausibilityWarning>& warnings, const 
     return lines.isEmpty() ? QString() : QStringLiteral("<p>") + lines.join(QStringLiteral("</p><p>")) + QStringLiteral("</p>");
 }
 
+LabelPlace warningLabelPlace(double textWidth, double minInside, double left, double right, double laneLeft,
+                             double laneRight)
+{
+    constexpr double kPadding = 3.0;
+    const double inside = right - left - 2.0 * kPadding;
+    if (textWidth <= inside || inside >= minInside)
+        return {left + kPadding, std::min(textWidth, inside), true};
+    if (right + kPadding + textWidth <= laneRight)
+        return {right + kPadding, textWidth, false};
+    const double start = std::max(laneLeft, left - kPadding - textWidth);
+    return {start, std::max(0.0, std::min(textWidth, left - kPadding - start)), false};
+}
+
 /// The lane: one bar per finding over its span with its short label, on the first level where
 /// neither bar nor label runs into an earlier one. Findings about the whole walk get a paler bar.
 class WarningOverlay::LaneBars : public QCPLayerable {
@@ -143,9 +156,11 @@ private:
                  std::vector<double>& levelEnds) const
     {
         const auto [left, right] = span;
-        const QString text = warningLabel(w.kind);
-        const double labelEnd = left + QFontMetricsF(painter->font(), painter->device()).horizontalAdvance(text) + 6.0;
-        auto level = std::find_if(levelEnds.begin(), levelEnds.end(), [left = left](double end) { return end + 3.0 < left; });
+        const QFontMetricsF metrics(painter->font(), painter->device());
+        const QRectF label = labelPlace(metrics, warningLabel(w.kind), left, right);
+        const double occupiedFrom = std::min(left, label.left()), occupiedTo = std::max(right, label.right());
+        auto level = std::find_if(levelEnds.begin(), levelEnds.end(),
+                                  [from = occupiedFrom](double end) { return end + 3.0 < from; });
         const bool labelled = level != levelEnds.end();
         if (!labelled)
             level = std::min_element(levelEnds.begin(), levelEnds.end());
@@ -155,14 +170,21 @@ private:
         if (labelled) {
             painter->fillRect(bar, concernsWholeWalk(w.kind) ? kWholeWalkBarColour : kBarColour);
             painter->setPen(kLabelColour);
-            painter->drawText(QRectF(left + 3.0, bar.top(), labelEnd - left, bar.height()), Qt::AlignLeft | Qt::AlignVCenter,
-                              text);
+            painter->drawText(QRectF(label.left(), bar.top(), label.width(), bar.height()), Qt::AlignLeft | Qt::AlignVCenter,
+                              metrics.elidedText(warningLabel(w.kind), Qt::ElideRight, label.width()));
         } else {  // an outline only: it must not hide the bar and label it shares a level with
             painter->setPen(QPen(kLabelColour, 1.0, Qt::DotLine));
             painter->setBrush(Qt::NoBrush);
             painter->drawRect(bar);
         }
-        *level = labelled ? std::max(right, labelEnd) : std::max(*level, right);
+        *level = labelled ? occupiedTo : std::max(*level, right);
+    }
+
+    QRectF labelPlace(const QFontMetricsF& metrics, const QString& text, double left, double right) const
+    {
+        const LabelPlace place = warningLabelPlace(metrics.horizontalAdvance(text), metrics.horizontalAdvance(QStringLiteral("abcdef")),
+                                                   left, right, lane_->rect().left(), lane_->rect().right());
+        return QRectF(place.start, 0.0, place.width, 1.0);
     }
 
     /// The finding's span in pixels, at least 3 wide; nothing when it is out of view.

@@ -19,6 +19,18 @@ class TimeBands;
 QString warningLabel(PlausibilityWarning::Kind kind);
 /// The finding's time span, "12.13-13.11 s".
 QString warningSpanText(const PlausibilityWarning& warning);
+
+/// Where the warnings lane puts a bar's label, in pixels from `start`, `width` wide: inside the bar
+/// [left, right] when the text fits (or elided there when the bar holds at least minInside); else
+/// beside it, after the bar or, at the lane's right end, before it. It never runs past the lane
+/// [laneLeft, laneRight]: a label spilling past its span read as part of it.
+struct LabelPlace {
+    double start = 0.0;
+    double width = 0.0;
+    bool inside = true;
+};
+LabelPlace warningLabelPlace(double textWidth, double minInside, double left, double right, double laneLeft,
+                             double laneRight);
 /// Findings about the walk as a whole (the stance share, too few stances, heights drifting from the
 /// barometer's): their span is the whole walk or most of it, so they are neither drawn as a band
 /// over every plot nor mark every step; the summary and the labels still list them.
