@@ -5,6 +5,7 @@
 #include "AppSettings.h"
 #include "MainWindow.h"
 #include "OtherFootSession.h"
+#include "RecordedInputPanel.h"
 #include "SummaryPanel.h"
 #include "TestData.h"
 #include "TrajectoryView2D.h"
@@ -16,6 +17,7 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
+#include <QTextBrowser>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <qcustomplot.h>
@@ -52,7 +54,10 @@ private slots:
         const QCPCurve* rightCurve = view2D->overlayCurves().front();
         QCOMPARE(rightCurve->name(), QStringLiteral("Right foot"));
         QCOMPARE(std::size_t(rightCurve->dataCount()), window.otherFoot()->result()->position_m.size());
-        QVERIFY(view2D->overlayLegend() && view2D->overlayLegend()->visible());
+        // The right foot is keyed below the plot beside the left (it had a box of its own over the
+        // path while the left foot's entry was below).
+        QVERIFY(view2D->findChild<QCustomPlot*>()->legend->hasItemWithPlottable(rightCurve));
+        QVERIFY(!view2D->overlayLegend() || !view2D->overlayLegend()->visible());
         QVERIFY(rightCurve->pen().color() != view2D->pathColourAt(0));
         const auto* view3D = window.findChild<TrajectoryView3D*>(QStringLiteral("trajectory3D"));
         QCOMPARE(view3D->pathLabel(), QStringLiteral("Left foot"));
@@ -113,6 +118,35 @@ private slots:
         QVERIFY(view2D->overlayCurves().empty());
         QCOMPARE(view2D->pathLabel(), QStringLiteral("Foot path"));
         QVERIFY(group->isHidden());
+    }
+
+    void theRightFootsFileAndFilesAreThereToo()
+    {
+        // The input panel showed only the left file (none of the right file's gaps), and CSV
+        // export wrote only the left foot.
+        FOOTPATH_REQUIRE_DATASETS();
+        AppSettings settings(QStringLiteral("FootpathTests"), QStringLiteral("tst_bothfeet"));
+        MainWindow window(settings);
+        const QString right = datasetPath(QStringLiteral("xsens-mtw-ipol/1-1_rf.txt"));
+        QCOMPARE(window.openRecordings({datasetPath(QStringLiteral("xsens-mtw-ipol/1-1_lf.txt")), right}), QString());
+        QTRY_VERIFY_WITH_TIMEOUT(window.otherFoot()->bothFeet().has_value() && !window.session()->isEstimating(), 60000);
+        auto* panel = window.findChild<RecordedInputPanel*>();
+        QVERIFY(panel);
+        const QString shown = panel->findChild<QTextBrowser*>()->toPlainText();
+        QVERIFY2(shown.contains(QStringLiteral("Right foot")) && shown.contains(QStringLiteral("1-1_rf.txt")), qPrintable(shown));
+        const ImportResult rightRead = importRecording(right.toStdString());
+        QVERIFY(rightRead.info.gaps.count > 0);
+        QVERIFY2(shown.contains(QStringLiteral("%1 (about %2 samples lost)").arg(rightRead.info.gaps.count).arg(rightRead.info.gaps.missingSamples)),
+                 qPrintable(shown));
+
+        QTemporaryDir dir;
+        QCOMPARE(window.exportCsvInto(dir.path()), QString());
+        for (const char* name : {"1-1_lf-trajectory.csv", "1-1_lf-steps.csv", "1-1_lf-summary.csv", "1-1_rf-trajectory.csv",
+                                 "1-1_rf-steps.csv", "1-1_rf-summary.csv", "1-1_lf-parameters.csv"})
+            QVERIFY2(QFileInfo(dir.filePath(QString::fromLatin1(name))).size() > 100, name);
+        QFile steps(dir.filePath(QStringLiteral("1-1_rf-steps.csv")));
+        QVERIFY(steps.open(QIODevice::ReadOnly));
+        QCOMPARE(steps.readAll().count('\n'), qsizetype(window.otherFoot()->result()->steps.size() + 1));
     }
 
     void combinesBothFeetOncePerParameterChange()

@@ -17,6 +17,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QStandardPaths>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -149,6 +150,7 @@ private slots:
     void counts_printAsIntegers();
     void gait_pairsTheFeetByNameAndReportsDoubleSupport();
     void gait_refusesAnythingButOneWalksTwoFeet();
+    void report_takesBothFeetOfOneWalk();
     void screenshotOfAHeaderlessFile_finishes();
     void screenshotOfAFolderWithoutAPair_endsWithTheReason();
     void guiUnknownView_namesTheNearest();
@@ -878,7 +880,7 @@ void TestCli::commandHelp_printsThatCommandsOptions_data()
     QTest::newRow("info") << QStringList{"info", "--help"} << QStringList{"footpath-cli info INPUT", "--columns"}
                           << eval;
     QTest::newRow("report") << QStringList{"report", "--help"}
-                            << QStringList{"footpath-cli report INPUT --pdf", "--page-size"} << eval;
+                            << QStringList{"footpath-cli report INPUT [RIGHT] --pdf", "--page-size"} << eval;
     QTest::newRow("record without its required options")
         << QStringList{"record", "--help"} << QStringList{"footpath-cli record --port PATH", "--duration"} << eval;
     QTest::newRow("help COMMAND") << QStringList{"help", "info"} << QStringList{"footpath-cli info INPUT"} << eval;
@@ -1076,6 +1078,30 @@ void TestCli::gait_refusesAnythingButOneWalksTwoFeet()
                                QStringLiteral("--trajectory"), QStringLiteral("t.csv")});
     VERIFY_EXIT(output, kExitBadInput);
     QVERIFY2(output.err.contains(QStringLiteral("gait takes the import options")), qPrintable(output.err));
+}
+
+void TestCli::report_takesBothFeetOfOneWalk()
+{
+    // footpath-cli report refused a second input, while the window's report had both feet.
+    FOOTPATH_REQUIRE_DATASETS();
+    if (QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty())
+        QSKIP("pdftotext (Debian: poppler-utils) is not installed");
+    QTemporaryDir work;
+    const QString pdf = work.filePath(QStringLiteral("both.pdf"));
+    const Run run = runCli({QStringLiteral("report"), datasetPath(QStringLiteral("xsens-mtw-ipol/1-4_rf.txt")),
+                            datasetPath(QStringLiteral("xsens-mtw-ipol/1-4_lf.txt")), QStringLiteral("--pdf"), pdf});
+    VERIFY_EXIT(run, 0);
+    QProcess text;
+    text.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+    QVERIFY(text.waitForFinished(60000));
+    const QString report = QString::fromUtf8(text.readAllStandardOutput()).simplified();
+    for (const char* expected : {"1-4_lf.txt + 1-4_rf.txt", "Both feet", "Double support (both feet on the ground)",
+                                 "Right foot", "Left foot"})
+        QVERIFY2(report.contains(QLatin1String(expected)), expected);
+    const Run three = runCli({QStringLiteral("report"), QStringLiteral("a_lf.txt"), QStringLiteral("a_rf.txt"),
+                              QStringLiteral("c.txt"), QStringLiteral("--pdf"), pdf});
+    VERIFY_EXIT(three, kExitBadInput);
+    QVERIFY2(three.err.contains(QStringLiteral("unexpected argument 'c.txt'")), qPrintable(three.err));
 }
 
 void TestCli::counts_printAsIntegers()

@@ -494,6 +494,29 @@ private slots:
         QCOMPARE(timeAxisOf(plots, Row::AngularRate)->range(), all);
     }
 
+    void rowsStayAsHighAsTheirTitles()
+    {
+        // Pulling the summary dock up squeezed the rows until their axis titles ran into each
+        // other: the plot now keeps each row as high as its title is long.
+        SignalPlots plots;
+        const Walk walk = simulatedWalk(true, true);
+        plots.setRecording(walk.recording);
+        plots.setResult(walk.result);
+        QVERIFY(showLaidOut(plots, 600));
+        plots.resize(600, 200);  // far less than five rows need
+        QTest::qWait(50);
+        plots.plot()->replot();
+        for (const Row row : {Row::Acceleration, Row::AngularRate, Row::MagneticField, Row::Pressure, Row::Height}) {
+            const QCPAxis* values = plots.axisRect(row)->axis(QCPAxis::atLeft);
+            const QFontMetrics metrics(values->labelFont());
+            int longest = 0;
+            for (const QString& line : values->label().split(QLatin1Char('\n')))
+                longest = std::max(longest, metrics.horizontalAdvance(line));
+            QVERIFY2(plots.axisRect(row)->height() >= longest,
+                     qPrintable(QStringLiteral("%1: %2 px for a %3 px title").arg(values->label()).arg(plots.axisRect(row)->height()).arg(longest)));
+        }
+    }
+
     void legendSitsAboveTheRowsAndWrapsWhenNarrow()
     {
         // As in the workspace at 1280x800 (a third of the width), and wider: no entry clipped, none

@@ -12,8 +12,10 @@ OtherFootSession::OtherFootSession(AnalysisSession& session, QObject* parent)
     : QObject(parent), session_(session), loader_(new RecordingLoader(this)), runner_(new PipelineRunner(this))
 {
     connect(loader_, &RecordingLoader::loaded, this,
-            [this](const QString&, const std::shared_ptr<const ImportResult>& read) {
+            [this](const QString& path, const std::shared_ptr<const ImportResult>& read) {
+                read_ = read;
                 recording_ = std::shared_ptr<const Recording>(read, &read->recording);  // shared, not copied
+                emit readDone(path);
                 estimate();
             });
     connect(loader_, &RecordingLoader::failed, this, [this](const QString& path, const QString& message) {
@@ -55,6 +57,7 @@ void OtherFootSession::clear()
     estimating_ = false;
     path_.clear();
     notes_.clear();
+    read_.reset();
     recording_.reset();
     result_.reset();
     bothFeet_.reset();

@@ -3,6 +3,7 @@
 #include "Recording.h"
 #include "Result.h"
 #include "gait/BilateralGait.h"
+#include "io/Import.h"
 
 #include <Eigen/Core>
 
@@ -38,6 +39,8 @@ public:
     QString path() const { return path_; }
     QStringList notes() const { return notes_; }
     std::shared_ptr<const Recording> recording() const { return recording_; }
+    /// What reading the right foot's file gave (its format, gaps, warnings), null until it is read.
+    std::shared_ptr<const ImportResult> read() const { return read_; }
     std::shared_ptr<const Result> result() const { return result_; }
     /// Double support and symmetry (its warnings led by the pairing's notes); nothing until both
     /// feet have a result.
@@ -48,6 +51,8 @@ public:
 signals:
     /// The right foot's result, the figures of both or the pairing itself changed.
     void changed();
+    /// The right foot's file was read (read() holds it).
+    void readDone(const QString& path);
     void failed(const QString& message);
 
 private:
@@ -59,6 +64,7 @@ private:
     PipelineRunner* runner_;
     QString path_;
     QStringList notes_;
+    std::shared_ptr<const ImportResult> read_;
     std::shared_ptr<const Recording> recording_;
     std::shared_ptr<const Result> result_;
     /// From run() to the runner's report (finished or failed): PipelineRunner::isRunning() turns

@@ -17,4 +17,10 @@ struct PathOverlay {
     std::vector<Eigen::Vector3d> positions_m;  ///< navigation frame, as Result::position_m
 };
 
+/// The right foot's path beside the left's, in the window and the report alike.
+inline QColor otherFootColour()
+{
+    return QColor(214, 96, 24);
+}
+
 }  // namespace footpath

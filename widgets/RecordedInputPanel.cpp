@@ -70,7 +70,13 @@ void RecordedInputPanel::showInfo(const QString& path, const ImportResult& resul
     progress_->setVisible(false);
     cancel_->setVisible(false);
     open_->setEnabled(true);
-    info_->setHtml(describe(path, result));
+    mainHtml_ = describe(path, result);
+    info_->setHtml(mainHtml_);
+}
+
+void RecordedInputPanel::showOtherFoot(const QString& path, const ImportResult& result)
+{
+    info_->setHtml(tr("<p><b>Left foot</b></p>%1<hr><p><b>Right foot</b></p>%2").arg(mainHtml_, describe(path, result)));
 }
 
 void RecordedInputPanel::showProblem(const QString& message)

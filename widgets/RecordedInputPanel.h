@@ -24,6 +24,8 @@ public:
     void showLoading(const QString& path);
     void setProgress(double fraction);
     void showInfo(const QString& path, const ImportResult& result);
+    /// Both feet open: the right foot's file below the left's, with its own gaps and warnings.
+    void showOtherFoot(const QString& path, const ImportResult& result);
     void showProblem(const QString& message);
 
     /// The text shown for a result; also used by tests and the report's header.
@@ -40,6 +42,7 @@ private:
     QProgressBar* progress_;
     QPushButton* cancel_;
     QTextBrowser* info_;
+    QString mainHtml_;  ///< the (left) recording's part, which the other foot's follows
 };
 
 }  // namespace footpath

@@ -25,6 +25,9 @@ namespace footpath {
 
 namespace {
 
+/// The least height of a row of signals.
+constexpr int kMinRowHeight_px = 60;
+
 using Channel = SignalPlots::Channel;
 using Row = SignalPlots::Row;
 
@@ -389,6 +392,25 @@ bool SignalPlots::rowHasData(Row row) const
     return false;
 }
 
+/// Each shown row at least as high as its axis title is long, the plot as high as those rows: a
+/// summary dock pulled up squeezed the rows until their titles ran into each other.
+void SignalPlots::keepRowsReadable()
+{
+    for (RowParts* row : allRows()) {
+        if (row->rect->layout() == nullptr || row == &warningLane_)
+            continue;
+        const QCPAxis* values = row->rect->axis(QCPAxis::atLeft);
+        const QFontMetrics metrics(values->labelFont());
+        int longest = 0;
+        for (const QString& line : values->label().split(QLatin1Char('\n')))
+            longest = std::max(longest, metrics.horizontalAdvance(line));
+        row->rect->setMinimumSize(0, std::max(kMinRowHeight_px, longest + metrics.height()));
+    }
+    // What the layout needs with those rows, their margins, the lane and the legend.
+    plot_->plotLayout()->update(QCPLayoutElement::upMargins);
+    plot_->setMinimumHeight(plot_->plotLayout()->minimumOuterSizeHint().height());
+}
+
 void SignalPlots::arrangeRows()
 {
     QCPLayoutGrid* layout = plot_->plotLayout();
@@ -432,6 +454,7 @@ void SignalPlots::arrangeRows()
         timeAxis(bottom)->setTickLabels(true);
         timeAxis(bottom)->setLabel(tr("Time (s)"));
     }
+    keepRowsReadable();
     if (bottom != nullptr && !rows_.front().stance->isEmpty())
         legendEntries.push_back(stanceLegendEntry_);
     legend_->setEntries(legendEntries);  // x, y and z once: every row draws them with the same pens

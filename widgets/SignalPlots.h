@@ -123,6 +123,7 @@ private:
     void plotGaitEvents();
     void rescaleValueAxes();
     void arrangeRows();
+    void keepRowsReadable();
     bool rowHasData(Row row) const;
     std::vector<RowParts*> allRows();  ///< the warning lane and the signal rows
 

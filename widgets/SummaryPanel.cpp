@@ -511,18 +511,25 @@ QWidget* SummaryPanel::createFigures()
     liveSource_->setWordWrap(true);
     liveSource_->hide();
 
+    // Two columns: in a dock a quarter of the screen high, one column of every group showed the
+    // first few rows of the walk's figures and nothing of the gait's.
     auto* content = new QWidget;
-    auto* layout = new QVBoxLayout(content);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(liveSource_);
-    layout->addWidget(createChangeGroup());
-    layout->addWidget(createWarnings());
-    layout->addWidget(createMotionAndNotes());
-    layout->addWidget(walk);
-    layout->addWidget(bothFeetGroup_);
-    layout->addWidget(gaitGroup_);
-    layout->addWidget(referenceGroup_);
-    layout->addStretch(1);
+    auto* columns = new QHBoxLayout(content);
+    columns->setContentsMargins(0, 0, 0, 0);
+    auto* left = new QVBoxLayout;
+    left->addWidget(liveSource_);
+    left->addWidget(createChangeGroup());
+    left->addWidget(createWarnings());
+    left->addWidget(createMotionAndNotes());
+    left->addWidget(walk);
+    left->addStretch(1);
+    auto* right = new QVBoxLayout;
+    right->addWidget(gaitGroup_);
+    right->addWidget(bothFeetGroup_);
+    right->addWidget(referenceGroup_);
+    right->addStretch(1);
+    columns->addLayout(left, 1);
+    columns->addLayout(right, 1);
     auto* scroll = new QScrollArea;
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
@@ -657,6 +664,7 @@ QGroupBox* SummaryPanel::createFigureGroup(const QString& title, const std::vect
         row.value->setObjectName(QStringLiteral("figure_") + key);
         row.name->setObjectName(QStringLiteral("figureName_") + key);
         row.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        row.value->setWordWrap(true);  // a long figure ("... (26 strides)") wraps, never cut at the edge
         row.value->setTextInteractionFlags(Qt::TextSelectableByMouse);
         // As wide as the longest figure, so none is clipped whatever the first result shows.
         row.value->setMinimumWidth(row.value->fontMetrics().horizontalAdvance(tr("000 steps/min (00.0 strides/min)")));

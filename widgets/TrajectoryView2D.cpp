@@ -553,14 +553,18 @@ void TrajectoryView2D::setOverlays(const std::vector<PathOverlay>& overlays)
             y << p.y();
         }
         curve->setData(t, x, y, true);
-        // A key of their own: with the main key below the plot, a dozen more entries would take
-        // the height of the path itself in a narrow view.
-        curve->removeFromLegend();
-        overlayLegend_->addItem(new QCPPlottableLegendItem(overlayLegend_, curve));
+        // One or two (the other foot) join the main key below the plot, beside the path they go
+        // with; more (a comparison's sets) get a key of their own over the plot: a dozen entries
+        // below it would take the height of the path itself in a narrow view.
+        if (overlays.size() > kOverlaysInMainKey) {
+            curve->removeFromLegend();
+            overlayLegend_->addItem(new QCPPlottableLegendItem(overlayLegend_, curve));
+        }
         overlayCurves_.push_back(curve);
         overlayPositions_m_.insert(overlayPositions_m_.end(), overlay.positions_m.begin(), overlay.positions_m.end());
     }
-    overlayLegend_->setVisible(!overlayCurves_.empty());
+    overlayLegend_->setVisible(overlayLegend_->itemCount() > 0);
+    wrapLegendToWidth();
     fitViewToData();
     replot_->request();
 }

@@ -48,6 +48,9 @@ std::vector<Eigen::Vector3d> alignReferenceToEstimate(const std::vector<Eigen::V
 class TrajectoryView2D : public QWidget {
     Q_OBJECT
 public:
+    /// Overlays up to this many are keyed in the main key below the plot, more in a box over it.
+    static constexpr std::size_t kOverlaysInMainKey = 2;
+
     enum class Colouring { None, Time, Speed, Motion };  ///< Motion: each stride by its step's class (seed 004)
     Q_ENUM(Colouring)
 

@@ -30,7 +30,7 @@ const char* const kProcessSynopsis =
                              [--summary-csv out.csv] [--parameters-csv out.csv]
 )";
 const char* const kReportSynopsis =
-    R"(  footpath-cli report INPUT --pdf out.pdf [--page-size a4|letter] [import options]
+    R"(  footpath-cli report INPUT [RIGHT] --pdf out.pdf [--page-size a4|letter] [import options]
                             [--params preset.json] [--set name=value ...]
 )";
 const char* const kEvalSynopsis =
@@ -147,7 +147,8 @@ const char* const kInfoText =
     "info prints what was read: format, samples, rate, duration, channels, units, gaps, the reference\n"
     "the file carries and the import warnings (--json: one JSON object).\n";
 const char* const kReportText = "report writes the workspace's PDF report of INPUT: figures, summary, steps and "
-                                "parameters.\n";
+                                "parameters; given the left and the right file of one walk, both feet (the\n"
+                                "right foot's path beside the left's, double support and symmetry), as the window does.\n";
 const char* const kWarningsText =
     "eval, compare and process print the plausibility warnings to stderr: FILE: warning: [t0-t1 s] message.\n";
 const char* const kExitCodes = "Exit codes: 0 success, 2 bad input or options or a device problem, 1 internal error.\n";
@@ -351,7 +352,7 @@ std::string parseArgument(const std::vector<std::string>& args, std::size_t& i, 
     } else if (arg.rfind("-", 0) == 0 && arg.size() > 1) {
         return "unknown option '" + arg + "'" + didYouMean(arg, optionNames());
     } else if (out.input.empty() || out.command == "eval" || out.command == "compare" || out.command == "tune"
-               || out.command == "gait") {
+               || out.command == "gait" || (out.command == "report" && out.inputs.size() == 1)) {
         if (out.input.empty())
             out.input = arg;
         out.inputs.push_back(arg);

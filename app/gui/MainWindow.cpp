@@ -597,7 +597,7 @@ std::vector<PathOverlay> MainWindow::otherFootOverlays() const
 {
     if (otherFoot_->alignedPath().empty())
         return {};
-    return {PathOverlay{tr("Right foot"), QColor(214, 96, 24), otherFoot_->alignedPath()}};
+    return {PathOverlay{tr("Right foot"), otherFootColour(), otherFoot_->alignedPath()}};
 }
 
 void MainWindow::showOverlays()
@@ -620,31 +620,53 @@ void MainWindow::wireOtherFoot()
         summary_->setBothFeet(otherFoot_->bothFeet());
     });
     connect(otherFoot_, &OtherFootSession::failed, this, [this](const QString& message) { showStatus(message, true); });
+    connect(otherFoot_, &OtherFootSession::readDone, this, [this](const QString& path) {
+        if (otherFoot_->read())
+            input_->showOtherFoot(path, *otherFoot_->read());
+    });
 }
 
 void MainWindow::exportCsv()
 {
-    const std::shared_ptr<const Result> result = session_->result();
-    if (!result) {
+    if (!session_->result()) {
         QMessageBox::information(this, tr("Export CSV"), tr("There is no estimate to export yet."));
         return;
     }
     const QString folder = QFileDialog::getExistingDirectory(this, tr("Export CSV into folder"), settings_.lastFolder());
     if (folder.isEmpty())
         return;
-    const QString base = QDir(folder).filePath(QFileInfo(session_->recordingPath()).completeBaseName());
+    if (const QString problem = exportCsvInto(folder); !problem.isEmpty()) {
+        QMessageBox::warning(this, tr("Export CSV"), problem);
+        return;
+    }
+    showStatus(otherFoot_->isActive() ? tr("Trajectory, steps and summary of both feet, and the parameters, written to %1").arg(folder)
+                                      : tr("Trajectory, steps, summary and parameters written to %1").arg(folder));
+}
+
+QString MainWindow::exportCsvInto(const QString& folder) const
+{
+    const std::shared_ptr<const Result> result = session_->result();
+    if (!result)
+        return tr("There is no estimate to export yet.");
+    const auto baseOf = [&folder](const QString& recording) {
+        return QDir(folder).filePath(QFileInfo(recording).completeBaseName());
+    };
     const Parameters params = session_->parameters();
-    const std::pair<QString, std::function<void(std::ostream&)>> files[] = {
-        {base + "-trajectory.csv", [&](std::ostream& out) { writeTrajectoryCsv(out, *result); }},
-        {base + "-steps.csv", [&](std::ostream& out) { writeStepsCsv(out, *result); }},
-        {base + "-summary.csv", [&](std::ostream& out) { writeSummaryCsv(out, *result); }},
-        {base + "-parameters.csv", [&](std::ostream& out) { writeParametersCsv(out, params); }}};
+    std::vector<std::pair<QString, std::function<void(std::ostream&)>>> files;
+    // Both feet open: each foot's own files (named after its recording), the parameters once.
+    std::vector<std::pair<QString, std::shared_ptr<const Result>>> feet{{baseOf(session_->recordingPath()), result}};
+    if (otherFoot_->isActive() && otherFoot_->result())
+        feet.emplace_back(baseOf(otherFoot_->path()), otherFoot_->result());
+    for (const auto& [base, foot] : feet) {
+        files.emplace_back(base + "-trajectory.csv", [foot = foot](std::ostream& out) { writeTrajectoryCsv(out, *foot); });
+        files.emplace_back(base + "-steps.csv", [foot = foot](std::ostream& out) { writeStepsCsv(out, *foot); });
+        files.emplace_back(base + "-summary.csv", [foot = foot](std::ostream& out) { writeSummaryCsv(out, *foot); });
+    }
+    files.emplace_back(feet.front().first + "-parameters.csv", [&params](std::ostream& out) { writeParametersCsv(out, params); });
     for (const auto& [path, write] : files)
-        if (const std::string problem = writeFileAtomically(path.toStdString(), write); !problem.empty()) {
-            QMessageBox::warning(this, tr("Export CSV"), QString::fromStdString(problem));
-            return;
-        }
-    showStatus(tr("Trajectory, steps, summary and parameters written to %1").arg(folder));
+        if (const std::string problem = writeFileAtomically(path.toStdString(), write); !problem.empty())
+            return QString::fromStdString(problem);
+    return {};
 }
 
 void MainWindow::chooseRecording()
@@ -893,13 +915,13 @@ void MainWindow::restoreLayout()
     }
     if (restoreState(settings_.windowState()))
         return;
-    // First start: the plots and the path get three quarters of the height, the summary and the
-    // history a quarter. Once shown, as docks are sized when the window is laid out; the user's
+    // First start: the plots and the path get two thirds of the height and more, the summary and
+    // the history under a third (the plots keep the height their rows need to stay readable). Once shown, as docks are sized when the window is laid out; the user's
     // sizes are saved with the dock state.
     QTimer::singleShot(0, this, [this] {
         if (auto* summaryDock = findChild<QDockWidget*>(QStringLiteral("summaryDock"))) {
             summaryDock->raise();  // in front of the history and the comparison it shares the area with
-            resizeDocks({summaryDock}, {height() * 22 / 100}, Qt::Vertical);  // with its tabs a quarter
+            resizeDocks({summaryDock}, {height() * 30 / 100}, Qt::Vertical);  // with its tabs under a third
         }
         // The side panels as narrow as they stay readable, so a 1280-pixel screen leaves the path
         // and the signals more than a third of its width each.

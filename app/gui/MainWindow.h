@@ -67,6 +67,9 @@ public:
     /// recording is there). Returns the sets' parse error, empty on success.
     QString showComparison(const QString& sets = QString());
     ComparisonPanel* comparisonPanel() const { return comparison_; }
+    /// Writes the CSV files into folder: trajectory, steps and summary of each open foot (named
+    /// after its recording) and the parameters. An error message, or empty.
+    QString exportCsvInto(const QString& folder) const;
     /// Writes the PDF report (with the comparison while its panel is open); an error message or empty.
     QString writeReport(const QString& path, QPageSize::PageSizeId pageSize = QPageSize::A4) const;
     /// Fills the available area of a screen; the constructor calls it (and maximizes) with the
