@@ -84,10 +84,6 @@
         <translation>%1 m = %3 m 的 %2 %</translation>
     </message>
     <message>
-        <source>Stance detection precision / recall / F1</source>
-        <translation>支撑相检测 精确率 / 召回率 / F1</translation>
-    </message>
-    <message>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
@@ -497,6 +493,34 @@
         <source>Figure 3. The path in 3D (reference dashed when present; the stances are too close together at this scale to be marked).</source>
         <translation>图 3. 三维路径（如有参考轨迹，以虚线表示；在此比例下支撑相过于密集，未予标出）。</translation>
     </message>
+    <message>
+        <source>%1 (%2 movements without a swing, under %3 m or %4 rad/s, merged into their stances)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gait stance (heel strike to toe off) against the labels: precision / recall / F1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Strides in the labelled trial</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 detected, %2 labelled swings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Foot at rest (ZUPT) against the labelled stance: precision / recall / F1 (the foot rests only mid-stance: a low recall is expected)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Method comparison (stale)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stale: the parameters changed after this comparison ran, so its rows were estimated with other parameters than the rest of this report. Run the comparison again to update it.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::AnalysisSession</name>
@@ -768,10 +792,6 @@
         <translation>采样率：</translation>
     </message>
     <message>
-        <source>What each column holds (first lines of the file below):</source>
-        <translation>各列的内容（下方为文件的前几行）：</translation>
-    </message>
-    <message>
         <source>Save as import preset named</source>
         <translation>另存为导入预设，名称</translation>
     </message>
@@ -794,6 +814,50 @@
     <message>
         <source>%1 needs import settings and no one is there to give them: %2</source>
         <translation>%1 需要导入设置，但无人提供：%2</translation>
+    </message>
+    <message>
+        <source>What each column holds (the first lines of the file below, numbered as in the file):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>column %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line %1 is the file&apos;s header: its names title the columns, and the roles below replace it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file has no header row: say what each column holds.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot be right: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read so, the first lines give: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From the values: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mend the roles or units first: the file cannot be read right so</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1077,6 +1141,14 @@
     <message>
         <source>Re-estimating with the new parameters (the old estimate is shown meanwhile)</source>
         <translation>正在用新参数重新估计（期间显示旧的估计）</translation>
+    </message>
+    <message>
+        <source>The %1 samples received before the port went away were not recorded. Reconnecting starts a new session without them. Save them before reconnecting?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The live session&apos;s %1 samples were not recorded. Save them before quitting?</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1506,6 +1578,14 @@
         <source>Footpath - %1 + %2</source>
         <translation>Footpath - %1 + %2</translation>
     </message>
+    <message>
+        <source>unknown view &apos;%1&apos;%2; the views are %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trajectory, steps and summary of both feet, and the parameters, written to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::MotionLanes</name>
@@ -1674,6 +1754,609 @@
     </message>
 </context>
 <context>
+    <name>footpath::ParameterFields</name>
+    <message>
+        <source>Alignment period</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Static period at the start used for alignment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Alignment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Local gravity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnetic declination</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnetic declination subtracted from the compass heading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stance detector</source>
+        <translation type="unfinished">支撑相检测器</translation>
+    </message>
+    <message>
+        <source>C1/C2/C3 (Guo 2015)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SHOE (GLRT)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ARED (angular rate energy)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AMVD (acceleration variance)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MBGTD (graph theoretic)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Statistic that decides the foot is at rest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Detector</source>
+        <translation type="unfinished">检测器</translation>
+    </message>
+    <message>
+        <source>Statistic window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Window of the detector statistic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Accelerometer noise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Accelerometer noise the statistic is normalised by</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gyroscope noise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gyroscope noise the statistic is normalised by</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adaptive threshold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Threshold follows the motion (off: a fixed threshold)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fixed threshold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fixed threshold on the statistic (log10), when not adaptive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adaptive window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adaptive: window of the running minimum (about one gait cycle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Offset above the minimum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adaptive: threshold above the running minimum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fraction towards the maximum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adaptive: threshold this fraction of the way from the running minimum to the maximum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Always at rest below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adaptive: below this the foot is always at rest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Never at rest above</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adaptive: above this the foot is never at rest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shortest stance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shorter stance runs are dropped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C1 lower bound on |a|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C1: lower bound on |a|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C1 upper bound on |a|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C1: upper bound on |a|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C2 bound on the std of |a|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C2: std of |a| over the window must be below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C2 half-window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C2: half-window of the centred std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C3 bound on |ω|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C3: upper bound on |w|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Median filter length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Median filter length applied to C</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Filter states</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>15 states (with biases)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>9 states (no bias states)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error-state filter size: 15 estimates the sensor biases, 9 holds them at zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Estimator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kalman filter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feliz de-drift (no filter)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kalman filter + RTS smoother</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kalman filter with the measurements below, Feliz 2009&apos;s per-stride velocity de-drift, or the filter followed by a Rauch-Tung-Striebel smoother over the whole recording (offline; live input runs the filter)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zero-velocity update (ZUPT)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zero-velocity update during stance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zero angular rate update (ZARU)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zero angular rate update during stance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heuristic drift reduction (HDR)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heuristic drift reduction: heading held on straight walks (seed 002)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position error reduction (IPER)</source>
+        <translation type="unfinished">位置误差抑制（IPER）</translation>
+    </message>
+    <message>
+        <source>Position error reduction: walks along the building&apos;s axes, level floor (seed 002; assumes a rectilinear building)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zero navigation acceleration (ZUNA)</source>
+        <translation type="unfinished">零导航加速度（ZUNA）</translation>
+    </message>
+    <message>
+        <source>Zero navigation acceleration at mid-stance (seed 002)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Barometric height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Barometric height at each stance (seed 004)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnetometer heading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnetometer heading during stance, skipped near steel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HDR heading lag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HDR: heading compared with the heading this long ago</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HDR</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HDR turn threshold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HDR: a smaller heading change is drift, a larger one a turn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HDR measurement std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HDR: R of the heading measurement, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Building axis from the walk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IPER: building axis from the walk&apos;s dominant directions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IPER</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Building axis angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IPER: angle of the building&apos;s main axis from x</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Along-axis tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IPER: walking within this of an axis counts as along it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IPER window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IPER: displacement window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IPER cross-axis std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IPER: R of the cross-axis displacement, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IPER level-floor height std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IPER: R of the level-floor height, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZUNA reference period</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZUNA: static start averaged for the reference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZUNA</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZUNA shortest stance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZUNA: mid-stance needs a stance run this long</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZUNA margin below the threshold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZUNA: mid-stance statistic this far below the threshold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZUNA measurement std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZUNA: R of the acceleration, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pressure to height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Barometric formula</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Linear constant (seed 004)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Barometer: pressure difference to height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Barometer</source>
+        <translation type="unfinished">气压计</translation>
+    </message>
+    <message>
+        <source>Linear constant N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Barometer: linear constant N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Barometer height std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Barometer: R of the height, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Level walking height change</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motion class: smaller height change per step is level walking</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Elevator pressure variance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motion class: pressure variance between steps above this is an elevator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnetometer heading std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnetometer: R of the heading, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnetometer</source>
+        <translation type="unfinished">磁力计</translation>
+    </message>
+    <message>
+        <source>Field strength tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnetometer: |m| within this fraction of its value at alignment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dip angle tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnetometer: dip within this of its value at alignment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q attitude</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q attitude, std per 10 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Process noise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q gyroscope bias</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q gyro bias, std per 10 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q position, std per 10 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q velocity, std per 10 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q accelerometer bias</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Q accelerometer bias, std per 10 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R zero velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R ZUPT, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measurement noise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R zero angular rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R ZARU, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 attitude</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 attitude, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Initial covariance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 gyroscope bias</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 gyro bias, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 position, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 velocity, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 accelerometer bias</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 accelerometer bias, std</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>footpath::ParameterPanel</name>
     <message>
         <source>Reset to defaults</source>
@@ -1792,10 +2475,6 @@
         <translation>%1&lt;br&gt;预设中的可选值：%2&lt;br&gt;默认值：%3</translation>
     </message>
     <message>
-        <source>%1&lt;br&gt;Range: %2 to %3 %4&lt;br&gt;Default: %5 %4&lt;br&gt;Up/Down in the value field: one slider step; Page Up/Down: ten</source>
-        <translation>%1&lt;br&gt;范围：%2 至 %3 %4&lt;br&gt;默认值：%5 %4&lt;br&gt;数值框中的上/下键：滑块移动一步；Page Up/Down：十步</translation>
-    </message>
-    <message>
         <source>Not used: HDR is off (use_hdr).</source>
         <translation>未使用：HDR 已关闭（use_hdr）。</translation>
     </message>
@@ -1822,6 +2501,14 @@
     <message>
         <source>Not used: the magnetometer heading update is off (use_mag_heading).</source>
         <translation>未使用：磁力计航向更新已关闭（use_mag_heading）。</translation>
+    </message>
+    <message>
+        <source> (the slider up to %1; type a larger value)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1&lt;br&gt;Range: %2 to %3 %4%6&lt;br&gt;Default: %5 %4&lt;br&gt;Up/Down in the value field: one slider step; Page Up/Down: ten</source>
+        <translation type="unfinished">%1&lt;br&gt;范围：%2 至 %3 %4&lt;br&gt;默认值：%5 %4&lt;br&gt;数值框中的上/下键：滑块移动一步；Page Up/Down：十步 {1&lt;?} {2 ?} {3 %4%6&lt;?} {5 %4&lt;?}</translation>
     </message>
 </context>
 <context>
@@ -2008,6 +2695,10 @@
         <source>Warning:</source>
         <translation>警告：</translation>
     </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Left foot&lt;/b&gt;&lt;/p&gt;%1&lt;hr&gt;&lt;p&gt;&lt;b&gt;Right foot&lt;/b&gt;&lt;/p&gt;%2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::RunHistory</name>
@@ -2056,6 +2747,10 @@
     <message>
         <source>Steps</source>
         <translation>步数</translation>
+    </message>
+    <message>
+        <source>Back to run %1: %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2539,22 +3234,6 @@ stance</source>
         <translation>距离误差</translation>
     </message>
     <message>
-        <source>Stance precision</source>
-        <translation>支撑相精确率</translation>
-    </message>
-    <message>
-        <source>Stance recall</source>
-        <translation>支撑相召回率</translation>
-    </message>
-    <message>
-        <source>Stance F1</source>
-        <translation>支撑相 F1</translation>
-    </message>
-    <message>
-        <source>Stance phases</source>
-        <translation>支撑相数</translation>
-    </message>
-    <message>
         <source>000 steps/min (00.0 strides/min)</source>
         <translation>000 步/分钟（00.0 跨步/分钟）</translation>
     </message>
@@ -2589,10 +3268,6 @@ stance</source>
     <message>
         <source>%1 m (%2 % of %3 m)</source>
         <translation>%1 m（%3 m 的 %2 %）</translation>
-    </message>
-    <message>
-        <source>%1 detected, %2 labelled</source>
-        <translation>检测到 %1 个，标注 %2 个</translation>
     </message>
     <message>
         <source>Stride length per step</source>
@@ -2779,6 +3454,62 @@ stance</source>
     <message>
         <source>Foot clearance per stride</source>
         <translation>每个跨步的足部离地高度</translation>
+    </message>
+    <message>
+        <source>Gait stance P / R / F1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Strides in the trial</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At rest (ZUPT) precision</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At rest (ZUPT) recall</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At rest (ZUPT) F1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gait events&apos; stance (heel strike to toe off) against the labelled one, sample by sample: precision, recall and F1. This is the figure to compare with a gait lab&apos;s labels.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The detector&apos;s foot at rest (the zero-velocity updates) against the labelled stance. The foot rests only in the middle of its stance, so the recall is low by design; the precision says no swing was taken for rest.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Strides whose swing lies inside the labelled trial, against the labelled swings there</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Movements between stances that were no stride (under %1 m, or never turning at a swing&apos;s %2 rad/s: shifting the weight while standing), merged into one stance:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1-%2 s: %3 m, at most %4 rad/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>... and %1 more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 / %2 (%3 merged: no swing)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 detected, %2 labelled swings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 / %2 / %3</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3140,6 +3871,10 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
         <source>Tuned parameters</source>
         <translation>调参后的参数</translation>
     </message>
+    <message>
+        <source>Beware: the tuned parameters change the strides, not only the figure (a swing split in two or a stance lost looks like this):</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::TuneFolderDialog</name>
@@ -3359,6 +4094,10 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
         <source>Parameters tuned over %1</source>
         <translation>在 %1 上调参得到的参数</translation>
     </message>
+    <message>
+        <source>Beware: the tuned parameters change the strides, not only the figure: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>footpath::WarningOverlay</name>
@@ -3442,12 +4181,20 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
         <translation>打开方法比较并运行这些组合，例如 &quot;zupt;zupt,zaru;feliz&quot;</translation>
     </message>
     <message>
-        <source>Show this view: signals, detector, states, trajectory2d or trajectory3d</source>
-        <translation>显示此视图：signals、detector、states、trajectory2d 或 trajectory3d</translation>
-    </message>
-    <message>
         <source>Recording to open; two files (or a folder): the left and the right foot of one walk</source>
         <translation>要打开的记录；两个文件（或一个文件夹）：同一次行走的左脚和右脚</translation>
+    </message>
+    <message>
+        <source>Show this view: signals, detector, states, trajectory2d, trajectory3d, motion, summary, steps or gait</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the recording with this column map, as footpath-cli does (time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,...)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the recording with a saved import preset</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>
