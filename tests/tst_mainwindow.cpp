@@ -26,6 +26,7 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QTableView>
+#include <QFontDatabase>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSignalSpy>
@@ -460,6 +461,35 @@ private slots:
         const QString file = window.menuBar()->actions().first()->text();
         QCoreApplication::removeTranslator(&translator);
         QVERIFY2(file != QStringLiteral("&File") && !file.isEmpty(), qPrintable(file));
+    }
+
+    void everyLanguageIsCompleteAndHasItsScript_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<int>("script");
+        QTest::newRow("de") << QStringLiteral("de") << int(QFontDatabase::Latin);
+        QTest::newRow("zh_CN") << QStringLiteral("zh_CN") << int(QFontDatabase::SimplifiedChinese);
+    }
+
+    void everyLanguageIsCompleteAndHasItsScript()
+    {
+        // German and Chinese were partial (the parameter panel stayed English), and on a stock
+        // Debian every Chinese character was a box: no font had the script.
+        QFETCH(QString, language);
+        QFETCH(int, script);
+        QFile source(QStringLiteral(FOOTPATH_SOURCE_DIR "/translations/footpath_%1.ts").arg(language));
+        QVERIFY(source.open(QIODevice::ReadOnly));
+        const QByteArray ts = source.readAll();
+        QCOMPARE(ts.count("type=\"unfinished\""), qsizetype(0));
+        QVERIFY2(!QFontDatabase::families(QFontDatabase::WritingSystem(script)).isEmpty(),
+                 "no font for the language's script: install fonts-wqy-microhei (the README's commands do)");
+        QTranslator translator;
+        QVERIFY(translator.load(QStringLiteral(FOOTPATH_QM_DIR "/footpath_%1.qm").arg(language)));
+        QCoreApplication::installTranslator(&translator);
+        ParameterPanel panel;
+        const QString label = panel.findChild<QLabel*>(QStringLiteral("label_zv_min_stance_s"))->text();
+        QCoreApplication::removeTranslator(&translator);
+        QVERIFY2(!label.startsWith(QStringLiteral("Shortest stance")), qPrintable(label));
     }
 
 private:
