@@ -495,31 +495,31 @@
     </message>
     <message>
         <source>%1 (%2 movements without a swing, under %3 m or %4 rad/s, merged into their stances)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2 Bewegungen ohne Schwungphase, unter %3 m oder %4 rad/s, mit ihren Standphasen zusammengelegt)</translation>
     </message>
     <message>
         <source>Gait stance (heel strike to toe off) against the labels: precision / recall / F1</source>
-        <translation type="unfinished"></translation>
+        <translation>Gang-Standphase (Fersenaufsatz bis Zehenablösung) gegenüber den Markierungen: Präzision / Trefferquote / F1</translation>
     </message>
     <message>
         <source>Strides in the labelled trial</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschritte im markierten Versuch</translation>
     </message>
     <message>
         <source>%1 detected, %2 labelled swings</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 erkannt, %2 markierte Schwungphasen</translation>
     </message>
     <message>
         <source>Foot at rest (ZUPT) against the labelled stance: precision / recall / F1 (the foot rests only mid-stance: a low recall is expected)</source>
-        <translation type="unfinished"></translation>
+        <translation>Fuß in Ruhe (ZUPT) gegenüber der markierten Standphase: Präzision / Trefferquote / F1 (der Fuß ruht nur in der Mitte der Standphase: eine niedrige Trefferquote ist zu erwarten)</translation>
     </message>
     <message>
         <source>Method comparison (stale)</source>
-        <translation type="unfinished"></translation>
+        <translation>Methodenvergleich (veraltet)</translation>
     </message>
     <message>
         <source>Stale: the parameters changed after this comparison ran, so its rows were estimated with other parameters than the rest of this report. Run the comparison again to update it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Veraltet: Die Parameter haben sich nach diesem Vergleich geändert, seine Zeilen wurden also mit anderen Parametern geschätzt als der Rest dieses Berichts. Den Vergleich erneut rechnen, um ihn zu aktualisieren.</translation>
     </message>
 </context>
 <context>
@@ -818,47 +818,47 @@
     </message>
     <message>
         <source>What each column holds (the first lines of the file below, numbered as in the file):</source>
-        <translation type="unfinished"></translation>
+        <translation>Was jede Spalte enthält (darunter die ersten Zeilen der Datei, nummeriert wie in der Datei):</translation>
     </message>
     <message>
         <source>column %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Spalte %1</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source>line %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeile %1</translation>
     </message>
     <message>
         <source>Line %1 is the file&apos;s header: its names title the columns, and the roles below replace it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeile %1 ist die Kopfzeile der Datei: ihre Namen betiteln die Spalten, und die Rollen darunter ersetzen sie.</translation>
     </message>
     <message>
         <source>The file has no header row: say what each column holds.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Datei hat keine Kopfzeile: geben Sie an, was jede Spalte enthält.</translation>
     </message>
     <message>
         <source>Cannot be right: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Kann nicht stimmen: %1</translation>
     </message>
     <message>
         <source>Check: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Prüfen: %1</translation>
     </message>
     <message>
         <source>Read so, the first lines give: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>So gelesen ergeben die ersten Zeilen: %1</translation>
     </message>
     <message>
         <source>From the values: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Aus den Werten: %1</translation>
     </message>
     <message>
         <source>Mend the roles or units first: the file cannot be read right so</source>
-        <translation type="unfinished"></translation>
+        <translation>Zuerst Rollen oder Einheiten korrigieren: so kann die Datei nicht richtig gelesen werden</translation>
     </message>
 </context>
 <context>
@@ -1145,11 +1145,11 @@
     </message>
     <message>
         <source>The %1 samples received before the port went away were not recorded. Reconnecting starts a new session without them. Save them before reconnecting?</source>
-        <translation type="unfinished"></translation>
+        <translation>Die %1 Abtastwerte, die vor dem Verschwinden der Schnittstelle empfangen wurden, wurden nicht aufgezeichnet. Neu verbinden beginnt eine neue Sitzung ohne sie. Vor dem Neuverbinden speichern?</translation>
     </message>
     <message>
         <source>The live session&apos;s %1 samples were not recorded. Save them before quitting?</source>
-        <translation type="unfinished"></translation>
+        <translation>Die %1 Abtastwerte der Live-Sitzung wurden nicht aufgezeichnet. Vor dem Beenden speichern?</translation>
     </message>
 </context>
 <context>
@@ -1582,11 +1582,11 @@
     </message>
     <message>
         <source>unknown view &apos;%1&apos;%2; the views are %3</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannte Ansicht &apos;%1&apos;%2; die Ansichten sind %3</translation>
     </message>
     <message>
         <source>Trajectory, steps and summary of both feet, and the parameters, written to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Trajektorie, Schritte und Zusammenfassung beider Füße sowie die Parameter gespeichert in %1</translation>
     </message>
 </context>
 <context>
@@ -1759,603 +1759,603 @@
     <name>footpath::ParameterFields</name>
     <message>
         <source>Alignment period</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausrichtungsdauer</translation>
     </message>
     <message>
         <source>Static period at the start used for alignment</source>
-        <translation type="unfinished"></translation>
+        <translation>Ruhephase zu Beginn, die zur Ausrichtung dient</translation>
     </message>
     <message>
         <source>Alignment</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausrichtung</translation>
     </message>
     <message>
         <source>Gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwerebeschleunigung</translation>
     </message>
     <message>
         <source>Local gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Lokale Schwerebeschleunigung</translation>
     </message>
     <message>
         <source>Magnetic declination</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetische Deklination</translation>
     </message>
     <message>
         <source>Magnetic declination subtracted from the compass heading</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetische Deklination, die vom Kompasskurs abgezogen wird</translation>
     </message>
     <message>
         <source>Stance detector</source>
-        <translation type="unfinished">Standphasendetektor</translation>
+        <translation>Standphasendetektor</translation>
     </message>
     <message>
         <source>C1/C2/C3 (Guo 2015)</source>
-        <translation type="unfinished"></translation>
+        <translation>C1/C2/C3 (Guo 2015)</translation>
     </message>
     <message>
         <source>SHOE (GLRT)</source>
-        <translation type="unfinished"></translation>
+        <translation>SHOE (GLRT)</translation>
     </message>
     <message>
         <source>ARED (angular rate energy)</source>
-        <translation type="unfinished"></translation>
+        <translation>ARED (Drehratenenergie)</translation>
     </message>
     <message>
         <source>AMVD (acceleration variance)</source>
-        <translation type="unfinished"></translation>
+        <translation>AMVD (Beschleunigungsvarianz)</translation>
     </message>
     <message>
         <source>MBGTD (graph theoretic)</source>
-        <translation type="unfinished"></translation>
+        <translation>MBGTD (graphentheoretisch)</translation>
     </message>
     <message>
         <source>Statistic that decides the foot is at rest</source>
-        <translation type="unfinished"></translation>
+        <translation>Statistik, die entscheidet, ob der Fuß ruht</translation>
     </message>
     <message>
         <source>Detector</source>
-        <translation type="unfinished">Detektor</translation>
+        <translation>Detektor</translation>
     </message>
     <message>
         <source>Statistic window</source>
-        <translation type="unfinished"></translation>
+        <translation>Statistikfenster</translation>
     </message>
     <message>
         <source>Window of the detector statistic</source>
-        <translation type="unfinished"></translation>
+        <translation>Fenster der Detektorstatistik</translation>
     </message>
     <message>
         <source>Accelerometer noise</source>
-        <translation type="unfinished"></translation>
+        <translation>Rauschen Beschleunigungssensor</translation>
     </message>
     <message>
         <source>Accelerometer noise the statistic is normalised by</source>
-        <translation type="unfinished"></translation>
+        <translation>Rauschen des Beschleunigungssensors, auf das die Statistik normiert wird</translation>
     </message>
     <message>
         <source>Gyroscope noise</source>
-        <translation type="unfinished"></translation>
+        <translation>Rauschen Gyroskop</translation>
     </message>
     <message>
         <source>Gyroscope noise the statistic is normalised by</source>
-        <translation type="unfinished"></translation>
+        <translation>Rauschen des Gyroskops, auf das die Statistik normiert wird</translation>
     </message>
     <message>
         <source>Adaptive threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>Adaptiver Schwellwert</translation>
     </message>
     <message>
         <source>Threshold follows the motion (off: a fixed threshold)</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwellwert folgt der Bewegung (aus: fester Schwellwert)</translation>
     </message>
     <message>
         <source>Fixed threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>Fester Schwellwert</translation>
     </message>
     <message>
         <source>Fixed threshold on the statistic (log10), when not adaptive</source>
-        <translation type="unfinished"></translation>
+        <translation>Fester Schwellwert der Statistik (log10), wenn nicht adaptiv</translation>
     </message>
     <message>
         <source>Adaptive window</source>
-        <translation type="unfinished"></translation>
+        <translation>Adaptives Fenster</translation>
     </message>
     <message>
         <source>Adaptive: window of the running minimum (about one gait cycle)</source>
-        <translation type="unfinished"></translation>
+        <translation>Adaptiv: Fenster des gleitenden Minimums (etwa ein Gangzyklus)</translation>
     </message>
     <message>
         <source>Offset above the minimum</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstand über dem Minimum</translation>
     </message>
     <message>
         <source>Adaptive: threshold above the running minimum</source>
-        <translation type="unfinished"></translation>
+        <translation>Adaptiv: Schwellwert über dem gleitenden Minimum</translation>
     </message>
     <message>
         <source>Fraction towards the maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>Anteil zum Maximum hin</translation>
     </message>
     <message>
         <source>Adaptive: threshold this fraction of the way from the running minimum to the maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>Adaptiv: Schwellwert bei diesem Anteil des Abstands vom gleitenden Minimum zum Maximum</translation>
     </message>
     <message>
         <source>Always at rest below</source>
-        <translation type="unfinished"></translation>
+        <translation>Immer in Ruhe unterhalb</translation>
     </message>
     <message>
         <source>Adaptive: below this the foot is always at rest</source>
-        <translation type="unfinished"></translation>
+        <translation>Adaptiv: darunter ist der Fuß immer in Ruhe</translation>
     </message>
     <message>
         <source>Never at rest above</source>
-        <translation type="unfinished"></translation>
+        <translation>Nie in Ruhe oberhalb</translation>
     </message>
     <message>
         <source>Adaptive: above this the foot is never at rest</source>
-        <translation type="unfinished"></translation>
+        <translation>Adaptiv: darüber ist der Fuß nie in Ruhe</translation>
     </message>
     <message>
         <source>Shortest stance</source>
-        <translation type="unfinished"></translation>
+        <translation>Kürzeste Standphase</translation>
     </message>
     <message>
         <source>Shorter stance runs are dropped</source>
-        <translation type="unfinished"></translation>
+        <translation>Kürzere Standphasen werden verworfen</translation>
     </message>
     <message>
         <source>C1 lower bound on |a|</source>
-        <translation type="unfinished"></translation>
+        <translation>C1 Untergrenze für |a|</translation>
     </message>
     <message>
         <source>C1: lower bound on |a|</source>
-        <translation type="unfinished"></translation>
+        <translation>C1: Untergrenze für |a|</translation>
     </message>
     <message>
         <source>C1 upper bound on |a|</source>
-        <translation type="unfinished"></translation>
+        <translation>C1 Obergrenze für |a|</translation>
     </message>
     <message>
         <source>C1: upper bound on |a|</source>
-        <translation type="unfinished"></translation>
+        <translation>C1: Obergrenze für |a|</translation>
     </message>
     <message>
         <source>C2 bound on the std of |a|</source>
-        <translation type="unfinished"></translation>
+        <translation>C2 Grenze für die SD von |a|</translation>
     </message>
     <message>
         <source>C2: std of |a| over the window must be below</source>
-        <translation type="unfinished"></translation>
+        <translation>C2: die SD von |a| über das Fenster muss darunter liegen</translation>
     </message>
     <message>
         <source>C2 half-window</source>
-        <translation type="unfinished"></translation>
+        <translation>C2 Halbfenster</translation>
     </message>
     <message>
         <source>C2: half-window of the centred std</source>
-        <translation type="unfinished"></translation>
+        <translation>C2: Halbfenster der zentrierten SD</translation>
     </message>
     <message>
         <source>C3 bound on |ω|</source>
-        <translation type="unfinished"></translation>
+        <translation>C3 Grenze für |ω|</translation>
     </message>
     <message>
         <source>C3: upper bound on |w|</source>
-        <translation type="unfinished"></translation>
+        <translation>C3: Obergrenze für |w|</translation>
     </message>
     <message>
         <source>Median filter length</source>
-        <translation type="unfinished"></translation>
+        <translation>Medianfilterlänge</translation>
     </message>
     <message>
         <source>Median filter length applied to C</source>
-        <translation type="unfinished"></translation>
+        <translation>Länge des auf C angewandten Medianfilters</translation>
     </message>
     <message>
         <source>Filter states</source>
-        <translation type="unfinished"></translation>
+        <translation>Filterzustände</translation>
     </message>
     <message>
         <source>15 states (with biases)</source>
-        <translation type="unfinished"></translation>
+        <translation>15 Zustände (mit Biases)</translation>
     </message>
     <message>
         <source>9 states (no bias states)</source>
-        <translation type="unfinished"></translation>
+        <translation>9 Zustände (ohne Bias-Zustände)</translation>
     </message>
     <message>
         <source>Error-state filter size: 15 estimates the sensor biases, 9 holds them at zero</source>
-        <translation type="unfinished"></translation>
+        <translation>Größe des Error-State-Filters: 15 schätzt die Sensor-Biases, 9 hält sie bei null</translation>
     </message>
     <message>
         <source>Filter</source>
-        <translation type="unfinished"></translation>
+        <translation>Filter</translation>
     </message>
     <message>
         <source>Estimator</source>
-        <translation type="unfinished"></translation>
+        <translation>Schätzer</translation>
     </message>
     <message>
         <source>Kalman filter</source>
-        <translation type="unfinished"></translation>
+        <translation>Kalman-Filter</translation>
     </message>
     <message>
         <source>Feliz de-drift (no filter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Feliz-Driftkorrektur (ohne Filter)</translation>
     </message>
     <message>
         <source>Kalman filter + RTS smoother</source>
-        <translation type="unfinished"></translation>
+        <translation>Kalman-Filter + RTS-Glätter</translation>
     </message>
     <message>
         <source>Kalman filter with the measurements below, Feliz 2009&apos;s per-stride velocity de-drift, or the filter followed by a Rauch-Tung-Striebel smoother over the whole recording (offline; live input runs the filter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Kalman-Filter mit den Messungen unten, die Geschwindigkeits-Driftkorrektur je Doppelschritt nach Feliz 2009, oder das Filter gefolgt von einem Rauch-Tung-Striebel-Glätter über die ganze Aufzeichnung (offline; die Live-Eingabe rechnet das Filter)</translation>
     </message>
     <message>
         <source>Measurements</source>
-        <translation type="unfinished"></translation>
+        <translation>Messungen</translation>
     </message>
     <message>
         <source>Zero-velocity update (ZUPT)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nullgeschwindigkeits-Update (ZUPT)</translation>
     </message>
     <message>
         <source>Zero-velocity update during stance</source>
-        <translation type="unfinished"></translation>
+        <translation>Nullgeschwindigkeits-Update während der Standphase</translation>
     </message>
     <message>
         <source>Zero angular rate update (ZARU)</source>
-        <translation type="unfinished"></translation>
+        <translation>Null-Drehraten-Update (ZARU)</translation>
     </message>
     <message>
         <source>Zero angular rate update during stance</source>
-        <translation type="unfinished"></translation>
+        <translation>Null-Drehraten-Update während der Standphase</translation>
     </message>
     <message>
         <source>Heuristic drift reduction (HDR)</source>
-        <translation type="unfinished"></translation>
+        <translation>Heuristische Driftreduktion (HDR)</translation>
     </message>
     <message>
         <source>Heuristic drift reduction: heading held on straight walks (seed 002)</source>
-        <translation type="unfinished"></translation>
+        <translation>Heuristische Driftreduktion: Kurs auf geraden Strecken gehalten (Seed 002)</translation>
     </message>
     <message>
         <source>Position error reduction (IPER)</source>
-        <translation type="unfinished">Positionsfehlerreduktion (IPER)</translation>
+        <translation>Positionsfehlerreduktion (IPER)</translation>
     </message>
     <message>
         <source>Position error reduction: walks along the building&apos;s axes, level floor (seed 002; assumes a rectilinear building)</source>
-        <translation type="unfinished"></translation>
+        <translation>Positionsfehlerreduktion: Gehen entlang der Gebäudeachsen, ebener Boden (Seed 002; setzt ein rechtwinkliges Gebäude voraus)</translation>
     </message>
     <message>
         <source>Zero navigation acceleration (ZUNA)</source>
-        <translation type="unfinished">Null-Navigationsbeschleunigung (ZUNA)</translation>
+        <translation>Null-Navigationsbeschleunigung (ZUNA)</translation>
     </message>
     <message>
         <source>Zero navigation acceleration at mid-stance (seed 002)</source>
-        <translation type="unfinished"></translation>
+        <translation>Null-Navigationsbeschleunigung in der Mitte der Standphase (Seed 002)</translation>
     </message>
     <message>
         <source>Barometric height</source>
-        <translation type="unfinished"></translation>
+        <translation>Barometrische Höhe</translation>
     </message>
     <message>
         <source>Barometric height at each stance (seed 004)</source>
-        <translation type="unfinished"></translation>
+        <translation>Barometrische Höhe in jeder Standphase (Seed 004)</translation>
     </message>
     <message>
         <source>Magnetometer heading</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetometer-Kurs</translation>
     </message>
     <message>
         <source>Magnetometer heading during stance, skipped near steel</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetometer-Kurs während der Standphase, in der Nähe von Stahl ausgelassen</translation>
     </message>
     <message>
         <source>HDR heading lag</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR-Kursverzögerung</translation>
     </message>
     <message>
         <source>HDR: heading compared with the heading this long ago</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR: Kurs verglichen mit dem Kurs vor dieser Zeitspanne</translation>
     </message>
     <message>
         <source>HDR</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR</translation>
     </message>
     <message>
         <source>HDR turn threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR-Wendeschwelle</translation>
     </message>
     <message>
         <source>HDR: a smaller heading change is drift, a larger one a turn</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR: eine kleinere Kursänderung ist Drift, eine größere eine Wende</translation>
     </message>
     <message>
         <source>HDR measurement std</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR-Messung SD</translation>
     </message>
     <message>
         <source>HDR: R of the heading measurement, std</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR: R der Kursmessung, SD</translation>
     </message>
     <message>
         <source>Building axis from the walk</source>
-        <translation type="unfinished"></translation>
+        <translation>Gebäudeachse aus dem Gang</translation>
     </message>
     <message>
         <source>IPER: building axis from the walk&apos;s dominant directions</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER: Gebäudeachse aus den Hauptrichtungen des Gangs</translation>
     </message>
     <message>
         <source>IPER</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER</translation>
     </message>
     <message>
         <source>Building axis angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Winkel der Gebäudeachse</translation>
     </message>
     <message>
         <source>IPER: angle of the building&apos;s main axis from x</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER: Winkel der Hauptachse des Gebäudes gegen x</translation>
     </message>
     <message>
         <source>Along-axis tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Toleranz entlang der Achse</translation>
     </message>
     <message>
         <source>IPER: walking within this of an axis counts as along it</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER: Gehen innerhalb dieser Abweichung von einer Achse gilt als entlang der Achse</translation>
     </message>
     <message>
         <source>IPER window</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER-Fenster</translation>
     </message>
     <message>
         <source>IPER: displacement window</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER: Fenster der Verschiebung</translation>
     </message>
     <message>
         <source>IPER cross-axis std</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER SD quer zur Achse</translation>
     </message>
     <message>
         <source>IPER: R of the cross-axis displacement, std</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER: R der Verschiebung quer zur Achse, SD</translation>
     </message>
     <message>
         <source>IPER level-floor height std</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER SD der Höhe (ebener Boden)</translation>
     </message>
     <message>
         <source>IPER: R of the level-floor height, std</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER: R der Höhe bei ebenem Boden, SD</translation>
     </message>
     <message>
         <source>ZUNA reference period</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA-Referenzdauer</translation>
     </message>
     <message>
         <source>ZUNA: static start averaged for the reference</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA: ruhender Anfang, über den für die Referenz gemittelt wird</translation>
     </message>
     <message>
         <source>ZUNA</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA</translation>
     </message>
     <message>
         <source>ZUNA shortest stance</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA kürzeste Standphase</translation>
     </message>
     <message>
         <source>ZUNA: mid-stance needs a stance run this long</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA: eine Standphasenmitte erfordert eine Standphase dieser Länge</translation>
     </message>
     <message>
         <source>ZUNA margin below the threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA-Abstand unter dem Schwellwert</translation>
     </message>
     <message>
         <source>ZUNA: mid-stance statistic this far below the threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA: Statistik in der Standphasenmitte so weit unter dem Schwellwert</translation>
     </message>
     <message>
         <source>ZUNA measurement std</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA-Messung SD</translation>
     </message>
     <message>
         <source>ZUNA: R of the acceleration, std</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA: R der Beschleunigung, SD</translation>
     </message>
     <message>
         <source>Pressure to height</source>
-        <translation type="unfinished"></translation>
+        <translation>Druck in Höhe</translation>
     </message>
     <message>
         <source>Barometric formula</source>
-        <translation type="unfinished"></translation>
+        <translation>Barometrische Höhenformel</translation>
     </message>
     <message>
         <source>Linear constant (seed 004)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lineare Konstante (Seed 004)</translation>
     </message>
     <message>
         <source>Barometer: pressure difference to height</source>
-        <translation type="unfinished"></translation>
+        <translation>Barometer: Umrechnung der Druckdifferenz in Höhe</translation>
     </message>
     <message>
         <source>Barometer</source>
-        <translation type="unfinished">Barometer</translation>
+        <translation>Barometer</translation>
     </message>
     <message>
         <source>Linear constant N</source>
-        <translation type="unfinished"></translation>
+        <translation>Lineare Konstante N</translation>
     </message>
     <message>
         <source>Barometer: linear constant N</source>
-        <translation type="unfinished"></translation>
+        <translation>Barometer: lineare Konstante N</translation>
     </message>
     <message>
         <source>Barometer height std</source>
-        <translation type="unfinished"></translation>
+        <translation>Barometerhöhe SD</translation>
     </message>
     <message>
         <source>Barometer: R of the height, std</source>
-        <translation type="unfinished"></translation>
+        <translation>Barometer: R der Höhe, SD</translation>
     </message>
     <message>
         <source>Level walking height change</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhenänderung bei ebenem Gehen</translation>
     </message>
     <message>
         <source>Motion class: smaller height change per step is level walking</source>
-        <translation type="unfinished"></translation>
+        <translation>Bewegungsklasse: eine kleinere Höhenänderung je Schritt ist ebenes Gehen</translation>
     </message>
     <message>
         <source>Elevator pressure variance</source>
-        <translation type="unfinished"></translation>
+        <translation>Druckvarianz Aufzug</translation>
     </message>
     <message>
         <source>Motion class: pressure variance between steps above this is an elevator</source>
-        <translation type="unfinished"></translation>
+        <translation>Bewegungsklasse: eine Druckvarianz zwischen Schritten über diesem Wert ist ein Aufzug</translation>
     </message>
     <message>
         <source>Magnetometer heading std</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetometer-Kurs SD</translation>
     </message>
     <message>
         <source>Magnetometer: R of the heading, std</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetometer: R des Kurses, SD</translation>
     </message>
     <message>
         <source>Magnetometer</source>
-        <translation type="unfinished">Magnetometer</translation>
+        <translation>Magnetometer</translation>
     </message>
     <message>
         <source>Field strength tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Toleranz der Feldstärke</translation>
     </message>
     <message>
         <source>Magnetometer: |m| within this fraction of its value at alignment</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetometer: |m| innerhalb dieses Anteils seines Werts bei der Ausrichtung</translation>
     </message>
     <message>
         <source>Dip angle tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Toleranz des Inklinationswinkels</translation>
     </message>
     <message>
         <source>Magnetometer: dip within this of its value at alignment</source>
-        <translation type="unfinished"></translation>
+        <translation>Magnetometer: Inklination innerhalb dieser Abweichung von ihrem Wert bei der Ausrichtung</translation>
     </message>
     <message>
         <source>Q attitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Q Lage</translation>
     </message>
     <message>
         <source>Q attitude, std per 10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Q Lage, SD je 10 ms</translation>
     </message>
     <message>
         <source>Process noise</source>
-        <translation type="unfinished"></translation>
+        <translation>Prozessrauschen</translation>
     </message>
     <message>
         <source>Q gyroscope bias</source>
-        <translation type="unfinished"></translation>
+        <translation>Q Gyroskop-Bias</translation>
     </message>
     <message>
         <source>Q gyro bias, std per 10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Q Gyro-Bias, SD je 10 ms</translation>
     </message>
     <message>
         <source>Q position</source>
-        <translation type="unfinished"></translation>
+        <translation>Q Position</translation>
     </message>
     <message>
         <source>Q position, std per 10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Q Position, SD je 10 ms</translation>
     </message>
     <message>
         <source>Q velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>Q Geschwindigkeit</translation>
     </message>
     <message>
         <source>Q velocity, std per 10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Q Geschwindigkeit, SD je 10 ms</translation>
     </message>
     <message>
         <source>Q accelerometer bias</source>
-        <translation type="unfinished"></translation>
+        <translation>Q Beschleunigungssensor-Bias</translation>
     </message>
     <message>
         <source>Q accelerometer bias, std per 10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Q Beschleunigungssensor-Bias, SD je 10 ms</translation>
     </message>
     <message>
         <source>R zero velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>R Nullgeschwindigkeit</translation>
     </message>
     <message>
         <source>R ZUPT, std</source>
-        <translation type="unfinished"></translation>
+        <translation>R ZUPT, SD</translation>
     </message>
     <message>
         <source>Measurement noise</source>
-        <translation type="unfinished"></translation>
+        <translation>Messrauschen</translation>
     </message>
     <message>
         <source>R zero angular rate</source>
-        <translation type="unfinished"></translation>
+        <translation>R Null-Drehrate</translation>
     </message>
     <message>
         <source>R ZARU, std</source>
-        <translation type="unfinished"></translation>
+        <translation>R ZARU, SD</translation>
     </message>
     <message>
         <source>P0 attitude</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 Lage</translation>
     </message>
     <message>
         <source>P0 attitude, std</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 Lage, SD</translation>
     </message>
     <message>
         <source>Initial covariance</source>
-        <translation type="unfinished"></translation>
+        <translation>Anfangskovarianz</translation>
     </message>
     <message>
         <source>P0 gyroscope bias</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 Gyroskop-Bias</translation>
     </message>
     <message>
         <source>P0 gyro bias, std</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 Gyro-Bias, SD</translation>
     </message>
     <message>
         <source>P0 position</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 Position</translation>
     </message>
     <message>
         <source>P0 position, std</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 Position, SD</translation>
     </message>
     <message>
         <source>P0 velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 Geschwindigkeit</translation>
     </message>
     <message>
         <source>P0 velocity, std</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 Geschwindigkeit, SD</translation>
     </message>
     <message>
         <source>P0 accelerometer bias</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 Beschleunigungssensor-Bias</translation>
     </message>
     <message>
         <source>P0 accelerometer bias, std</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 Beschleunigungssensor-Bias, SD</translation>
     </message>
 </context>
 <context>
@@ -2506,11 +2506,11 @@
     </message>
     <message>
         <source> (the slider up to %1; type a larger value)</source>
-        <translation type="unfinished"></translation>
+        <translation> (Schieberegler bis %1; größere Werte eintippen)</translation>
     </message>
     <message>
         <source>%1&lt;br&gt;Range: %2 to %3 %4%6&lt;br&gt;Default: %5 %4&lt;br&gt;Up/Down in the value field: one slider step; Page Up/Down: ten</source>
-        <translation type="unfinished">%1&lt;br&gt;Bereich: %2 bis %3 %4&lt;br&gt;Standardwert: %5 %4&lt;br&gt;Auf/Ab im Wertefeld: ein Schieberegler-Schritt; Bild auf/ab: zehn {1&lt;?} {2 ?} {3 %4%6&lt;?} {5 %4&lt;?}</translation>
+        <translation>%1&lt;br&gt;Bereich: %2 bis %3 %4%6&lt;br&gt;Standardwert: %5 %4&lt;br&gt;Auf/Ab im Wertefeld: ein Schieberegler-Schritt; Bild auf/ab: zehn</translation>
     </message>
 </context>
 <context>
@@ -2699,7 +2699,7 @@
     </message>
     <message>
         <source>&lt;p&gt;&lt;b&gt;Left foot&lt;/b&gt;&lt;/p&gt;%1&lt;hr&gt;&lt;p&gt;&lt;b&gt;Right foot&lt;/b&gt;&lt;/p&gt;%2</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;&lt;b&gt;Linker Fuß&lt;/b&gt;&lt;/p&gt;%1&lt;hr&gt;&lt;p&gt;&lt;b&gt;Rechter Fuß&lt;/b&gt;&lt;/p&gt;%2</translation>
     </message>
 </context>
 <context>
@@ -2753,7 +2753,7 @@
     </message>
     <message>
         <source>Back to run %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Zurück zu Lauf %1: %2</translation>
     </message>
 </context>
 <context>
@@ -3461,59 +3461,59 @@ Standphase</translation>
     </message>
     <message>
         <source>Gait stance P / R / F1</source>
-        <translation type="unfinished"></translation>
+        <translation>Gang-Standphase P / R / F1</translation>
     </message>
     <message>
         <source>Strides in the trial</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschritte im Versuch</translation>
     </message>
     <message>
         <source>At rest (ZUPT) precision</source>
-        <translation type="unfinished"></translation>
+        <translation>In Ruhe (ZUPT): Präzision</translation>
     </message>
     <message>
         <source>At rest (ZUPT) recall</source>
-        <translation type="unfinished"></translation>
+        <translation>In Ruhe (ZUPT): Trefferquote</translation>
     </message>
     <message>
         <source>At rest (ZUPT) F1</source>
-        <translation type="unfinished"></translation>
+        <translation>In Ruhe (ZUPT): F1</translation>
     </message>
     <message>
         <source>The gait events&apos; stance (heel strike to toe off) against the labelled one, sample by sample: precision, recall and F1. This is the figure to compare with a gait lab&apos;s labels.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Standphase der Gangereignisse (Fersenaufsatz bis Zehenablösung) gegenüber der markierten, Abtastwert für Abtastwert: Präzision, Trefferquote und F1. Dies ist die Kennzahl für den Vergleich mit den Markierungen eines Ganglabors.</translation>
     </message>
     <message>
         <source>The detector&apos;s foot at rest (the zero-velocity updates) against the labelled stance. The foot rests only in the middle of its stance, so the recall is low by design; the precision says no swing was taken for rest.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der vom Detektor als ruhend erkannte Fuß (die Nullgeschwindigkeits-Updates) gegenüber der markierten Standphase. Der Fuß ruht nur in der Mitte seiner Standphase, daher ist die Trefferquote konstruktionsbedingt niedrig; die Präzision zeigt, dass keine Schwungphase als Ruhe gewertet wurde.</translation>
     </message>
     <message>
         <source>Strides whose swing lies inside the labelled trial, against the labelled swings there</source>
-        <translation type="unfinished"></translation>
+        <translation>Doppelschritte, deren Schwungphase im markierten Versuch liegt, gegenüber den dort markierten Schwungphasen</translation>
     </message>
     <message>
         <source>Movements between stances that were no stride (under %1 m, or never turning at a swing&apos;s %2 rad/s: shifting the weight while standing), merged into one stance:</source>
-        <translation type="unfinished"></translation>
+        <translation>Bewegungen zwischen Standphasen, die kein Doppelschritt waren (unter %1 m oder nie mit den %2 rad/s einer Schwungphase drehend: Gewichtsverlagerung im Stehen), zu einer Standphase zusammengelegt:</translation>
     </message>
     <message>
         <source>%1-%2 s: %3 m, at most %4 rad/s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1-%2 s: %3 m, höchstens %4 rad/s</translation>
     </message>
     <message>
         <source>... and %1 more</source>
-        <translation type="unfinished"></translation>
+        <translation>... und %1 weitere</translation>
     </message>
     <message>
         <source>%1 / %2 (%3 merged: no swing)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 (%3 zusammengelegt: keine Schwungphase)</translation>
     </message>
     <message>
         <source>%1 detected, %2 labelled swings</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 erkannt, %2 markierte Schwungphasen</translation>
     </message>
     <message>
         <source>%1 / %2 / %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 / %3</translation>
     </message>
 </context>
 <context>
@@ -3880,7 +3880,7 @@ von der Markierung: Δt = %1 s   Δx = %2 m   Δy = %3 m   Abstand %4 m</transla
     </message>
     <message>
         <source>Beware: the tuned parameters change the strides, not only the figure (a swing split in two or a stance lost looks like this):</source>
-        <translation type="unfinished"></translation>
+        <translation>Achtung: die optimierten Parameter ändern die Doppelschritte, nicht nur die Kennzahl (so sieht eine zweigeteilte Schwungphase oder eine verlorene Standphase aus):</translation>
     </message>
 </context>
 <context>
@@ -4109,7 +4109,7 @@ von der Markierung: Δt = %1 s   Δx = %2 m   Δy = %3 m   Abstand %4 m</transla
     </message>
     <message>
         <source>Beware: the tuned parameters change the strides, not only the figure: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Achtung: die optimierten Parameter ändern die Doppelschritte, nicht nur die Kennzahl: %1</translation>
     </message>
 </context>
 <context>
@@ -4199,15 +4199,15 @@ von der Markierung: Δt = %1 s   Δx = %2 m   Δy = %3 m   Abstand %4 m</transla
     </message>
     <message>
         <source>Show this view: signals, detector, states, trajectory2d, trajectory3d, motion, summary, steps or gait</source>
-        <translation type="unfinished"></translation>
+        <translation>Diese Ansicht zeigen: signals, detector, states, trajectory2d, trajectory3d, motion, summary, steps oder gait</translation>
     </message>
     <message>
         <source>Read the recording with this column map, as footpath-cli does (time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,...)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Aufzeichnung mit dieser Spaltenzuordnung lesen, wie bei footpath-cli (time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,...)</translation>
     </message>
     <message>
         <source>Read the recording with a saved import preset</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Aufzeichnung mit einer gespeicherten Importvoreinstellung lesen</translation>
     </message>
 </context>
 </TS>

@@ -495,31 +495,31 @@
     </message>
     <message>
         <source>%1 (%2 movements without a swing, under %3 m or %4 rad/s, merged into their stances)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2 次无摆动相的移动，小于 %3 m 或低于 %4 rad/s，已并入其支撑相）</translation>
     </message>
     <message>
         <source>Gait stance (heel strike to toe off) against the labels: precision / recall / F1</source>
-        <translation type="unfinished"></translation>
+        <translation>步态支撑相（足跟着地至足尖离地）相对标注：精确率 / 召回率 / F1</translation>
     </message>
     <message>
         <source>Strides in the labelled trial</source>
-        <translation type="unfinished"></translation>
+        <translation>已标注试验段内的跨步</translation>
     </message>
     <message>
         <source>%1 detected, %2 labelled swings</source>
-        <translation type="unfinished"></translation>
+        <translation>检测到 %1 个，标注的摆动相 %2 个</translation>
     </message>
     <message>
         <source>Foot at rest (ZUPT) against the labelled stance: precision / recall / F1 (the foot rests only mid-stance: a low recall is expected)</source>
-        <translation type="unfinished"></translation>
+        <translation>足部静止（ZUPT）相对标注支撑相：精确率 / 召回率 / F1（足部仅在支撑相中段静止：召回率偏低属预期）</translation>
     </message>
     <message>
         <source>Method comparison (stale)</source>
-        <translation type="unfinished"></translation>
+        <translation>方法比较（已过时）</translation>
     </message>
     <message>
         <source>Stale: the parameters changed after this comparison ran, so its rows were estimated with other parameters than the rest of this report. Run the comparison again to update it.</source>
-        <translation type="unfinished"></translation>
+        <translation>已过时：此次比较运行之后参数已更改，因此其各行所用的参数与本报告其余部分不同。请重新运行比较以更新。</translation>
     </message>
 </context>
 <context>
@@ -817,47 +817,47 @@
     </message>
     <message>
         <source>What each column holds (the first lines of the file below, numbered as in the file):</source>
-        <translation type="unfinished"></translation>
+        <translation>各列的内容（下方为文件的前几行，行号与文件中一致）：</translation>
     </message>
     <message>
         <source>column %1</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 列</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <source>line %1</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 行</translation>
     </message>
     <message>
         <source>Line %1 is the file&apos;s header: its names title the columns, and the roles below replace it.</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 行是文件的表头：其名称用作列标题，下方的用途设置将取代它。</translation>
     </message>
     <message>
         <source>The file has no header row: say what each column holds.</source>
-        <translation type="unfinished"></translation>
+        <translation>文件没有表头行：请指定每列的内容。</translation>
     </message>
     <message>
         <source>Cannot be right: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>不可能正确：%1</translation>
     </message>
     <message>
         <source>Check: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>请检查：%1</translation>
     </message>
     <message>
         <source>Read so, the first lines give: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>按此读取，前几行得到：%1</translation>
     </message>
     <message>
         <source>From the values: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>根据数值：%1</translation>
     </message>
     <message>
         <source>Mend the roles or units first: the file cannot be read right so</source>
-        <translation type="unfinished"></translation>
+        <translation>请先修正用途或单位：按当前设置无法正确读取该文件</translation>
     </message>
 </context>
 <context>
@@ -1144,11 +1144,11 @@
     </message>
     <message>
         <source>The %1 samples received before the port went away were not recorded. Reconnecting starts a new session without them. Save them before reconnecting?</source>
-        <translation type="unfinished"></translation>
+        <translation>端口消失前接收的 %1 个采样尚未记录。重新连接将开始一个不含这些采样的新会话。是否在重新连接前保存？</translation>
     </message>
     <message>
         <source>The live session&apos;s %1 samples were not recorded. Save them before quitting?</source>
-        <translation type="unfinished"></translation>
+        <translation>实时会话的 %1 个采样尚未记录。是否在退出前保存？</translation>
     </message>
 </context>
 <context>
@@ -1580,11 +1580,11 @@
     </message>
     <message>
         <source>unknown view &apos;%1&apos;%2; the views are %3</source>
-        <translation type="unfinished"></translation>
+        <translation>未知视图 &apos;%1&apos;%2；可用的视图为 %3</translation>
     </message>
     <message>
         <source>Trajectory, steps and summary of both feet, and the parameters, written to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>双脚的轨迹、各步和摘要以及参数已写入 %1</translation>
     </message>
 </context>
 <context>
@@ -1757,603 +1757,603 @@
     <name>footpath::ParameterFields</name>
     <message>
         <source>Alignment period</source>
-        <translation type="unfinished"></translation>
+        <translation>对准时长</translation>
     </message>
     <message>
         <source>Static period at the start used for alignment</source>
-        <translation type="unfinished"></translation>
+        <translation>开始时用于对准的静止时段</translation>
     </message>
     <message>
         <source>Alignment</source>
-        <translation type="unfinished"></translation>
+        <translation>对准</translation>
     </message>
     <message>
         <source>Gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>重力加速度</translation>
     </message>
     <message>
         <source>Local gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>当地重力加速度</translation>
     </message>
     <message>
         <source>Magnetic declination</source>
-        <translation type="unfinished"></translation>
+        <translation>磁偏角</translation>
     </message>
     <message>
         <source>Magnetic declination subtracted from the compass heading</source>
-        <translation type="unfinished"></translation>
+        <translation>从罗盘航向中减去的磁偏角</translation>
     </message>
     <message>
         <source>Stance detector</source>
-        <translation type="unfinished">支撑相检测器</translation>
+        <translation>支撑相检测器</translation>
     </message>
     <message>
         <source>C1/C2/C3 (Guo 2015)</source>
-        <translation type="unfinished"></translation>
+        <translation>C1/C2/C3（Guo 2015）</translation>
     </message>
     <message>
         <source>SHOE (GLRT)</source>
-        <translation type="unfinished"></translation>
+        <translation>SHOE（GLRT）</translation>
     </message>
     <message>
         <source>ARED (angular rate energy)</source>
-        <translation type="unfinished"></translation>
+        <translation>ARED（角速度能量）</translation>
     </message>
     <message>
         <source>AMVD (acceleration variance)</source>
-        <translation type="unfinished"></translation>
+        <translation>AMVD（加速度方差）</translation>
     </message>
     <message>
         <source>MBGTD (graph theoretic)</source>
-        <translation type="unfinished"></translation>
+        <translation>MBGTD（图论方法）</translation>
     </message>
     <message>
         <source>Statistic that decides the foot is at rest</source>
-        <translation type="unfinished"></translation>
+        <translation>判定足部静止的统计量</translation>
     </message>
     <message>
         <source>Detector</source>
-        <translation type="unfinished">检测器</translation>
+        <translation>检测器</translation>
     </message>
     <message>
         <source>Statistic window</source>
-        <translation type="unfinished"></translation>
+        <translation>统计量窗口</translation>
     </message>
     <message>
         <source>Window of the detector statistic</source>
-        <translation type="unfinished"></translation>
+        <translation>检测器统计量的窗口</translation>
     </message>
     <message>
         <source>Accelerometer noise</source>
-        <translation type="unfinished"></translation>
+        <translation>加速度计噪声</translation>
     </message>
     <message>
         <source>Accelerometer noise the statistic is normalised by</source>
-        <translation type="unfinished"></translation>
+        <translation>用于归一化统计量的加速度计噪声</translation>
     </message>
     <message>
         <source>Gyroscope noise</source>
-        <translation type="unfinished"></translation>
+        <translation>陀螺仪噪声</translation>
     </message>
     <message>
         <source>Gyroscope noise the statistic is normalised by</source>
-        <translation type="unfinished"></translation>
+        <translation>用于归一化统计量的陀螺仪噪声</translation>
     </message>
     <message>
         <source>Adaptive threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>自适应阈值</translation>
     </message>
     <message>
         <source>Threshold follows the motion (off: a fixed threshold)</source>
-        <translation type="unfinished"></translation>
+        <translation>阈值随运动调整（关闭：固定阈值）</translation>
     </message>
     <message>
         <source>Fixed threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>固定阈值</translation>
     </message>
     <message>
         <source>Fixed threshold on the statistic (log10), when not adaptive</source>
-        <translation type="unfinished"></translation>
+        <translation>非自适应时统计量的固定阈值（log10）</translation>
     </message>
     <message>
         <source>Adaptive window</source>
-        <translation type="unfinished"></translation>
+        <translation>自适应窗口</translation>
     </message>
     <message>
         <source>Adaptive: window of the running minimum (about one gait cycle)</source>
-        <translation type="unfinished"></translation>
+        <translation>自适应：滑动最小值的窗口（约一个步态周期）</translation>
     </message>
     <message>
         <source>Offset above the minimum</source>
-        <translation type="unfinished"></translation>
+        <translation>高于最小值的偏移</translation>
     </message>
     <message>
         <source>Adaptive: threshold above the running minimum</source>
-        <translation type="unfinished"></translation>
+        <translation>自适应：阈值高出滑动最小值的量</translation>
     </message>
     <message>
         <source>Fraction towards the maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>趋向最大值的比例</translation>
     </message>
     <message>
         <source>Adaptive: threshold this fraction of the way from the running minimum to the maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>自适应：阈值位于从滑动最小值到最大值之间的这一比例处</translation>
     </message>
     <message>
         <source>Always at rest below</source>
-        <translation type="unfinished"></translation>
+        <translation>低于此值始终静止</translation>
     </message>
     <message>
         <source>Adaptive: below this the foot is always at rest</source>
-        <translation type="unfinished"></translation>
+        <translation>自适应：低于此值时足部始终视为静止</translation>
     </message>
     <message>
         <source>Never at rest above</source>
-        <translation type="unfinished"></translation>
+        <translation>高于此值从不静止</translation>
     </message>
     <message>
         <source>Adaptive: above this the foot is never at rest</source>
-        <translation type="unfinished"></translation>
+        <translation>自适应：高于此值时足部从不视为静止</translation>
     </message>
     <message>
         <source>Shortest stance</source>
-        <translation type="unfinished"></translation>
+        <translation>最短支撑相</translation>
     </message>
     <message>
         <source>Shorter stance runs are dropped</source>
-        <translation type="unfinished"></translation>
+        <translation>更短的支撑相段将被舍弃</translation>
     </message>
     <message>
         <source>C1 lower bound on |a|</source>
-        <translation type="unfinished"></translation>
+        <translation>C1 |a| 下限</translation>
     </message>
     <message>
         <source>C1: lower bound on |a|</source>
-        <translation type="unfinished"></translation>
+        <translation>C1：|a| 的下限</translation>
     </message>
     <message>
         <source>C1 upper bound on |a|</source>
-        <translation type="unfinished"></translation>
+        <translation>C1 |a| 上限</translation>
     </message>
     <message>
         <source>C1: upper bound on |a|</source>
-        <translation type="unfinished"></translation>
+        <translation>C1：|a| 的上限</translation>
     </message>
     <message>
         <source>C2 bound on the std of |a|</source>
-        <translation type="unfinished"></translation>
+        <translation>C2 |a| 标准差上限</translation>
     </message>
     <message>
         <source>C2: std of |a| over the window must be below</source>
-        <translation type="unfinished"></translation>
+        <translation>C2：窗口内 |a| 的标准差须低于此值</translation>
     </message>
     <message>
         <source>C2 half-window</source>
-        <translation type="unfinished"></translation>
+        <translation>C2 半窗口</translation>
     </message>
     <message>
         <source>C2: half-window of the centred std</source>
-        <translation type="unfinished"></translation>
+        <translation>C2：中心化标准差的半窗口</translation>
     </message>
     <message>
         <source>C3 bound on |ω|</source>
-        <translation type="unfinished"></translation>
+        <translation>C3 |ω| 上限</translation>
     </message>
     <message>
         <source>C3: upper bound on |w|</source>
-        <translation type="unfinished"></translation>
+        <translation>C3：|w| 的上限</translation>
     </message>
     <message>
         <source>Median filter length</source>
-        <translation type="unfinished"></translation>
+        <translation>中值滤波长度</translation>
     </message>
     <message>
         <source>Median filter length applied to C</source>
-        <translation type="unfinished"></translation>
+        <translation>作用于 C 的中值滤波长度</translation>
     </message>
     <message>
         <source>Filter states</source>
-        <translation type="unfinished"></translation>
+        <translation>滤波器状态</translation>
     </message>
     <message>
         <source>15 states (with biases)</source>
-        <translation type="unfinished"></translation>
+        <translation>15 状态（含零偏）</translation>
     </message>
     <message>
         <source>9 states (no bias states)</source>
-        <translation type="unfinished"></translation>
+        <translation>9 状态（无零偏状态）</translation>
     </message>
     <message>
         <source>Error-state filter size: 15 estimates the sensor biases, 9 holds them at zero</source>
-        <translation type="unfinished"></translation>
+        <translation>误差状态滤波器的维数：15 状态估计传感器零偏，9 状态将其固定为零</translation>
     </message>
     <message>
         <source>Filter</source>
-        <translation type="unfinished"></translation>
+        <translation>滤波器</translation>
     </message>
     <message>
         <source>Estimator</source>
-        <translation type="unfinished"></translation>
+        <translation>估计器</translation>
     </message>
     <message>
         <source>Kalman filter</source>
-        <translation type="unfinished"></translation>
+        <translation>卡尔曼滤波器</translation>
     </message>
     <message>
         <source>Feliz de-drift (no filter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Feliz 去漂移（无滤波器）</translation>
     </message>
     <message>
         <source>Kalman filter + RTS smoother</source>
-        <translation type="unfinished"></translation>
+        <translation>卡尔曼滤波器 + RTS 平滑器</translation>
     </message>
     <message>
         <source>Kalman filter with the measurements below, Feliz 2009&apos;s per-stride velocity de-drift, or the filter followed by a Rauch-Tung-Striebel smoother over the whole recording (offline; live input runs the filter)</source>
-        <translation type="unfinished"></translation>
+        <translation>使用下列观测的卡尔曼滤波器、Feliz 2009 的逐跨步速度去漂移，或滤波器之后再对整个记录做 Rauch-Tung-Striebel 平滑（离线；实时输入只运行滤波器）</translation>
     </message>
     <message>
         <source>Measurements</source>
-        <translation type="unfinished"></translation>
+        <translation>观测</translation>
     </message>
     <message>
         <source>Zero-velocity update (ZUPT)</source>
-        <translation type="unfinished"></translation>
+        <translation>零速更新（ZUPT）</translation>
     </message>
     <message>
         <source>Zero-velocity update during stance</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相期间的零速更新</translation>
     </message>
     <message>
         <source>Zero angular rate update (ZARU)</source>
-        <translation type="unfinished"></translation>
+        <translation>零角速度更新（ZARU）</translation>
     </message>
     <message>
         <source>Zero angular rate update during stance</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相期间的零角速度更新</translation>
     </message>
     <message>
         <source>Heuristic drift reduction (HDR)</source>
-        <translation type="unfinished"></translation>
+        <translation>启发式漂移抑制（HDR）</translation>
     </message>
     <message>
         <source>Heuristic drift reduction: heading held on straight walks (seed 002)</source>
-        <translation type="unfinished"></translation>
+        <translation>启发式漂移抑制：直线行走时保持航向（seed 002）</translation>
     </message>
     <message>
         <source>Position error reduction (IPER)</source>
-        <translation type="unfinished">位置误差抑制（IPER）</translation>
+        <translation>位置误差抑制（IPER）</translation>
     </message>
     <message>
         <source>Position error reduction: walks along the building&apos;s axes, level floor (seed 002; assumes a rectilinear building)</source>
-        <translation type="unfinished"></translation>
+        <translation>位置误差抑制：沿建筑轴线行走、楼面水平（seed 002；假定建筑为直角布局）</translation>
     </message>
     <message>
         <source>Zero navigation acceleration (ZUNA)</source>
-        <translation type="unfinished">零导航加速度（ZUNA）</translation>
+        <translation>零导航加速度（ZUNA）</translation>
     </message>
     <message>
         <source>Zero navigation acceleration at mid-stance (seed 002)</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相中段的零导航加速度（seed 002）</translation>
     </message>
     <message>
         <source>Barometric height</source>
-        <translation type="unfinished"></translation>
+        <translation>气压高度</translation>
     </message>
     <message>
         <source>Barometric height at each stance (seed 004)</source>
-        <translation type="unfinished"></translation>
+        <translation>每个支撑相的气压高度（seed 004）</translation>
     </message>
     <message>
         <source>Magnetometer heading</source>
-        <translation type="unfinished"></translation>
+        <translation>磁力计航向</translation>
     </message>
     <message>
         <source>Magnetometer heading during stance, skipped near steel</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相期间的磁力计航向，靠近钢材时跳过</translation>
     </message>
     <message>
         <source>HDR heading lag</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR 航向滞后</translation>
     </message>
     <message>
         <source>HDR: heading compared with the heading this long ago</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR：将航向与这段时间之前的航向比较</translation>
     </message>
     <message>
         <source>HDR</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR</translation>
     </message>
     <message>
         <source>HDR turn threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR 转弯阈值</translation>
     </message>
     <message>
         <source>HDR: a smaller heading change is drift, a larger one a turn</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR：较小的航向变化视为漂移，较大的视为转弯</translation>
     </message>
     <message>
         <source>HDR measurement std</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR 观测标准差</translation>
     </message>
     <message>
         <source>HDR: R of the heading measurement, std</source>
-        <translation type="unfinished"></translation>
+        <translation>HDR：航向观测的 R，标准差</translation>
     </message>
     <message>
         <source>Building axis from the walk</source>
-        <translation type="unfinished"></translation>
+        <translation>由行走确定建筑轴线</translation>
     </message>
     <message>
         <source>IPER: building axis from the walk&apos;s dominant directions</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER：由行走的主方向确定建筑轴线</translation>
     </message>
     <message>
         <source>IPER</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER</translation>
     </message>
     <message>
         <source>Building axis angle</source>
-        <translation type="unfinished"></translation>
+        <translation>建筑轴线角度</translation>
     </message>
     <message>
         <source>IPER: angle of the building&apos;s main axis from x</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER：建筑主轴相对 x 轴的角度</translation>
     </message>
     <message>
         <source>Along-axis tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>沿轴容差</translation>
     </message>
     <message>
         <source>IPER: walking within this of an axis counts as along it</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER：行走方向与某轴线的偏差在此范围内即视为沿该轴行走</translation>
     </message>
     <message>
         <source>IPER window</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER 窗口</translation>
     </message>
     <message>
         <source>IPER: displacement window</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER：位移窗口</translation>
     </message>
     <message>
         <source>IPER cross-axis std</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER 横向标准差</translation>
     </message>
     <message>
         <source>IPER: R of the cross-axis displacement, std</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER：垂直于轴线方向位移的 R，标准差</translation>
     </message>
     <message>
         <source>IPER level-floor height std</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER 水平楼面高度标准差</translation>
     </message>
     <message>
         <source>IPER: R of the level-floor height, std</source>
-        <translation type="unfinished"></translation>
+        <translation>IPER：水平楼面高度的 R，标准差</translation>
     </message>
     <message>
         <source>ZUNA reference period</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA 参考时长</translation>
     </message>
     <message>
         <source>ZUNA: static start averaged for the reference</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA：对开始时的静止段取平均作为参考</translation>
     </message>
     <message>
         <source>ZUNA</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA</translation>
     </message>
     <message>
         <source>ZUNA shortest stance</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA 最短支撑相</translation>
     </message>
     <message>
         <source>ZUNA: mid-stance needs a stance run this long</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA：支撑相须持续这么长才取其中段</translation>
     </message>
     <message>
         <source>ZUNA margin below the threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA 低于阈值的裕量</translation>
     </message>
     <message>
         <source>ZUNA: mid-stance statistic this far below the threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA：支撑相中段的统计量须低于阈值这么多</translation>
     </message>
     <message>
         <source>ZUNA measurement std</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA 观测标准差</translation>
     </message>
     <message>
         <source>ZUNA: R of the acceleration, std</source>
-        <translation type="unfinished"></translation>
+        <translation>ZUNA：加速度的 R，标准差</translation>
     </message>
     <message>
         <source>Pressure to height</source>
-        <translation type="unfinished"></translation>
+        <translation>气压转高度</translation>
     </message>
     <message>
         <source>Barometric formula</source>
-        <translation type="unfinished"></translation>
+        <translation>气压公式</translation>
     </message>
     <message>
         <source>Linear constant (seed 004)</source>
-        <translation type="unfinished"></translation>
+        <translation>线性常数（seed 004）</translation>
     </message>
     <message>
         <source>Barometer: pressure difference to height</source>
-        <translation type="unfinished"></translation>
+        <translation>气压计：由气压差换算高度</translation>
     </message>
     <message>
         <source>Barometer</source>
-        <translation type="unfinished">气压计</translation>
+        <translation>气压计</translation>
     </message>
     <message>
         <source>Linear constant N</source>
-        <translation type="unfinished"></translation>
+        <translation>线性常数 N</translation>
     </message>
     <message>
         <source>Barometer: linear constant N</source>
-        <translation type="unfinished"></translation>
+        <translation>气压计：线性常数 N</translation>
     </message>
     <message>
         <source>Barometer height std</source>
-        <translation type="unfinished"></translation>
+        <translation>气压计高度标准差</translation>
     </message>
     <message>
         <source>Barometer: R of the height, std</source>
-        <translation type="unfinished"></translation>
+        <translation>气压计：高度的 R，标准差</translation>
     </message>
     <message>
         <source>Level walking height change</source>
-        <translation type="unfinished"></translation>
+        <translation>平地行走高度变化</translation>
     </message>
     <message>
         <source>Motion class: smaller height change per step is level walking</source>
-        <translation type="unfinished"></translation>
+        <translation>运动类别：每步高度变化小于此值即为平地行走</translation>
     </message>
     <message>
         <source>Elevator pressure variance</source>
-        <translation type="unfinished"></translation>
+        <translation>电梯气压方差</translation>
     </message>
     <message>
         <source>Motion class: pressure variance between steps above this is an elevator</source>
-        <translation type="unfinished"></translation>
+        <translation>运动类别：步间气压方差高于此值即为电梯</translation>
     </message>
     <message>
         <source>Magnetometer heading std</source>
-        <translation type="unfinished"></translation>
+        <translation>磁力计航向标准差</translation>
     </message>
     <message>
         <source>Magnetometer: R of the heading, std</source>
-        <translation type="unfinished"></translation>
+        <translation>磁力计：航向的 R，标准差</translation>
     </message>
     <message>
         <source>Magnetometer</source>
-        <translation type="unfinished">磁力计</translation>
+        <translation>磁力计</translation>
     </message>
     <message>
         <source>Field strength tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>场强容差</translation>
     </message>
     <message>
         <source>Magnetometer: |m| within this fraction of its value at alignment</source>
-        <translation type="unfinished"></translation>
+        <translation>磁力计：|m| 与对准时的值相差在此比例以内</translation>
     </message>
     <message>
         <source>Dip angle tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>磁倾角容差</translation>
     </message>
     <message>
         <source>Magnetometer: dip within this of its value at alignment</source>
-        <translation type="unfinished"></translation>
+        <translation>磁力计：磁倾角与对准时的值相差在此范围以内</translation>
     </message>
     <message>
         <source>Q attitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Q 姿态</translation>
     </message>
     <message>
         <source>Q attitude, std per 10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Q 姿态，每 10 ms 的标准差</translation>
     </message>
     <message>
         <source>Process noise</source>
-        <translation type="unfinished"></translation>
+        <translation>过程噪声</translation>
     </message>
     <message>
         <source>Q gyroscope bias</source>
-        <translation type="unfinished"></translation>
+        <translation>Q 陀螺仪零偏</translation>
     </message>
     <message>
         <source>Q gyro bias, std per 10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Q 陀螺零偏，每 10 ms 的标准差</translation>
     </message>
     <message>
         <source>Q position</source>
-        <translation type="unfinished"></translation>
+        <translation>Q 位置</translation>
     </message>
     <message>
         <source>Q position, std per 10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Q 位置，每 10 ms 的标准差</translation>
     </message>
     <message>
         <source>Q velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>Q 速度</translation>
     </message>
     <message>
         <source>Q velocity, std per 10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Q 速度，每 10 ms 的标准差</translation>
     </message>
     <message>
         <source>Q accelerometer bias</source>
-        <translation type="unfinished"></translation>
+        <translation>Q 加速度计零偏</translation>
     </message>
     <message>
         <source>Q accelerometer bias, std per 10 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Q 加速度计零偏，每 10 ms 的标准差</translation>
     </message>
     <message>
         <source>R zero velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>R 零速</translation>
     </message>
     <message>
         <source>R ZUPT, std</source>
-        <translation type="unfinished"></translation>
+        <translation>R ZUPT，标准差</translation>
     </message>
     <message>
         <source>Measurement noise</source>
-        <translation type="unfinished"></translation>
+        <translation>观测噪声</translation>
     </message>
     <message>
         <source>R zero angular rate</source>
-        <translation type="unfinished"></translation>
+        <translation>R 零角速度</translation>
     </message>
     <message>
         <source>R ZARU, std</source>
-        <translation type="unfinished"></translation>
+        <translation>R ZARU，标准差</translation>
     </message>
     <message>
         <source>P0 attitude</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 姿态</translation>
     </message>
     <message>
         <source>P0 attitude, std</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 姿态，标准差</translation>
     </message>
     <message>
         <source>Initial covariance</source>
-        <translation type="unfinished"></translation>
+        <translation>初始协方差</translation>
     </message>
     <message>
         <source>P0 gyroscope bias</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 陀螺仪零偏</translation>
     </message>
     <message>
         <source>P0 gyro bias, std</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 陀螺零偏，标准差</translation>
     </message>
     <message>
         <source>P0 position</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 位置</translation>
     </message>
     <message>
         <source>P0 position, std</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 位置，标准差</translation>
     </message>
     <message>
         <source>P0 velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 速度</translation>
     </message>
     <message>
         <source>P0 velocity, std</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 速度，标准差</translation>
     </message>
     <message>
         <source>P0 accelerometer bias</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 加速度计零偏</translation>
     </message>
     <message>
         <source>P0 accelerometer bias, std</source>
-        <translation type="unfinished"></translation>
+        <translation>P0 加速度计零偏，标准差</translation>
     </message>
 </context>
 <context>
@@ -2504,11 +2504,11 @@
     </message>
     <message>
         <source> (the slider up to %1; type a larger value)</source>
-        <translation type="unfinished"></translation>
+        <translation>（滑块最大至 %1；更大的值请直接输入）</translation>
     </message>
     <message>
         <source>%1&lt;br&gt;Range: %2 to %3 %4%6&lt;br&gt;Default: %5 %4&lt;br&gt;Up/Down in the value field: one slider step; Page Up/Down: ten</source>
-        <translation type="unfinished">%1&lt;br&gt;范围：%2 至 %3 %4&lt;br&gt;默认值：%5 %4&lt;br&gt;数值框中的上/下键：滑块移动一步；Page Up/Down：十步 {1&lt;?} {2 ?} {3 %4%6&lt;?} {5 %4&lt;?}</translation>
+        <translation>%1&lt;br&gt;范围：%2 至 %3 %4%6&lt;br&gt;默认值：%5 %4&lt;br&gt;数值框中的上/下键：滑块移动一步；Page Up/Down：十步</translation>
     </message>
 </context>
 <context>
@@ -2697,7 +2697,7 @@
     </message>
     <message>
         <source>&lt;p&gt;&lt;b&gt;Left foot&lt;/b&gt;&lt;/p&gt;%1&lt;hr&gt;&lt;p&gt;&lt;b&gt;Right foot&lt;/b&gt;&lt;/p&gt;%2</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;&lt;b&gt;左脚&lt;/b&gt;&lt;/p&gt;%1&lt;hr&gt;&lt;p&gt;&lt;b&gt;右脚&lt;/b&gt;&lt;/p&gt;%2</translation>
     </message>
 </context>
 <context>
@@ -2750,7 +2750,7 @@
     </message>
     <message>
         <source>Back to run %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>回到第 %1 次运行：%2</translation>
     </message>
 </context>
 <context>
@@ -3457,59 +3457,59 @@ stance</source>
     </message>
     <message>
         <source>Gait stance P / R / F1</source>
-        <translation type="unfinished"></translation>
+        <translation>步态支撑相 P / R / F1</translation>
     </message>
     <message>
         <source>Strides in the trial</source>
-        <translation type="unfinished"></translation>
+        <translation>试验段内的跨步</translation>
     </message>
     <message>
         <source>At rest (ZUPT) precision</source>
-        <translation type="unfinished"></translation>
+        <translation>静止（ZUPT）精确率</translation>
     </message>
     <message>
         <source>At rest (ZUPT) recall</source>
-        <translation type="unfinished"></translation>
+        <translation>静止（ZUPT）召回率</translation>
     </message>
     <message>
         <source>At rest (ZUPT) F1</source>
-        <translation type="unfinished"></translation>
+        <translation>静止（ZUPT）F1</translation>
     </message>
     <message>
         <source>The gait events&apos; stance (heel strike to toe off) against the labelled one, sample by sample: precision, recall and F1. This is the figure to compare with a gait lab&apos;s labels.</source>
-        <translation type="unfinished"></translation>
+        <translation>由步态事件得到的支撑相（足跟着地至足尖离地）与标注的支撑相逐采样点比较：精确率、召回率和 F1。与步态实验室的标注比较时应看这一指标。</translation>
     </message>
     <message>
         <source>The detector&apos;s foot at rest (the zero-velocity updates) against the labelled stance. The foot rests only in the middle of its stance, so the recall is low by design; the precision says no swing was taken for rest.</source>
-        <translation type="unfinished"></translation>
+        <translation>检测器判定的足部静止（即零速更新）与标注支撑相的比较。足部仅在支撑相中段静止，因此召回率按设计就偏低；精确率表明没有把摆动相误判为静止。</translation>
     </message>
     <message>
         <source>Strides whose swing lies inside the labelled trial, against the labelled swings there</source>
-        <translation type="unfinished"></translation>
+        <translation>摆动相位于已标注试验段内的跨步，与该段内标注的摆动相比较</translation>
     </message>
     <message>
         <source>Movements between stances that were no stride (under %1 m, or never turning at a swing&apos;s %2 rad/s: shifting the weight while standing), merged into one stance:</source>
-        <translation type="unfinished"></translation>
+        <translation>支撑相之间不构成跨步的移动（小于 %1 m，或角速度从未达到摆动相的 %2 rad/s：站立时转移重心），已合并为一个支撑相：</translation>
     </message>
     <message>
         <source>%1-%2 s: %3 m, at most %4 rad/s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1-%2 s：%3 m，最大 %4 rad/s</translation>
     </message>
     <message>
         <source>... and %1 more</source>
-        <translation type="unfinished"></translation>
+        <translation>... 另有 %1 项</translation>
     </message>
     <message>
         <source>%1 / %2 (%3 merged: no swing)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2（%3 个已合并：无摆动相）</translation>
     </message>
     <message>
         <source>%1 detected, %2 labelled swings</source>
-        <translation type="unfinished"></translation>
+        <translation>检测到 %1 个，标注的摆动相 %2 个</translation>
     </message>
     <message>
         <source>%1 / %2 / %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 / %3</translation>
     </message>
 </context>
 <context>
@@ -3873,7 +3873,7 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
     </message>
     <message>
         <source>Beware: the tuned parameters change the strides, not only the figure (a swing split in two or a stance lost looks like this):</source>
-        <translation type="unfinished"></translation>
+        <translation>注意：调参后的参数改变的是跨步本身，而不仅是指标（摆动相被一分为二或丢失支撑相时就会如此）：</translation>
     </message>
 </context>
 <context>
@@ -4096,7 +4096,7 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
     </message>
     <message>
         <source>Beware: the tuned parameters change the strides, not only the figure: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>注意：调参后的参数改变的是跨步本身，而不仅是指标：%1</translation>
     </message>
 </context>
 <context>
@@ -4186,15 +4186,15 @@ from the marker: Δt = %1 s   Δx = %2 m   Δy = %3 m   distance %4 m</source>
     </message>
     <message>
         <source>Show this view: signals, detector, states, trajectory2d, trajectory3d, motion, summary, steps or gait</source>
-        <translation type="unfinished"></translation>
+        <translation>显示此视图：signals、detector、states、trajectory2d、trajectory3d、motion、summary、steps 或 gait</translation>
     </message>
     <message>
         <source>Read the recording with this column map, as footpath-cli does (time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,...)</source>
-        <translation type="unfinished"></translation>
+        <translation>按此列映射读取记录，用法同 footpath-cli（time_ms,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,...）</translation>
     </message>
     <message>
         <source>Read the recording with a saved import preset</source>
-        <translation type="unfinished"></translation>
+        <translation>使用已保存的导入预设读取记录</translation>
     </message>
 </context>
 </TS>

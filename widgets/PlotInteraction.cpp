@@ -96,7 +96,7 @@ QString csvNumber(double value)
 
 /// The least room between tick labels: a line of text and a gap up an axis, a number and a gap
 /// along it.
-constexpr int kMinTickSpacingVertical_px = 26;
+constexpr int kMinTickSpacingVertical_px = 22;
 constexpr int kMinTickSpacingHorizontal_px = 70;
 
 QString formatPlotNumber(double value, int decimals)
@@ -158,7 +158,7 @@ void useReadableTicks(QCustomPlot* plot)
                 const bool vertical = axis->orientation() == Qt::Vertical;
                 const int length = vertical ? rect->height() : rect->width();
                 const int spacing = vertical ? kMinTickSpacingVertical_px : kMinTickSpacingHorizontal_px;
-                readable->setTickCount(std::clamp(length / spacing, 2, 6));
+                readable->setTickCount(std::clamp(length / spacing, 3, 6));
             }
         }
     }

@@ -214,6 +214,10 @@ void drawPlot(QPainter& painter, QCustomPlot* plot, const QRectF& target, int wi
 {
     useReadableTicks(plot);  // 1-2-5 steps, no "-0": the report's plots read like the workspace's
     drawScaled(painter, target, width, [plot](QPainter& recorder, QSize size) {
+        // Laid out at the drawn size first: a legend wraps and the ticks are counted there, not at a
+        // hidden widget's size (the signals' legend came out in one column over its own rows).
+        plot->setViewport(QRect(QPoint(0, 0), size));
+        plot->replot(QCustomPlot::rpImmediateRefresh);
         plot->toPainter(static_cast<QCPPainter*>(&recorder), size.width(), size.height());
     });
 }
