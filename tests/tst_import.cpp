@@ -18,15 +18,6 @@ using namespace footpath;
 
 namespace {
 
-QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& content)
-{
-    const QString path = dir.filePath(name);
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(content) != content.size())
-        return {};
-    return path;
-}
-
 ImportResult importOrFail(const QString& path, const ImportOptions& options = {})
 {
     ImportResult read = importRecording(path.toStdString(), options);
@@ -215,7 +206,7 @@ private slots:
         QFETCH(int, time);
         QFETCH(QString, warning);
         QTemporaryDir dir;
-        const QString path = writeFile(dir, "walk.csv", syntheticText(header, accScale, gyrScale, timeScale));
+        const QString path = writeFileIn(dir, "walk.csv", syntheticText(header, accScale, gyrScale, timeScale));
         const ImportResult read = importOrFail(path);
         QVERIFY(read.ok());
         QCOMPARE(int(read.info.accUnitAsRead), acc);
@@ -234,7 +225,7 @@ private slots:
     void overridesWin()
     {
         QTemporaryDir dir;
-        const QString path = writeFile(dir, "walk.csv",
+        const QString path = writeFileIn(dir, "walk.csv",
                                        syntheticText("time,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1.0 / 9.80665, 1.0, 1.0));
         ImportOptions options;
         options.accUnit = AccUnit::MetresPerSecond2;  // wrong on purpose: it is g
@@ -250,7 +241,7 @@ private slots:
         QTemporaryDir dir;
         // Every 50th packet lost: of 400 rows, samples 49, 99, ..., 399 are missing; the last one
         // ends the file, so 7 gaps of 20 ms show.
-        const QString path = writeFile(dir, "gaps.csv", syntheticText("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1.0,
+        const QString path = writeFileIn(dir, "gaps.csv", syntheticText("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1.0,
                                                                       1.0, 1.0, 400, 50));
         const ImportResult read = importOrFail(path);
         QCOMPARE(read.info.gaps.count, std::size_t(7));
@@ -266,7 +257,7 @@ private slots:
         QByteArray text = "counter,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
         for (int k : {0, 1, 2, 4, 5})  // packet 3 lost
             text += QByteArray::number(k) + ",0,0,9.81,0,0,0\n";
-        const QString path = writeFile(dir, "counter.csv", text);
+        const QString path = writeFileIn(dir, "counter.csv", text);
         const ImportResult noRate = importRecording(path.toStdString());
         QVERIFY(!noRate.ok());
         // What to set, in words the GUI's import dialog also fits (it has no --rate).
@@ -282,7 +273,7 @@ private slots:
     void decimalCommaWithSemicolons()
     {
         QTemporaryDir dir;
-        const QString path = writeFile(dir, "excel.csv",
+        const QString path = writeFileIn(dir, "excel.csv",
                                        "time_s;acc_x;acc_y;acc_z;gyr_x;gyr_y;gyr_z\n0,00;0,1;0,2;9,81;0;0;0,5\n"
                                        "0,01;0,1;0,2;9,81;0;0;0,5\n");
         const ImportResult read = importOrFail(path);
@@ -312,15 +303,15 @@ private slots:
     void sidecarGivesClosedLoopAndLength()
     {
         QTemporaryDir dir;
-        const QString path = writeFile(dir, "loop.csv", syntheticText("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, 1, 1));
-        writeFile(dir, "loop.csv.reference.json", R"({"closed_loop": true, "length_m": 25.8})");
+        const QString path = writeFileIn(dir, "loop.csv", syntheticText("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, 1, 1));
+        writeFileIn(dir, "loop.csv.reference.json", R"({"closed_loop": true, "length_m": 25.8})");
         const ImportResult read = importOrFail(path);
         QVERIFY(read.recording.reference.closedLoop);
         QCOMPARE(read.recording.reference.knownLength_m, 25.8);
         QVERIFY(!read.recording.reference.notes.empty());
 
-        writeFile(dir, "broken.csv.reference.json", "{closed_loop: yes");
-        const QString broken = writeFile(dir, "broken.csv", syntheticText("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, 1, 1));
+        writeFileIn(dir, "broken.csv.reference.json", "{closed_loop: yes");
+        const QString broken = writeFileIn(dir, "broken.csv", syntheticText("time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z", 1, 1, 1));
         const ImportResult withBrokenSidecar = importOrFail(broken);
         QVERIFY(withBrokenSidecar.ok());
         QVERIFY(hasWarning(withBrokenSidecar.recording, "reference sidecar ignored"));
@@ -437,7 +428,7 @@ private slots:
     void pressureUnitsConvertToPascal()
     {
         QTemporaryDir dir;
-        const QString path = writeFile(dir, "baro.csv",
+        const QString path = writeFileIn(dir, "baro.csv",
                                        "time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,pressure_hpa\n"
                                        "0,0,0,9.81,0,0,0,1013.25\n0.01,0,0,9.81,0,0,0,1013.2\n");
         const ImportResult read = importOrFail(path);
@@ -456,14 +447,14 @@ private slots:
             swapped += time + ",0.01,-0.02,0.005,0.3,-0.2,9.79,101325\n";
         }
         QTemporaryDir dir;
-        const ColumnMapGuess good = guessColumnMap(writeFile(dir, "usual.txt", usual).toStdString(), {});
+        const ColumnMapGuess good = guessColumnMap(writeFileIn(dir, "usual.txt", usual).toStdString(), {});
         QCOMPARE(good.columnMap, (std::vector<std::string>{"time_ms", "acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y",
                                                            "gyr_z", "pressure_pa"}));
         QVERIFY2(good.confident, good.doubt.c_str());
-        const ColumnMapGuess bad = guessColumnMap(writeFile(dir, "swapped.txt", swapped).toStdString(), {});
+        const ColumnMapGuess bad = guessColumnMap(writeFileIn(dir, "swapped.txt", swapped).toStdString(), {});
         QVERIFY(!bad.confident);
         QVERIFY2(QString::fromStdString(bad.doubt).contains("not gravity"), bad.doubt.c_str());
-        const ColumnMapGuess prose = guessColumnMap(writeFile(dir, "prose.txt", "Hello there.\nNo data.\n").toStdString(), {});
+        const ColumnMapGuess prose = guessColumnMap(writeFileIn(dir, "prose.txt", "Hello there.\nNo data.\n").toStdString(), {});
         QVERIFY(!prose.confident);
         QVERIFY2(QString::fromStdString(prose.doubt).contains("does not look like sensor data"), prose.doubt.c_str());
     }
@@ -478,7 +469,7 @@ private slots:
         for (int k = 0; k < 400; ++k)
             text += QByteArray::number(0.005 * k, 'f', 3) + ",0.01,0.02,-1.0,0.01,0.0,0.02,0.21,0.05,-0.43\n";
         QTemporaryDir dir;
-        const std::string path = writeFile(dir, "export.csv", text).toStdString();
+        const std::string path = writeFileIn(dir, "export.csv", text).toStdString();
         const ColumnMapGuess guess = guessColumnMap(path, {});
         QCOMPARE(guess.headerLine, std::size_t(1));
         QCOMPARE(guess.headerNames.size(), std::size_t(10));
@@ -529,7 +520,7 @@ private slots:
         for (int k = 0; k < 300; ++k)
             text += QByteArray::number(1000 + 10 * k) + ",0.3,-0.2,9.79,0.01,-0.02,0.005,0.5512,0.1021,-0.8277\n";
         QTemporaryDir dir;
-        const ColumnMapGuess guess = guessColumnMap(writeFile(dir, "log.txt", text).toStdString(), {});
+        const ColumnMapGuess guess = guessColumnMap(writeFileIn(dir, "log.txt", text).toStdString(), {});
         QVERIFY(guess.headerNames.empty());
         QCOMPARE(QString::fromStdString(guess.columnMap[0]), QStringLiteral("time_ms"));
         QCOMPARE(QString::fromStdString(guess.columnMap[7]), QStringLiteral("skip"));
@@ -540,7 +531,7 @@ private slots:
         QByteArray hpa;
         for (int k = 0; k < 300; ++k)
             hpa += QByteArray::number(0.01 * k, 'f', 2) + ",0.3,-0.2,9.79,0.01,-0.02,0.005,1013.2\n";
-        const ColumnMapGuess inHpa = guessColumnMap(writeFile(dir, "hpa.txt", hpa).toStdString(), {});
+        const ColumnMapGuess inHpa = guessColumnMap(writeFileIn(dir, "hpa.txt", hpa).toStdString(), {});
         QCOMPARE(QString::fromStdString(inHpa.columnMap[0]), QStringLiteral("time_s"));  // the values' steps, not the usual ms
         QCOMPARE(QString::fromStdString(inHpa.columnMap[7]), QStringLiteral("pressure_hpa"));
         QVERIFY2(inHpa.confident, inHpa.doubt.c_str());

@@ -2,6 +2,7 @@
 // as the header, the file's own line numbers, and the check that refuses a reading that cannot be
 // right before Open.
 #include "ImportDialog.h"
+#include "TestData.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -15,15 +16,6 @@
 using namespace footpath;
 
 namespace {
-
-QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& content)
-{
-    const QString path = dir.filePath(name);
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(content) != content.size())
-        qFatal("cannot write %s", qPrintable(path));
-    return path;
-}
 
 QStringList roles(const ImportDialog& dialog)
 {
@@ -62,7 +54,7 @@ private slots:
         for (int k = 0; k < 400; ++k)
             text += QByteArray::number(0.005 * k, 'f', 3) + ",0.01,0.02,-1.0,0.01,0.0,0.02,0.21,0.05,-0.43\n";
         QTemporaryDir dir;
-        ImportDialog dialog(writeFile(dir, "export.csv", text), QStringLiteral("missing columns"), ImportOptions());
+        ImportDialog dialog(writeFileIn(dir, "export.csv", text), QStringLiteral("missing columns"), ImportOptions());
         auto* table = dialog.findChild<QTableWidget*>();
         QCOMPARE(table->horizontalHeaderItem(0)->text(), QStringLiteral("1: Time"));
         QCOMPARE(table->horizontalHeaderItem(4)->text(), QStringLiteral("5: Roll rate"));
@@ -99,7 +91,7 @@ private slots:
         for (int k = 0; k < 300; ++k)
             text += QByteArray::number(1000 + 10 * k) + ",0.3,-0.2,9.79,0.01,-0.02,0.005,0.5512,0.1021,-0.8277\n";
         QTemporaryDir dir;
-        ImportDialog dialog(writeFile(dir, "log.txt", text), QStringLiteral("no header row"), ImportOptions());
+        ImportDialog dialog(writeFileIn(dir, "log.txt", text), QStringLiteral("no header row"), ImportOptions());
         auto* table = dialog.findChild<QTableWidget*>();
         QCOMPARE(table->verticalHeaderItem(1)->text(), QStringLiteral("line 2"));
         QCOMPARE(table->horizontalHeaderItem(0)->text(), QStringLiteral("column 1"));

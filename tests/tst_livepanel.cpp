@@ -57,6 +57,9 @@ const QStringList kFaults = {QStringLiteral("--seed"),       QStringLiteral("5")
                              QStringLiteral("0.01"),         QStringLiteral("--corrupt-rate"), QStringLiteral("0.01"),
                              QStringLiteral("--junk-rate"),  QStringLiteral("0.02"), QStringLiteral("--speed"),
                              QStringLiteral("10")};
+/// The port goes away after 3 s of streaming and comes back 1 s later (a USB plug pulled).
+const QStringList kUnplugAndReplug = {QStringLiteral("--disconnect-after"), QStringLiteral("3"),
+                                      QStringLiteral("--replug-after"), QStringLiteral("1")};
 
 bool sameValues(const ImuSample& a, const ImuSample& b)
 {
@@ -380,10 +383,7 @@ void TestLivePanel::offersReconnectWhenPortVanishes()
     const QString link = dir.filePath(QStringLiteral("ttyMTi2"));
     const QString log = dir.filePath(QStringLiteral("sent.csv"));
     Emulator emulator;  // unplugged after 3 s of streaming, plugged in again 1 s later
-    const QString problem = emulator.start(
-        link, log,
-        kFaults + QStringList{QStringLiteral("--disconnect-after"), QStringLiteral("3"), QStringLiteral("--replug-after"),
-                              QStringLiteral("1")});
+    const QString problem = emulator.start(link, log, kFaults + kUnplugAndReplug);
     QVERIFY2(problem.isEmpty(), qPrintable(problem));
 
     LivePanel panel;
@@ -426,10 +426,7 @@ void TestLivePanel::reconnectAsksBeforeDroppingUnsavedSamples()
     QVERIFY(dir.isValid());
     const QString link = dir.filePath(QStringLiteral("ttyMTi4"));
     Emulator emulator;  // unplugged after 3 s of streaming, plugged in again 1 s later
-    const QString problem = emulator.start(
-        link, QString(),
-        kFaults + QStringList{QStringLiteral("--disconnect-after"), QStringLiteral("3"), QStringLiteral("--replug-after"),
-                              QStringLiteral("1")});
+    const QString problem = emulator.start(link, QString(), kFaults + kUnplugAndReplug);
     QVERIFY2(problem.isEmpty(), qPrintable(problem));
 
     LivePanel panel;

@@ -54,6 +54,18 @@ QString pdfWords(const QString& pdf)
         .simplified();
 }
 
+/// A report of a simulated 10 x 5 m rectangle estimated with params.
+ReportContent simulatedWalkContent(const Parameters& params)
+{
+    const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), WalkSimulatorConfig());
+    ReportContent content;
+    content.recordingPath = "simulated.csv";
+    content.recording = std::make_shared<const Recording>(walk.recording);
+    content.parameters = params;
+    content.result = std::make_shared<const Result>(runPipeline(*content.recording, params).result);
+    return content;
+}
+
 QString outputDir(const QTemporaryDir& temporary)
 {
     const QByteArray keep = qgetenv("FOOTPATH_REPORT_KEEP");
@@ -99,13 +111,10 @@ private slots:
     void changedParametersAreMarkedAndLetterWorks()
     {
         QTemporaryDir dir;
-        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), WalkSimulatorConfig());
-        ReportContent content;
-        content.recordingPath = "simulated.csv";
-        content.recording = std::make_shared<const Recording>(walk.recording);
-        content.parameters.acc_std_max_mps2 = 0.7;
-        content.parameters.use_zaru = false;
-        content.result = std::make_shared<const Result>(runPipeline(*content.recording, content.parameters).result);
+        Parameters params;
+        params.acc_std_max_mps2 = 0.7;
+        params.use_zaru = false;
+        const ReportContent content = simulatedWalkContent(params);
         const QString pdf = outputDir(dir) + "/letter-report.pdf";
         QCOMPARE(writePdfReport(content, pdf, QPageSize::Letter), QString());
         QVERIFY(run("pdfinfo", {pdf}).contains("letter"));
@@ -131,13 +140,10 @@ private slots:
         // A tuned value was printed "0.\n000958747" (wrapped after its point), and the Parameters
         // table started with its heading and two rows at a page's foot.
         QTemporaryDir dir;
-        const SimulatedWalk walk = simulateWalk(closedRectanglePath(10.0, 5.0), WalkSimulatorConfig());
-        ReportContent content;
-        content.recordingPath = "simulated.csv";
-        content.recording = std::make_shared<const Recording>(walk.recording);
-        content.parameters.q_vel_mps = 0.000958747;
-        content.parameters.zv_min_stance_s = 0.0412345;
-        content.result = std::make_shared<const Result>(runPipeline(*content.recording, content.parameters).result);
+        Parameters params;
+        params.q_vel_mps = 0.000958747;
+        params.zv_min_stance_s = 0.0412345;
+        const ReportContent content = simulatedWalkContent(params);
         const QString pdf = outputDir(dir) + "/wide-values-report.pdf";
         QCOMPARE(writePdfReport(content, pdf), QString());
         const QString text = run("pdftotext", {"-layout", pdf, "-"});

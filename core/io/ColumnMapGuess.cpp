@@ -147,39 +147,54 @@ void rolesFromHeader(ColumnMapGuess& guess, std::vector<bool>& unitStated)
         guess.notes.push_back("names it does not know, skipped: " + listedColumnNames(unknown, ColumnCount::Stated));
 }
 
-void checkRate(double rate, ColumnMapCheck& check)
+/// A reading checked against what can be (outside: refused) and what is usual (outside: a doubt).
+struct Expected {
+    double anyLow, anyHigh;          ///< beyond these the reading cannot be right
+    double usualLow, usualHigh;      ///< beyond these it is unusual
+    const char* refusal;             ///< appended to the reading's text when refused
+    const char* doubt;               ///< ... when doubted
+};
+
+void checkReading(double value, const std::string& reading, const Expected& expected, ColumnMapCheck& check)
 {
-    const std::string text = "read so, the rate is " + figure(rate) + " Hz";
-    if (!(rate >= kMinPlausibleRate_hz && rate <= kMaxImportRate_hz))
-        check.refusals.push_back(text + ", no IMU's: check the time column and its unit");
-    else if (rate < kMinRate_hz || rate > kMaxRate_hz)
-        check.doubts.push_back(text + ", unusual for an IMU on a foot (10-2000 Hz)");
+    if (!(value >= expected.anyLow && value <= expected.anyHigh))
+        check.refusals.push_back(reading + expected.refusal);
+    else if (value < expected.usualLow || value > expected.usualHigh)
+        check.doubts.push_back(reading + expected.doubt);
 }
 
-void checkGravity(const std::vector<ImuSample>& samples, ColumnMapCheck& check)
+template <typename F>
+double medianOver(const std::vector<ImuSample>& samples, F value)
 {
-    std::vector<double> norms;
+    std::vector<double> values;
+    values.reserve(samples.size());
     for (const ImuSample& sample : samples)
-        norms.push_back(sample.acc_mps2.norm());
-    const double gravity = median(norms);
-    const std::string text = "read so, the median |a| is " + figure(gravity) + " m/s\u00b2, not gravity";
-    if (!(gravity >= kMinAnyGravity_mps2 && gravity <= kMaxAnyGravity_mps2))
-        check.refusals.push_back(text + " (9.8 m/s\u00b2 or 1 g): check the accelerometer columns and their unit");
-    else if (gravity < kMinGravity_mps2 || gravity > kMaxGravity_mps2)
-        check.doubts.push_back(text + " (9.8 m/s\u00b2 or 1 g at rest)");
+        values.push_back(value(sample));
+    return median(std::move(values));
 }
 
-void checkPressure(const std::vector<ImuSample>& samples, ColumnMapCheck& check)
+void checkReadings(const ImportResult& read, ColumnMapCheck& check)
 {
-    std::vector<double> pressures;
-    for (const ImuSample& sample : samples)
-        pressures.push_back(sample.pressure_pa);
-    const double pressure = median(pressures);
-    const std::string text = "read so, the pressure is " + figure(pressure / 1000.0) + " kPa";
-    if (!(pressure >= kMinAnyPressure_pa && pressure <= kMaxAnyPressure_pa))
-        check.refusals.push_back(text + ", no air pressure (30-110 kPa where people walk): that column is no barometer");
-    else if (pressure < kMinAirPressure_pa || pressure > kMaxAirPressure_pa)
-        check.doubts.push_back(text + ", outside the 30-110 kPa where people walk");
+    const double rate = read.info.rate_hz;
+    checkReading(rate, "read so, the rate is " + figure(rate) + " Hz",
+                 {kMinPlausibleRate_hz, kMaxImportRate_hz, kMinRate_hz, kMaxRate_hz,
+                  ", no IMU's: check the time column and its unit", ", unusual for an IMU on a foot (10-2000 Hz)"},
+                 check);
+    const std::vector<ImuSample>& samples = read.recording.samples;
+    const double gravity = medianOver(samples, [](const ImuSample& s) { return s.acc_mps2.norm(); });
+    checkReading(gravity, "read so, the median |a| is " + figure(gravity) + " m/s\u00b2, not gravity",
+                 {kMinAnyGravity_mps2, kMaxAnyGravity_mps2, kMinGravity_mps2, kMaxGravity_mps2,
+                  " (9.8 m/s\u00b2 or 1 g): check the accelerometer columns and their unit",
+                  " (9.8 m/s\u00b2 or 1 g at rest)"},
+                 check);
+    if (!read.recording.hasPressure())
+        return;
+    const double pressure = medianOver(samples, [](const ImuSample& s) { return s.pressure_pa; });
+    checkReading(pressure, "read so, the pressure is " + figure(pressure / 1000.0) + " kPa",
+                 {kMinAnyPressure_pa, kMaxAnyPressure_pa, kMinAirPressure_pa, kMaxAirPressure_pa,
+                  ", no air pressure (30-110 kPa where people walk): that column is no barometer",
+                  ", outside the 30-110 kPa where people walk"},
+                 check);
 }
 
 }  // namespace
@@ -208,11 +223,7 @@ ColumnMapCheck checkColumnMap(const std::string& head, const std::string& path, 
         check.refusals.push_back((error.line > 0 ? "line " + std::to_string(error.line) + ": " : std::string()) + error.message);
         return check;
     }
-    const std::vector<ImuSample>& samples = read.recording.samples;
-    checkRate(read.info.rate_hz, check);
-    checkGravity(samples, check);
-    if (read.recording.hasPressure())
-        checkPressure(samples, check);
+    checkReadings(read, check);
     check.reading = figure(read.info.rate_hz) + " Hz, acc in " + unitName(read.info.accUnitAsRead) + ", gyr in "
                     + unitName(read.info.gyrUnitAsRead) + ", channels";
     for (const std::string& channel : read.info.channels)
