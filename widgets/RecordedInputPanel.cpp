@@ -58,6 +58,8 @@ void RecordedInputPanel::showLoading(const QString& path)
     progress_->setVisible(true);
     cancel_->setVisible(true);
     open_->setEnabled(false);
+    mainHtml_.clear();  // a new recording: the last one's feet go
+    otherHtml_.clear();
 }
 
 void RecordedInputPanel::setProgress(double fraction)
@@ -71,12 +73,19 @@ void RecordedInputPanel::showInfo(const QString& path, const ImportResult& resul
     cancel_->setVisible(false);
     open_->setEnabled(true);
     mainHtml_ = describe(path, result);
-    info_->setHtml(mainHtml_);
+    showBoth();
 }
 
 void RecordedInputPanel::showOtherFoot(const QString& path, const ImportResult& result)
 {
-    info_->setHtml(tr("<p><b>Left foot</b></p>%1<hr><p><b>Right foot</b></p>%2").arg(mainHtml_, describe(path, result)));
+    otherHtml_ = describe(path, result);  // whichever of the two files is read first
+    showBoth();
+}
+
+void RecordedInputPanel::showBoth()
+{
+    info_->setHtml(otherHtml_.isEmpty() ? mainHtml_
+                                        : tr("<p><b>Left foot</b></p>%1<hr><p><b>Right foot</b></p>%2").arg(mainHtml_, otherHtml_));
 }
 
 void RecordedInputPanel::showProblem(const QString& message)

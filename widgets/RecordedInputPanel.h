@@ -42,7 +42,10 @@ private:
     QProgressBar* progress_;
     QPushButton* cancel_;
     QTextBrowser* info_;
-    QString mainHtml_;  ///< the (left) recording's part, which the other foot's follows
+    void showBoth();
+
+    QString mainHtml_;   ///< the (left) recording's part, which the other foot's follows
+    QString otherHtml_;  ///< the right foot's, when both feet are open
 };
 
 }  // namespace footpath
