@@ -154,7 +154,8 @@ private slots:
         for (const auto& [heading, firstRows] :
              {std::pair{QStringLiteral("Parameters ("), QStringList{"alignment_s", "gravity_mps2", "declination_rad", "detector"}},
               std::pair{QStringLiteral("Steps\n"), QStringList{"Stance from", "\n1 ", "\n2 ", "\n3 "}}}) {
-            const auto page = std::find_if(pages.begin(), pages.end(), [&](const QString& p) { return p.contains(heading); });
+            const QString& title = heading;  // a lambda may not capture a structured binding (C++17)
+            const auto page = std::find_if(pages.begin(), pages.end(), [&title](const QString& p) { return p.contains(title); });
             QVERIFY2(page != pages.end(), qPrintable(heading));
             for (const QString& row : firstRows)
                 QVERIFY2(QString(*page).replace(QRegularExpression("\n[ \t]+"), "\n").contains(row),
