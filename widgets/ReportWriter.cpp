@@ -9,8 +9,9 @@
 #include "TrajectoryView2D.h"
 #include "TrajectoryView3D.h"
 #include "WarningOverlay.h"
-#include "nav/Pipeline.h"
+#include "metrics/Evaluation.h"
 #include "nav/MethodSets.h"
+#include "nav/Pipeline.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -266,22 +266,6 @@ std::size_t nearestSampleAtTime(const std::vector<double>& times_s, double time_
     return static_cast<std::size_t>(index);
 }
 
-std::vector<Eigen::Vector3d> alignReferenceToEstimate(const std::vector<Eigen::Vector3d>& reference,
-                                                      const std::vector<Eigen::Vector3d>& estimate)
-{
-    const ArmseResult armse = computeArmse(estimate, reference);
-    if (std::isnan(armse.rotation_rad))
-        return {};
-    // computeArmse turns the estimate onto the reference; the overlay needs the inverse turn.
-    const Eigen::Matrix3d toEstimateFrame =
-        Eigen::AngleAxisd(-armse.rotation_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-    std::vector<Eigen::Vector3d> aligned;
-    aligned.reserve(reference.size());
-    for (const Eigen::Vector3d& p : reference)
-        aligned.push_back(estimate.front() + toEstimateFrame * (p - reference.front()));
-    return aligned;
-}
-
 TrajectoryView2D::TrajectoryView2D(QWidget* parent)
     : QWidget(parent), plot_(new QCustomPlot(this)), replot_(new DeferredReplot(plot_)),
       timeCursor_s_(std::numeric_limits<double>::quiet_NaN())

@@ -33,14 +33,6 @@ class PlotInteraction;
 /// Shared by the trajectory views so both put the time cursor on the same sample.
 std::size_t nearestSampleAtTime(const std::vector<double>& times_s, double time_s);
 
-/// The reference positions moved into the estimate's frame the way evaluation.md section 1 aligns
-/// the estimate to the reference (same start, rotation about z fixed at the 0.8 m sample, via
-/// computeArmse), so the distance between an estimate sample and its overlaid reference sample is
-/// the error the ARMSE averages. Empty when the lengths differ or either is empty: no overlay is
-/// better than a misleading one.
-std::vector<Eigen::Vector3d> alignReferenceToEstimate(const std::vector<Eigen::Vector3d>& reference,
-                                                      const std::vector<Eigen::Vector3d>& estimate);
-
 /// Top view of the estimated foot path: the path (one colour, or coloured by time or speed with a
 /// colour scale), one dot per stance, start and end marked, a time cursor, an optional reference
 /// overlay, equal scales on both axes so a rectangle looks like one. Drawn by QCustomPlot without

@@ -2,6 +2,7 @@
 
 #include "AnalysisSession.h"
 #include "TrajectoryView2D.h"
+#include "metrics/Evaluation.h"
 #include "nav/Pipeline.h"
 
 #include <QCheckBox>

@@ -24,6 +24,7 @@
 #include "io/FootPairing.h"
 #include "io/NearestNames.h"
 #include "io/ResultWriters.h"
+#include "metrics/Evaluation.h"
 
 #include <QActionGroup>
 #include <QApplication>

@@ -191,6 +191,22 @@ StanceScore scoreStanceDetection(const std::vector<std::uint8_t>& stance, const 
     return score;
 }
 
+std::vector<Eigen::Vector3d> alignReferenceToEstimate(const std::vector<Eigen::Vector3d>& reference,
+                                                      const std::vector<Eigen::Vector3d>& estimate)
+{
+    const ArmseResult armse = computeArmse(estimate, reference);
+    if (std::isnan(armse.rotation_rad))
+        return {};
+    // computeArmse turns the estimate onto the reference; the overlay needs the inverse turn.
+    const Eigen::Matrix3d toEstimateFrame =
+        Eigen::AngleAxisd(-armse.rotation_rad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    std::vector<Eigen::Vector3d> aligned;
+    aligned.reserve(reference.size());
+    for (const Eigen::Vector3d& p : reference)
+        aligned.push_back(estimate.front() + toEstimateFrame * (p - reference.front()));
+    return aligned;
+}
+
 StrideCount countStrides(const Result& result, const std::vector<SampleRange>& swings,
                          const SampleRange* trialBoundaries)
 {

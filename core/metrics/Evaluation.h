@@ -38,6 +38,14 @@ LoopClosure computeLoopClosure(const std::vector<Eigen::Vector3d>& positions, do
 /// Section 3: path length as the sum of horizontal distances between consecutive stance positions.
 double stancePathLength(const std::vector<Step>& steps);
 
+/// The reference positions moved into the estimate's frame the way the ARMSE aligns the estimate
+/// to the reference (same start, rotation about z fixed at the 0.8 m sample, via
+/// computeArmse), so the distance between an estimate sample and its overlaid reference sample is
+/// the error the ARMSE averages. Empty when the lengths differ or either is empty: no overlay is
+/// better than a misleading one.
+std::vector<Eigen::Vector3d> alignReferenceToEstimate(const std::vector<Eigen::Vector3d>& reference,
+                                                      const std::vector<Eigen::Vector3d>& estimate);
+
 struct DistanceError {
     double estimated_m = 0.0;
     double reference_m = 0.0;
