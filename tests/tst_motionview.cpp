@@ -272,7 +272,7 @@ private slots:
             QCOMPARE(bars[i].start_s, result.methodNotes[i].start_s);
             QCOMPARE(bars[i].end_s, result.methodNotes[i].end_s);
         }
-        QCOMPARE(bars[1].label, QString("Magnetometer"));
+        QCOMPARE(bars[1].label, QString("Magnetometer heading"));  // the parameter list's label
         // Where the notes overlap the tool tip has both messages; outside them, none.
         const QString both = plot.motionLanes().toolTipAt(plot.methodNotesLane(), 13.0);
         QVERIFY2(both.contains("40 % stronger than at alignment") && both.contains("no straight stretch"), qPrintable(both));

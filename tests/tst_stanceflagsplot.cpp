@@ -493,6 +493,25 @@ private slots:
         QVERIFY(plot.statisticRect()->axis(QCPAxis::atLeft)->label().contains(QStringLiteral("std of |a|")));
     }
 
+    void everyStatisticDetectorNamesItsOwnStatistic()
+    {
+        // The axis labels were a list beside the detector list: a sixth detector would have been
+        // labelled SHOE. They come from the detectors' own names now.
+        StanceFlagsPlot plot;
+        plot.setRecording(simulatedWalk().recording);
+        const ParameterField* detector = findParameterField("detector");
+        for (std::size_t kind = 0; kind < detector->choiceNames.size(); ++kind) {
+            Parameters params;
+            params.detector = static_cast<int>(kind);
+            plot.setParameters(params);
+            const QString label = plot.statisticRect()->axis(QCPAxis::atLeft)->label();
+            if (params.detectorKind() == DetectorKind::PaperC1C2C3)
+                QVERIFY2(label.contains(QStringLiteral("std of |a|")), qPrintable(label));
+            else
+                QCOMPARE(label, QString::fromUtf8(detector->choiceNames[kind]).toUpper() + QStringLiteral("\nstatistic"));
+        }
+    }
+
     void warningsAreShadedLabelledAndExplained()
     {
         const std::shared_ptr<const Result> result = resultWithWarnings();

@@ -1660,26 +1660,6 @@
         <translation>Nur ebenes Gehen: keine Treppe, kein Aufzug</translation>
     </message>
     <message>
-        <source>Magnetometer</source>
-        <translation>Magnetometer</translation>
-    </message>
-    <message>
-        <source>Barometer</source>
-        <translation>Barometer</translation>
-    </message>
-    <message>
-        <source>Heading drift reduction (HDR)</source>
-        <translation>Kursdriftreduktion (HDR)</translation>
-    </message>
-    <message>
-        <source>Position error reduction (IPER)</source>
-        <translation>Positionsfehlerreduktion (IPER)</translation>
-    </message>
-    <message>
-        <source>Zero navigation acceleration (ZUNA)</source>
-        <translation>Null-Navigationsbeschleunigung (ZUNA)</translation>
-    </message>
-    <message>
         <source>Feliz integrator</source>
         <translation>Feliz-Integrator</translation>
     </message>
@@ -2955,30 +2935,6 @@
         <translation>Standphase</translation>
     </message>
     <message>
-        <source>SHOE
-statistic</source>
-        <translation>SHOE-
-Statistik</translation>
-    </message>
-    <message>
-        <source>ARED
-statistic</source>
-        <translation>ARED-
-Statistik</translation>
-    </message>
-    <message>
-        <source>AMVD
-statistic</source>
-        <translation>AMVD-
-Statistik</translation>
-    </message>
-    <message>
-        <source>MBGTD
-statistic</source>
-        <translation>MBGTD-
-Statistik</translation>
-    </message>
-    <message>
         <source>The inputs of the C1/C2/C3 detector; the chosen detector decides on its statistic, shown below the lanes</source>
         <translation>Die Eingänge des C1/C2/C3-Detektors; der gewählte Detektor entscheidet anhand seiner Statistik, die unter den Spuren dargestellt ist</translation>
     </message>
@@ -3023,6 +2979,12 @@ Standphase</translation>
     <message>
         <source>between the hand-labelled gait events (toe-off, heel-strike)</source>
         <translation>zwischen den von Hand markierten Gangereignissen (Zehenablösung, Fersenaufsatz)</translation>
+    </message>
+    <message>
+        <source>%1
+statistic</source>
+        <translation>%1-
+Statistik</translation>
     </message>
 </context>
 <context>

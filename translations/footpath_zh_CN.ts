@@ -1658,26 +1658,6 @@
         <translation>仅平地行走：无楼梯或电梯</translation>
     </message>
     <message>
-        <source>Magnetometer</source>
-        <translation>磁力计</translation>
-    </message>
-    <message>
-        <source>Barometer</source>
-        <translation>气压计</translation>
-    </message>
-    <message>
-        <source>Heading drift reduction (HDR)</source>
-        <translation>航向漂移抑制（HDR）</translation>
-    </message>
-    <message>
-        <source>Position error reduction (IPER)</source>
-        <translation>位置误差抑制（IPER）</translation>
-    </message>
-    <message>
-        <source>Zero navigation acceleration (ZUNA)</source>
-        <translation>零导航加速度（ZUNA）</translation>
-    </message>
-    <message>
         <source>Feliz integrator</source>
         <translation>Feliz 积分器</translation>
     </message>
@@ -2952,30 +2932,6 @@
         <translation>支撑相</translation>
     </message>
     <message>
-        <source>SHOE
-statistic</source>
-        <translation>SHOE
-统计量</translation>
-    </message>
-    <message>
-        <source>ARED
-statistic</source>
-        <translation>ARED
-统计量</translation>
-    </message>
-    <message>
-        <source>AMVD
-statistic</source>
-        <translation>AMVD
-统计量</translation>
-    </message>
-    <message>
-        <source>MBGTD
-statistic</source>
-        <translation>MBGTD
-统计量</translation>
-    </message>
-    <message>
         <source>The inputs of the C1/C2/C3 detector; the chosen detector decides on its statistic, shown below the lanes</source>
         <translation>C1/C2/C3 检测器的输入；当前检测器依据其统计量判断，统计量显示在各通道下方</translation>
     </message>
@@ -3020,6 +2976,12 @@ stance</source>
     <message>
         <source>between the hand-labelled gait events (toe-off, heel-strike)</source>
         <translation>位于人工标注的步态事件（足尖离地、足跟着地）之间</translation>
+    </message>
+    <message>
+        <source>%1
+statistic</source>
+        <translation>%1
+统计量</translation>
     </message>
 </context>
 <context>

@@ -1,7 +1,9 @@
 #include "MotionLanes.h"
 
 #include "TimeBands.h"
+#include "nav/Parameters.h"
 
+#include <QCoreApplication>
 #include <QLocale>
 #include <QToolTip>
 #include <qcustomplot.h>
@@ -164,16 +166,11 @@ QString motionCountsSentence(const Result& result)
 
 QString methodLabel(const std::string& method)
 {
-    if (method == "mag")
-        return MotionLanes::tr("Magnetometer");
-    if (method == "baro")
-        return MotionLanes::tr("Barometer");
-    if (method == "hdr")
-        return MotionLanes::tr("Heading drift reduction (HDR)");
-    if (method == "iper")
-        return MotionLanes::tr("Position error reduction (IPER)");
-    if (method == "zuna")
-        return MotionLanes::tr("Zero navigation acceleration (ZUNA)");
+    // The method's own label in the parameter list: the lanes, the notes and the panel name a method
+    // alike (the lane said "Heading drift reduction" where the panel said "Heuristic ...").
+    const std::string flag = method == "mag" ? "use_mag_heading" : "use_" + method;
+    if (const ParameterField* field = findParameterField(flag))
+        return QCoreApplication::translate("footpath::ParameterFields", field->label);
     if (method == "feliz")
         return MotionLanes::tr("Feliz integrator");
     return QString::fromStdString(method);

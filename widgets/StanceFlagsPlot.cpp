@@ -69,13 +69,6 @@ const char* const kStatisticConditionLabel = QT_TRANSLATE_NOOP("footpath::Stance
 const char* const kStatisticStanceLabel = QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "Stance");
 
 /// The statistic row's axis label for each detector (DetectorKind order).
-constexpr std::array<const char*, 5> kStatisticAxisLabels = {{
-    QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "std of |a|\n(m/s²)"),
-    QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "SHOE\nstatistic"),
-    QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "ARED\nstatistic"),
-    QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "AMVD\nstatistic"),
-    QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "MBGTD\nstatistic"),
-}};
 
 struct InputInfo {
     const char* name;
@@ -595,11 +588,17 @@ void StanceFlagsPlot::plotStatistic()
 
 void StanceFlagsPlot::nameStatistic()
 {
+    // The paper's detector plots its C2 input; a statistic detector its statistic, named by the
+    // detector's own name in the parameter list (a new detector is named without an edit here).
+    const ParameterField* detector = findParameterField("detector");
     const auto kind = static_cast<std::size_t>(params_.detector);
-    const char* label = kind < kStatisticAxisLabels.size() ? kStatisticAxisLabels[kind] : kStatisticAxisLabels[1];
+    const QString label =
+        usesPaperDetector() || !detector || kind >= detector->choiceNames.size()
+            ? tr("std of |a|\n(m/s²)")
+            : tr("%1\nstatistic").arg(QString::fromUtf8(detector->choiceNames[kind]).toUpper());
     // Not statisticRect(), which would plot a hidden tab's stale curves (4 ms of a parameter change).
-    valueAxis(rows_[kStatisticRow].rect)->setLabel(tr(label));
-    statistic_->setName(tr(label).replace(QLatin1Char('\n'), QLatin1Char(' ')));
+    valueAxis(rows_[kStatisticRow].rect)->setLabel(label);
+    statistic_->setName(QString(label).replace(QLatin1Char('\n'), QLatin1Char(' ')));
     if (usesPaperDetector())
         statisticThreshold_->setName(tr("max std = %1 m/s²").arg(params_.acc_std_max_mps2));
     else if (params_.zv_adaptive)
