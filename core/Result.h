@@ -55,7 +55,7 @@ struct MethodNote {
     std::string message;
 };
 
-/// Seed 004's per-step motion class, from the barometric height change and the pressure variance
+/// Zheng et al. 2016's per-step motion class, from the barometric height change and the pressure variance
 /// between steps (Unknown without a barometer).
 enum class MotionClass { Unknown, Level, StairsUp, StairsDown, ElevatorUp, ElevatorDown };
 
@@ -137,7 +137,7 @@ struct Summary {
     double endToStart_m = 0.0;       ///< horizontal distance between first and last position
     double endToStartPct = 0.0;      ///< endToStart_m as % of pathLength_m (0 if no path)
     double runtime_s = 0.0;          ///< estimation alone, without file I/O
-    // Seed 004's motion classes, counted over the steps (all zero without a barometer)
+    // Zheng et al. 2016's motion classes, counted over the steps (all zero without a barometer)
     std::size_t stairStepsUp = 0;
     std::size_t stairStepsDown = 0;
     std::size_t elevatorRides = 0;      ///< consecutive elevator steps count as one ride

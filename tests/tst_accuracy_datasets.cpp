@@ -1,5 +1,5 @@
 // Accuracy of the default pipeline on the real recordings in ../shared/datasets, measured the way a
-// user measures it: `footpath-cli eval --json` over the recordings (evaluation.md metrics). Every
+// user measures it: `footpath-cli eval --json` over the recordings (the metrics of docs/accuracy.md). Every
 // table is printed, however bad; the bounds are the figures the defaults reach today, so a change
 // that makes any dataset worse fails here. The targets are printed beside them.
 #include "TestData.h"
@@ -115,7 +115,7 @@ private slots:
         printTable(batch, {"distance_error_pct"});
         // These two walks are short by 8-15 % with the defaults: their sensor never comes to rest
         // (|w| stays near 1 rad/s at mid-stance, as on a shank), so every ZUPT removes real motion.
-        // The bound guards against it getting worse; the README explains the trade.
+        // The bound guards against it getting worse; docs/method.md explains the trade.
         QVERIFY2(summaryOf(batch, "distance_error_pct").value("worst").toDouble() <= 16.0,
                  "distance error of the ecg-xmu walks of known length");
     }

@@ -1,4 +1,4 @@
-// Hand-computed cases for the accuracy metrics of evaluation.md sections 1-3. Every expected value
+// Hand-computed cases for the accuracy metrics of docs/accuracy.md (ARMSE, loop closure, distance error). Every expected value
 // is worked out in the comment beside it, not produced by the code under test.
 
 #include "metrics/Evaluation.h"

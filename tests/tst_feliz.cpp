@@ -1,4 +1,4 @@
-// Feliz et al. 2009 (seed 003), estimator=feliz: per-swing velocity de-drift without a Kalman filter,
+// Feliz et al. 2009, estimator=feliz: per-swing velocity de-drift without a Kalman filter,
 // on simulated walks with known truth and on the pyshoe-vicon recordings.
 #include "TestData.h"
 #include "io/Import.h"

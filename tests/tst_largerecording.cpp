@@ -3,7 +3,7 @@
 // usable from opening the file to drawing the result.
 //
 // The file is a simulated one-hour walk written to a temporary folder. To measure another file
-// (the README's figures for a ten-hour walk), name it in FOOTPATH_LONG_RECORDING; the figures are
+// (the figures for a ten-hour walk in docs/performance.md), name it in FOOTPATH_LONG_RECORDING; the figures are
 // printed either way.
 #include "AnalysisSession.h"
 #include "AppSettings.h"

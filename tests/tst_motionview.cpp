@@ -1,4 +1,4 @@
-// Seed 004's motion classes and the methods' notes in the workspace and the PDF, on hand-built
+// Zheng et al. 2016's motion classes and the methods' notes in the workspace and the PDF, on hand-built
 // results (the classifier is core's and tested there): the detector view's motion lane (coloured,
 // labelled spans; left out without a barometer, greyed when unclassified) and method-notes lane,
 // the step table's Motion and Baro height columns, the summary's counts sentence and notes, the

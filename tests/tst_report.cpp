@@ -228,7 +228,7 @@ private slots:
     void warningsHaveTheirOwnSectionWithTheirSpans()
     {
         // The shared running trial with the paper's detector: its fixed C2 bound misses the
-        // running stances (README, "Plausibility checks").
+        // running stances (docs/method.md, "Saying when a result is wrong").
         FOOTPATH_REQUIRE_DATASETS();
         QTemporaryDir dir;
         Parameters params;

@@ -334,7 +334,7 @@ void TestRobustness::longRecording_smootherKeepsTheStrideLength()
             QEXPECT_FAIL("", "the smoother lengthens the strides in the middle of walks over an hour at 100 Hz "
                              "(+1.7 % over 3 h, +3.3 % over 10 h; the filter +0.6 %): the walk's horizontal gyro "
                              "bias is no state of the 9-state model; more attitude noise cures it here but costs "
-                             "the real recordings (README, 'A ten-hour walk')", Continue);
+                             "the real recordings (docs/method.md, 'Long walks')", Continue);
         QVERIFY2(std::abs(lengthError) < 0.01, qPrintable(QString::number(100.0 * lengthError) + " %"));
     }
 }

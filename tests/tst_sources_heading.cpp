@@ -1,4 +1,4 @@
-// HDR, IPER (seed 002) and the magnetometer heading: each helps where its assumption holds (a
+// HDR, IPER (the five-method EKF paper) and the magnetometer heading: each helps where its assumption holds (a
 // straight or rectilinear walk, an undisturbed field) and does no harm, and says so, where it does
 // not (a circle, a walk at 45 deg to the axes, a disturbed field).
 #include "TestData.h"

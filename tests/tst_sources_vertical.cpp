@@ -1,5 +1,5 @@
-// The vertical measurement sources and seed 004's motion classes: ZUNA (seed 002), the barometric
-// height (seed 004) and the per-step classes, on simulated walks with known truth and on the
+// The vertical measurement sources and Zheng et al. 2016's motion classes: ZUNA (the five-method EKF paper), the barometric
+// height (Zheng et al. 2016) and the per-step classes, on simulated walks with known truth and on the
 // ecg-xmu recordings with pressure.
 #include "TestData.h"
 #include "io/Import.h"

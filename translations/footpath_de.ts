@@ -1704,8 +1704,8 @@
         <translation>Barometrische Höhe in dieser Standphase gegenüber der ersten</translation>
     </message>
     <message>
-        <source>Counted from the barometer&apos;s height between steps (seed 004); a floor is 3 m</source>
-        <translation>Gezählt aus der Barometerhöhe zwischen den Schritten (Seed 004); ein Stockwerk sind 3 m</translation>
+        <source>Counted from the barometer&apos;s height between steps (Zheng et al. 2016); a floor is 3 m</source>
+        <translation>Gezählt aus der Barometerhöhe zwischen den Schritten (Zheng et al. 2016); ein Stockwerk sind 3 m</translation>
     </message>
     <message>
         <source>Where a measurement method skipped itself or did not apply, and why</source>
@@ -1998,32 +1998,32 @@
         <translation>Heuristische Driftreduktion (HDR)</translation>
     </message>
     <message>
-        <source>Heuristic drift reduction: heading held on straight walks (seed 002)</source>
-        <translation>Heuristische Driftreduktion: Kurs auf geraden Strecken gehalten (Seed 002)</translation>
+        <source>Heuristic drift reduction: heading held on straight walks</source>
+        <translation>Heuristische Driftreduktion: Kurs auf geraden Strecken gehalten</translation>
     </message>
     <message>
         <source>Position error reduction (IPER)</source>
         <translation>Positionsfehlerreduktion (IPER)</translation>
     </message>
     <message>
-        <source>Position error reduction: walks along the building&apos;s axes, level floor (seed 002; assumes a rectilinear building)</source>
-        <translation>Positionsfehlerreduktion: Gehen entlang der Gebäudeachsen, ebener Boden (Seed 002; setzt ein rechtwinkliges Gebäude voraus)</translation>
+        <source>Position error reduction: walks along the building&apos;s axes, level floor (assumes a rectilinear building)</source>
+        <translation>Positionsfehlerreduktion: Gehen entlang der Gebäudeachsen, ebener Boden (setzt ein rechtwinkliges Gebäude voraus)</translation>
     </message>
     <message>
         <source>Zero navigation acceleration (ZUNA)</source>
         <translation>Null-Navigationsbeschleunigung (ZUNA)</translation>
     </message>
     <message>
-        <source>Zero navigation acceleration at mid-stance (seed 002)</source>
-        <translation>Null-Navigationsbeschleunigung in der Mitte der Standphase (Seed 002)</translation>
+        <source>Zero navigation acceleration at mid-stance</source>
+        <translation>Null-Navigationsbeschleunigung in der Mitte der Standphase</translation>
     </message>
     <message>
         <source>Barometric height</source>
         <translation>Barometrische Höhe</translation>
     </message>
     <message>
-        <source>Barometric height at each stance (seed 004)</source>
-        <translation>Barometrische Höhe in jeder Standphase (Seed 004)</translation>
+        <source>Barometric height at each stance (Zheng et al. 2016)</source>
+        <translation>Barometrische Höhe in jeder Standphase (Zheng et al. 2016)</translation>
     </message>
     <message>
         <source>Magnetometer heading</source>
@@ -2158,8 +2158,8 @@
         <translation>Barometrische Höhenformel</translation>
     </message>
     <message>
-        <source>Linear constant (seed 004)</source>
-        <translation>Lineare Konstante (Seed 004)</translation>
+        <source>Linear constant (Zheng et al. 2016)</source>
+        <translation>Lineare Konstante (Zheng et al. 2016)</translation>
     </message>
     <message>
         <source>Barometer: pressure difference to height</source>

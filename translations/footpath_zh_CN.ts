@@ -1702,8 +1702,8 @@
         <translation>此支撑相相对于第一个支撑相的气压高度</translation>
     </message>
     <message>
-        <source>Counted from the barometer&apos;s height between steps (seed 004); a floor is 3 m</source>
-        <translation>由步间气压高度统计（seed 004）；一层按 3 m 计</translation>
+        <source>Counted from the barometer&apos;s height between steps (Zheng et al. 2016); a floor is 3 m</source>
+        <translation>由步间气压高度统计（Zheng et al. 2016）；一层按 3 m 计</translation>
     </message>
     <message>
         <source>Where a measurement method skipped itself or did not apply, and why</source>
@@ -1996,32 +1996,32 @@
         <translation>启发式漂移抑制（HDR）</translation>
     </message>
     <message>
-        <source>Heuristic drift reduction: heading held on straight walks (seed 002)</source>
-        <translation>启发式漂移抑制：直线行走时保持航向（seed 002）</translation>
+        <source>Heuristic drift reduction: heading held on straight walks</source>
+        <translation>启发式漂移抑制：直线行走时保持航向</translation>
     </message>
     <message>
         <source>Position error reduction (IPER)</source>
         <translation>位置误差抑制（IPER）</translation>
     </message>
     <message>
-        <source>Position error reduction: walks along the building&apos;s axes, level floor (seed 002; assumes a rectilinear building)</source>
-        <translation>位置误差抑制：沿建筑轴线行走、楼面水平（seed 002；假定建筑为直角布局）</translation>
+        <source>Position error reduction: walks along the building&apos;s axes, level floor (assumes a rectilinear building)</source>
+        <translation>位置误差抑制：沿建筑轴线行走、楼面水平（假定建筑为直角布局）</translation>
     </message>
     <message>
         <source>Zero navigation acceleration (ZUNA)</source>
         <translation>零导航加速度（ZUNA）</translation>
     </message>
     <message>
-        <source>Zero navigation acceleration at mid-stance (seed 002)</source>
-        <translation>支撑相中段的零导航加速度（seed 002）</translation>
+        <source>Zero navigation acceleration at mid-stance</source>
+        <translation>支撑相中段的零导航加速度</translation>
     </message>
     <message>
         <source>Barometric height</source>
         <translation>气压高度</translation>
     </message>
     <message>
-        <source>Barometric height at each stance (seed 004)</source>
-        <translation>每个支撑相的气压高度（seed 004）</translation>
+        <source>Barometric height at each stance (Zheng et al. 2016)</source>
+        <translation>每个支撑相的气压高度（Zheng et al. 2016）</translation>
     </message>
     <message>
         <source>Magnetometer heading</source>
@@ -2156,8 +2156,8 @@
         <translation>气压公式</translation>
     </message>
     <message>
-        <source>Linear constant (seed 004)</source>
-        <translation>线性常数（seed 004）</translation>
+        <source>Linear constant (Zheng et al. 2016)</source>
+        <translation>线性常数（Zheng et al. 2016）</translation>
     </message>
     <message>
         <source>Barometer: pressure difference to height</source>

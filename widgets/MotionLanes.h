@@ -14,7 +14,7 @@ class QMouseEvent;
 
 namespace footpath {
 
-// --- Seed 004's motion classes and the methods' notes, worded and coloured for every view -------
+// --- Zheng et al. 2016's motion classes and the methods' notes, worded and coloured for every view -------
 
 /// "Level", "Stairs up", ...; "Unclassified" for Unknown.
 QString motionClassLabel(MotionClass motion);

@@ -115,7 +115,7 @@ public:
     }
     bool isStatisticStanceShaded(double time_s) const;
     const WarningOverlay& warningOverlay() const { return *warnings_; }
-    /// The steps' motion classes (seed 004) under the detector lanes; in the layout with a result.
+    /// The steps' motion classes (Zheng et al. 2016) under the detector lanes; in the layout with a result.
     QCPAxisRect* motionLane() const;
     /// Spans where a method skipped itself; in the layout while the result has method notes.
     QCPAxisRect* methodNotesLane() const;

@@ -699,7 +699,7 @@ QWidget* SummaryPanel::createMotionAndNotes()
     motionSentence_ = new QLabel;
     motionSentence_->setObjectName(QStringLiteral("motionSentence"));
     motionSentence_->setWordWrap(true);
-    motionSentence_->setToolTip(MotionLanes::tr("Counted from the barometer's height between steps (seed 004); a floor "
+    motionSentence_->setToolTip(MotionLanes::tr("Counted from the barometer's height between steps (Zheng et al. 2016); a floor "
                                                 "is 3 m"));
     layout->addWidget(motionSentence_);
     methodNotesGroup_ = new QGroupBox(MotionLanes::tr("Method notes"));

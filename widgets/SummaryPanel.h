@@ -128,7 +128,7 @@ private:
     QLabel* warningsTitle_ = nullptr;
     QWidget* warningList_ = nullptr;  ///< one label per warning, remade with each result
     QLabel* noWarnings_ = nullptr;
-    QLabel* motionSentence_ = nullptr;     ///< seed 004's counts; hidden without motion classes
+    QLabel* motionSentence_ = nullptr;     ///< Zheng et al. 2016's counts; hidden without motion classes
     QGroupBox* methodNotesGroup_ = nullptr;
     QWidget* methodNoteList_ = nullptr;    ///< one label per method note, remade with each result
     QLabel* referenceNotes_ = nullptr;

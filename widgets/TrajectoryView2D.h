@@ -43,7 +43,7 @@ public:
     /// Overlays up to this many are keyed in the main key below the plot, more in a box over it.
     static constexpr std::size_t kOverlaysInMainKey = 2;
 
-    enum class Colouring { None, Time, Speed, Motion };  ///< Motion: each stride by its step's class (seed 004)
+    enum class Colouring { None, Time, Speed, Motion };  ///< Motion: each stride by its step's class (Zheng et al. 2016)
     Q_ENUM(Colouring)
 
     explicit TrajectoryView2D(QWidget* parent = nullptr);

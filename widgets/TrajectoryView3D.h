@@ -61,7 +61,7 @@ public:
     /// Where the key (path, reference, markers) is drawn in a view of this size; empty when the
     /// view is too small to hold it beside the path.
     QRectF legendRect(const QSizeF& size) const;
-    /// Colours each stride by the motion class of the step it leads to (seed 004), with a key;
+    /// Colours each stride by the motion class of the step it leads to (Zheng et al. 2016), with a key;
     /// a result without classified steps keeps the one path colour.
     void setMotionColouring(bool on);
     bool motionColouring() const { return motionColouring_; }

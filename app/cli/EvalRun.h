@@ -10,7 +10,7 @@
 
 namespace footpath::cli {
 
-/// One figure of evaluation.md for one recording.
+/// One accuracy figure (docs/accuracy.md, "The metrics") for one recording.
 struct Metric {
     std::string key;    ///< JSON name, e.g. "armse_2d_m"
     std::string label;  ///< the single-file table's row label

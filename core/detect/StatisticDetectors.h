@@ -134,7 +134,7 @@ private:
 ///     running gets a threshold of its own, while a standing foot is always at rest and a clearly
 ///     moving one never is; without it, zv_log_threshold;
 ///  3. the decision log10 T < threshold (c1 = c2 = c3 = c: one statistic, one condition);
-///  4. stance runs shorter than zv_min_stance_s are dropped (seed 002's thr_time).
+///  4. stance runs shorter than zv_min_stance_s are dropped (the thr_time of the five-method EKF paper).
 /// The decision trails the newest sample by latency_s(params).
 class StatisticStanceDetector : public CausalStanceDecider {
 public:

@@ -8,7 +8,7 @@ namespace footpath {
 struct ImportOptions;
 
 /// Memory one sample costs from the file to every view, measured on a simulated 10-hour 100 Hz
-/// walk (README, Hardening, "Limits"): footpath-cli process holds about 860 bytes a sample at its
+/// walk (docs/performance.md, "Long recordings"): footpath-cli process holds about 860 bytes a sample at its
 /// peak (the sample as read 88, the smoother's records about 580, the result about 200), the window
 /// about 1.0 KB (what its views draw).
 constexpr std::size_t kAnalysisBytesPerSample = 1200;

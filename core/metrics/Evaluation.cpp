@@ -12,9 +12,9 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// evaluation.md 1.2: the estimate must have moved this far before its heading is meaningful.
+// The ARMSE's alignment (docs/accuracy.md): the estimate must have moved this far before its heading is meaningful.
 constexpr double kAlignmentDistance_m = 0.8;
-// evaluation.md 1.2: pyshoe's arbitrary choice when the estimate never moves that far.
+// The same alignment: pyshoe's arbitrary choice when the estimate never moves that far.
 constexpr std::size_t kFallbackAlignmentIndex = 300;
 
 double horizontalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b)

@@ -9,7 +9,7 @@
 
 namespace footpath {
 
-/// Section 1 of evaluation.md: trajectory error against a reference position at every sample.
+/// The ARMSE of docs/accuracy.md: trajectory error against a reference position at every sample.
 struct ArmseResult {
     double armse2d_m = 0.0;
     double armse3d_m = 0.0;

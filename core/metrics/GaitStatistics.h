@@ -39,7 +39,7 @@ struct GaitStatistics {
     std::vector<double> strideDurations_s; ///< one per stride, in step order
     std::vector<double> stanceDurations_s; ///< one per stance phase, in step order
 
-    // Against the recording's reference; empty where it has none (evaluation.md sections 1-4).
+    // Against the recording's reference; empty where it has none (the metrics of docs/accuracy.md).
     std::optional<ArmseResult> armse;           ///< reference position at every sample
     std::optional<LoopClosure> loopClosure;     ///< walk ends where it started
     std::optional<DistanceError> distanceError; ///< known walked length

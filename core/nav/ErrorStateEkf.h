@@ -29,7 +29,7 @@ struct PropagationStep {
 
 /// Strapdown mechanization plus the 15-state error-state EKF of Guo 2015 (sections 2.2, 2.4-2.6).
 ///
-/// Error state dx = [dphi, dw_b, dr, dv, da_b] with these definitions (method.md, "feedback sign"):
+/// Error state dx = [dphi, dw_b, dr, dv, da_b] with these definitions (docs/method.md, "The pipeline"):
 ///   dphi, dr, dv are estimate - truth, with C_est = (I + S(dphi)) C_true;
 ///   dw_b, da_b are truth - estimate.
 /// They give exactly the transition blocks of eq. 26 with the signs as printed

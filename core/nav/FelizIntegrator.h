@@ -7,7 +7,7 @@
 
 namespace footpath {
 
-/// Feliz, Zalama, Garcia-Bermejo 2009 (seed 003): dead reckoning without a Kalman filter.
+/// Feliz, Zalama and Garcia-Bermejo 2009: dead reckoning without a Kalman filter.
 ///
 /// Attitude: the initial alignment, then the integrated gyro (the EKF's Pade step), re-levelled
 /// from the accelerometer at every stance. Velocity: C f - g integrated and held at zero during

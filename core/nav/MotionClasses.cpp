@@ -45,7 +45,7 @@ struct SampleSpan {
     std::size_t last = 0;
 };
 
-/// What seed 004's rules read of one step.
+/// What Zheng et al. 2016's rules read of one step.
 struct StepMeasures {
     double height_m = 0.0;            ///< the stance's barometric height against the first stance
     double heightChange_m = 0.0;      ///< against the previous step's
@@ -98,7 +98,7 @@ double variance(const std::vector<double>& values, std::size_t first, std::size_
     return std::max(0.0, sumSquares / static_cast<double>(count) - mean * mean);
 }
 
-/// Seed 004's rule, with one addition: the height changing inside one stance is an elevator
+/// Zheng et al. 2016's rule, with one addition: the height changing inside one stance is an elevator
 /// ride whatever the step-to-step change says. A rider stands, so the ride usually falls inside
 /// one long stance whose mean height lies somewhere in the middle of the ride; the paper's
 /// step-to-step rule then sees the ride split over two steps, and when the rider shuffles a foot

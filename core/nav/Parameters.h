@@ -16,17 +16,17 @@ enum class DetectorKind : int {
 };
 
 /// The error-state filter's size: 15 states estimate gyro and accelerometer biases (Guo 2015);
-/// 9 states hold them at zero (seed 004's comparison; pyshoe's filter).
+/// 9 states hold them at zero (Zheng et al. 2016's comparison; pyshoe's filter).
 enum class FilterStates : int { Fifteen = 0, Nine };
 
 /// What turns the inertial samples into a path: the error-state Kalman filter with its measurement
-/// sources (Guo 2015, seed 002, 004); the same filter followed by a Rauch-Tung-Striebel smoother
+/// sources (Guo et al. 2015, the five-method EKF paper, Zheng et al. 2016); the same filter followed by a Rauch-Tung-Striebel smoother
 /// (offline: every estimate uses the whole recording); or Feliz et al. 2009's per-stride velocity
-/// de-drift (seed 003, no Kalman filter; offline only: it needs the stance that ends each stride).
+/// de-drift (Feliz et al. 2009, no Kalman filter; offline only: it needs the stance that ends each stride).
 /// Stored in presets by name: keep the order.
 enum class EstimatorKind : int { Ekf = 0, Feliz, Smoother };
 
-/// How a pressure difference becomes a height difference (seed 004, eq. 6-10).
+/// How a pressure difference becomes a height difference (Zheng et al. 2016, eq. 6-10).
 enum class BarometerModel : int { Formula = 0, Linear };
 
 /// Every tunable of the pipeline. Field names here are the names the GUI sliders, the CLI's
@@ -52,7 +52,7 @@ struct Parameters {
     double zv_adapt_fraction = 0.25;     ///< ... + this fraction of the way to the running maximum
     double zv_log_always = 4.0;          ///< below this (log10) the foot is always at rest
     double zv_log_never = 6.5;           ///< above this (log10) it never is
-    double zv_min_stance_s = 0.05;       ///< shorter stance runs are dropped (seed 002's thr_time)
+    double zv_min_stance_s = 0.05;       ///< shorter stance runs are dropped (the thr_time of the five-method EKF paper)
 
     // C1/C2/C3 stance detector (Guo 2015, section 2.3), used when detector is PaperC1C2C3
     double acc_min_mps2 = 9.0;       ///< C1 lower bound on |a|
@@ -63,19 +63,19 @@ struct Parameters {
     double median_window_s = 0.11;   ///< median filter length (paper: 11 samples at 100 Hz)
 
     // Filter
-    int filter_states = static_cast<int>(FilterStates::Nine);  ///< measured better (README, "Filter structure")
+    int filter_states = static_cast<int>(FilterStates::Nine);  ///< measured better (docs/method.md, "Defaults that differ from the paper")
 
 
-    int estimator = static_cast<int>(EstimatorKind::Smoother);  ///< offline; live input runs the filter (README, "Smoother")
+    int estimator = static_cast<int>(EstimatorKind::Smoother);  ///< offline; live input runs the filter (docs/method.md, "The smoother")
 
     // Measurement sources (core/nav/MeasurementSources.h lists them in the order they are applied)
     bool use_zupt = true;
     bool use_zaru = false;  ///< needs the gyro bias states of the 15-state filter
-    bool use_hdr = false;          ///< heuristic drift reduction (seed 002): yaw pulled back on straight walks
-    bool use_iper = false;         ///< position error reduction (seed 002): rectilinear building, level floor
-    bool use_zuna = false;         ///< zero navigation acceleration at mid-stance (seed 002)
-    bool use_baro = false;         ///< barometric height at each stance (seed 004)
-    bool use_mag_heading = false;  ///< magnetometer heading during stance (seed 001's future work)
+    bool use_hdr = false;          ///< heuristic drift reduction (the five-method EKF paper): yaw pulled back on straight walks
+    bool use_iper = false;         ///< position error reduction (the five-method EKF paper): rectilinear building, level floor
+    bool use_zuna = false;         ///< zero navigation acceleration at mid-stance (the five-method EKF paper)
+    bool use_baro = false;         ///< barometric height at each stance (Zheng et al. 2016)
+    bool use_mag_heading = false;  ///< magnetometer heading during stance (Guo et al. 2015's future work)
 
     // HDR
     double hdr_lag_s = 1.0;            ///< heading now compared with the heading this long ago
@@ -98,7 +98,7 @@ struct Parameters {
 
     // Barometer and motion classes
     int baro_model = static_cast<int>(BarometerModel::Formula);
-    double baro_linear_m_per_pa = 0.09;    ///< seed 004's experimental constant N
+    double baro_linear_m_per_pa = 0.09;    ///< Zheng et al. 2016's experimental constant N
     double r_baro_m = 0.01;  ///< small because the gain is R against the filter's tiny vertical variance: 0.3 left ecg-xmu heights 1-6 m off
     double motion_level_max_m = 0.2;       ///< gamma_h (paper 0.16): ecg-xmu stance heights wander +-0.2 m on level floors
     double motion_elevator_var_pa2 = 100.0;  ///< mu_h (paper "300 Pa"): ecg-xmu rides 360-470 Pa^2, stairs and walking below 20
@@ -137,7 +137,7 @@ struct Parameters {
 
 /// Guo 2015 as printed (section 2.3 detector, 2.6 tuning): the C1/C2/C3 detector with its fixed
 /// thresholds, the 15-state filter with ZUPT and ZARU, Q attitude and velocity 1e-4. The defaults
-/// differ where measurement on real walks said so (README, "Accuracy").
+/// differ where measurement on real walks said so (docs/accuracy.md).
 Parameters guo2015Parameters();
 
 /// When the pipeline reads a field: always, or only with some values of the other fields. Kept in

@@ -13,7 +13,7 @@
 
 namespace footpath {
 
-/// What tuning minimises, per recording, averaged over the recordings (evaluation.md's metrics):
+/// What tuning minimises, per recording, averaged over the recordings (the metrics of docs/accuracy.md):
 /// the end-to-start distance in % of the path for walks that end where they started, the distance
 /// error in % for walks of known length, or the 2D ARMSE against a full reference.
 enum class TuneCriterion { ClosedLoop, KnownLength, Reference };

@@ -9,7 +9,7 @@ namespace footpath {
 /// The pressure of one stance run, read robustly (shared by the height source and the motion
 /// classes, so both see the same stance pressure).
 struct StancePressure {
-    double mean_pa = 0.0;   ///< seed 004 eq. 4: mean over the stance, spikes left out
+    double mean_pa = 0.0;   ///< Zheng et al. 2016 eq. 4: mean over the stance, spikes left out
     double first_pa = 0.0;  ///< mean of the run's first part ...
     double last_pa = 0.0;   ///< ... and of its last part (equal to mean_pa for short runs)
     bool spansHeightChange = false;  ///< long enough to tell first from last part (an elevator ride)
@@ -30,7 +30,7 @@ StancePressure readStancePressure(const std::vector<double>& times_s, const std:
 /// The pressures without spikes (each spike replaced by its neighbours' median).
 std::vector<double> despikedPressure(const std::vector<double>& pressures_pa);
 
-/// Seed 004 (Zheng et al. 2016, eq. 4-10 and 12-18): the barometric height of each stance - the
+/// Zheng et al. 2016 (eq. 4-10 and 12-18): the barometric height of each stance - the
 /// mean pressure over the stance run against the first stance's, as a height by
 /// barometricHeight() - is a measurement of the position's z (dr_z, R = r_baro_m^2). It is formed
 /// when the run ends, at the first sample after it, so the source stays causal.

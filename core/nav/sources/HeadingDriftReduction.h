@@ -7,7 +7,7 @@
 
 namespace footpath {
 
-/// Seed 002 HDR (heuristic drift reduction): on a straight stretch the heading should not change,
+/// HDR (heuristic drift reduction) of the five-method EKF paper: on a straight stretch the heading should not change,
 /// so the heading change the filter shows there is drift and goes in as a yaw-only measurement.
 ///
 /// Read differently from the paper, and why:

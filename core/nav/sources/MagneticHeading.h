@@ -5,7 +5,7 @@
 
 namespace footpath {
 
-/// Magnetometer heading during stance (the future work of seed 001). The field's norm and dip
+/// Magnetometer heading during stance (the future work of Guo et al. 2015). The field's norm and dip
 /// angle during the alignment period are the reference of an undisturbed field; at each stance
 /// whose field matches them (within mag_norm_tolerance and mag_dip_tolerance_rad) the
 /// tilt-compensated heading (magneticHeading(), the alignment's convention) is a yaw measurement.

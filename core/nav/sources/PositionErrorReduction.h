@@ -8,7 +8,7 @@
 
 namespace footpath {
 
-/// Seed 002 IPER (investigative position error reduction). It assumes a rectilinear building and a
+/// IPER (investigative position error reduction) of the five-method EKF paper. It assumes a rectilinear building and a
 /// level floor: on a straight stretch along one of the building's axes the displacement across the
 /// axis is an error, and at every stance the height should be the start height.
 ///

@@ -6,7 +6,7 @@
 
 namespace footpath {
 
-/// Seed 002's ZUNA (zero unrefined acceleration update). The mean specific force of the stance
+/// ZUNA (zero unrefined acceleration update) of the five-method EKF paper. The mean specific force of the stance
 /// samples in the first zuna_reference_s seconds is the reference: its magnitude is gravity as this
 /// sensor measures it. At mid-stance - a stance run that has lasted zuna_min_stance_s and whose
 /// detector statistic is at least zuna_margin_dec decades below the threshold, the paper's
