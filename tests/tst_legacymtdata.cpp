@@ -1,4 +1,4 @@
-// Legacy devices: the Configuration message of docs/xbus-protocol.md section 8.8 and the MTData
+// Legacy devices: the Configuration message of docs/xbus.md section 8.8 and the MTData
 // examples of section 8.7 decode to their documented values; layouts size and decode every block
 // in the order of section 6.3; every data format round-trips.
 #include "xbus/LegacyMtData.h"

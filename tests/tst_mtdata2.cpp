@@ -1,4 +1,4 @@
-// MTData2 payloads: the documented examples of docs/xbus-protocol.md sections 8.3-8.5 decode to
+// MTData2 payloads: the documented examples of docs/xbus.md sections 8.3-8.5 decode to
 // their stated values, every precision round-trips, frame bits are read, unknown identifiers are
 // skipped by their size, and malformed payloads are reported with their offset.
 #include "xbus/MtData2.h"

@@ -1,5 +1,5 @@
 // The control messages of the init sequence: every builder produces the checksum-verified frame of
-// docs/xbus-protocol.md section 8, the reply parsers read what devices send (both firmware
+// docs/xbus.md section 8, the reply parsers read what devices send (both firmware
 // revision layouts, 4- and 8-byte device ids, space-padded product codes) and reject malformed
 // payloads in words, Error codes read as text, and baud codes map both ways.
 #include "xbus/XbusControl.h"

@@ -1,4 +1,4 @@
-// The Xbus frame codec: every checksum-verified frame of docs/xbus-protocol.md section 8 decodes,
+// The Xbus frame codec: every checksum-verified frame of docs/xbus.md section 8 decodes,
 // encoding round-trips (standard and extended length), and the incremental decoder resynchronises
 // after garbage and bad checksums the way section 1.4 describes, counting what it skipped.
 #include "xbus/XbusFrame.h"

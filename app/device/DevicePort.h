@@ -22,7 +22,7 @@ public:
 
     using QObject::QObject;
 
-    /// 8 data bits, no parity, 1 stop bit, no flow control (docs xbus-protocol.md §5).
+    /// 8 data bits, no parity, 1 stop bit, no flow control (docs/xbus.md §5).
     virtual bool open(const QString& portName, quint32 baud) = 0;
     virtual void close() = 0;
     virtual bool setBaudRate(quint32 baud) = 0;

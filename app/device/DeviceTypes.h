@@ -54,7 +54,7 @@ struct DeviceCounters {
     double deviceTime_s = 0.0;             ///< time of the last sample
 };
 
-/// How long to wait for replies and how often to ask (docs xbus-protocol.md §4.3: XSP waits
+/// How long to wait for replies and how often to ask (docs/xbus.md §4.3: XSP waits
 /// 500 ms per request and up to 1500 ms for the first GoToConfig after power-up; 3 tries).
 struct DeviceTimeouts {
     int reply_ms = 500;

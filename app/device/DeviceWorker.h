@@ -18,7 +18,7 @@
 namespace footpath {
 
 /// The serial side of a DeviceSession, living in the session's worker thread: opens the port,
-/// runs the init sequence of docs/xbus-protocol.md §4 (wake-up handling, timeouts, retries, a
+/// runs the init sequence of docs/xbus.md §4 (wake-up handling, timeouts, retries, a
 /// baud probe), streams, records, and ends cleanly when asked or when the port vanishes. Event
 /// driven: it never blocks its thread, so bytes keep flowing while it waits for a reply.
 class DeviceWorker : public QObject {

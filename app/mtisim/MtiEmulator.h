@@ -41,7 +41,7 @@ struct MtiInjected {
     std::uint64_t burstMessages = 0;   ///< data messages sent at the burst rate
 };
 
-/// Who the emulated device says it is, and how it behaves (docs xbus-protocol.md §4.6).
+/// Who the emulated device says it is, and how it behaves (docs/xbus.md §4.6).
 struct MtiEmulatorConfig {
     std::uint64_t deviceId = 0x037003F8;  ///< an MTi-300 (the protocol sheet's example)
     std::string productCode = "MTi-300-2A8G4";

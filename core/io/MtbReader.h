@@ -8,7 +8,7 @@
 
 namespace footpath {
 
-/// Reads an Xsens .mtb log (docs/xbus-protocol.md section 7.1): a plain stream of Xbus messages,
+/// Reads an Xsens .mtb log (docs/xbus.md section 7.1): a plain stream of Xbus messages,
 /// normally a Configuration (0x0D), the encrypted EMTS blob (0x91), then one data message per
 /// sample. Samples come from MTData2 (0x36) or, on legacy devices, from MTData (0x32) laid out as
 /// the Configuration's OutputMode/OutputSettings say; messages without both acceleration and rate

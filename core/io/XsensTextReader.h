@@ -8,7 +8,7 @@
 
 namespace footpath {
 
-/// Reads an MT Manager text export (docs/xbus-protocol.md section 7.2): `//` metadata lines or an
+/// Reads an MT Manager text export (docs/xbus.md section 7.2): `//` metadata lines or an
 /// `Acquisition frequency: 100 Hz` line, then a column line (PacketCounter, SampleTimeFine, Acc_X..,
 /// Gyr_X.., Mag_X.., Pressure, ...; other columns are ignored, FreeAcc_* is never taken as Acc_*),
 /// then one packet a line, separated by tab, comma or semicolon, with empty cells for values the

@@ -10,7 +10,7 @@
 namespace footpath {
 
 // Legacy MTi / MTx / MTi-G (2005-2012) send MTData (0x32) with a fixed layout chosen by
-// OutputMode and OutputSettings (docs xbus-protocol.md §6); the Configuration message (0x0D)
+// OutputMode and OutputSettings (docs/xbus.md §6); the Configuration message (0x0D)
 // tells which, and is also the first message of every .mtb log.
 
 /// OutputMode bits (§6.1): which blocks an MTData message carries.

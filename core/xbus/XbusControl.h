@@ -11,7 +11,7 @@
 
 namespace footpath {
 
-// The control messages of the host initialisation sequence (docs xbus-protocol.md §4.2) and
+// The control messages of the host initialisation sequence (docs/xbus.md §4.2) and
 // their replies: builders for both directions (the host driver sends requests, the emulator
 // answers), parsers of the replies, and the device's Error codes in words. Pure: no I/O.
 

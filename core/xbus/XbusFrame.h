@@ -6,7 +6,7 @@
 
 namespace footpath {
 
-// Xbus framing (docs xbus-protocol.md §1):
+// Xbus framing (docs/xbus.md §1):
 //   FA BID MID LEN DATA[LEN] CS            (LEN 0..254)
 //   FA BID MID FF LENH LENL DATA[LEN] CS   (LEN >= 255, big-endian)
 // CS makes the 8-bit sum of every byte after the preamble zero.
