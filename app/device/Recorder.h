@@ -28,8 +28,9 @@ struct LiveCsvFormat {
 QString writeSamplesCsv(const QString& path, const std::vector<LiveSample>& samples);
 
 /// Writes a live session to disk as it arrives: the raw bytes to an .mtb file (after a
-/// Configuration message describing the device, as Xsens loggers do, so that importers and MT
-/// Manager recognise it) and the decoded samples to a CSV with the canonical columns
+/// Configuration message describing the device, as Xsens loggers do, so that importers recognise
+/// it; MT Manager also wants the calibration blob it does not hold, docs/xbus.md §7.1) and the
+/// decoded samples to a CSV with the canonical columns
 /// time_s,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z[,mag_x,mag_y,mag_z][,pressure_pa],packet_counter.
 ///
 /// Files are unbuffered, so every write reaches the operating system at once (a crash of the
