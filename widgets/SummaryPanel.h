@@ -25,6 +25,8 @@ class QTableView;
 
 namespace footpath {
 
+class StepTableModel;
+
 
 /// The figures of the latest result, a sortable per-step table and gait charts: stride length and
 /// stance duration per step, and their histograms. Drawn with Qt Charts, without OpenGL.
@@ -75,7 +77,6 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    class StepTableModel;
     struct FigureRow {
         QLabel* name = nullptr;
         QLabel* value = nullptr;
