@@ -84,7 +84,7 @@ ImportDialog::ImportDialog(const QString& path, const QString& problem, const Im
     layout->addWidget(table_, 1);
     // The same guess footpath-cli users get told about: given roles, else the header's names, else
     // the usual layout, with the time unit and the pressure column decided by the values.
-    const ColumnMapGuess guess = guessColumnMap(path.toStdString(), start);
+    const ColumnMapGuess guess = guessColumnMapFromHead(head_, path.toStdString(), start);
     guessConfident_ = guess.confident;
     guessDoubt_ = QString::fromStdString(guess.doubt);
     int columns = int(guess.headerNames.size());
@@ -121,7 +121,7 @@ ImportDialog::ImportDialog(const QString& path, const QString& problem, const Im
     for (QComboBox* box : roleBoxes_ + QList<QComboBox*>{accUnit_, gyrUnit_, timeUnit_})
         connect(box, &QComboBox::currentIndexChanged, recheckSoon, qOverload<>(&QTimer::start));
     connect(rate_, &QDoubleSpinBox::valueChanged, recheckSoon, qOverload<>(&QTimer::start));
-    recheck();
+    showCheck(guess.check);  // the boxes hold the guess: its check is theirs
     resize(820, 560);
 }
 
@@ -176,7 +176,12 @@ void ImportDialog::buildColumnEditors(int columns, const ColumnMapGuess& guess)
 /// right (Open waits until it is mended) and what is unusual.
 void ImportDialog::recheck()
 {
-    check_ = checkColumnMap(head_, path_.toStdString(), options());
+    showCheck(checkColumnMap(head_, path_.toStdString(), options()));
+}
+
+void ImportDialog::showCheck(ColumnMapCheck check)
+{
+    check_ = std::move(check);
     QStringList lines;
     for (const std::string& refusal : check_.refusals)
         lines << QStringLiteral("<span style='color:#b00020'>%1</span>")

@@ -44,6 +44,7 @@ public:
 private:
     void buildColumnEditors(int columns, const ColumnMapGuess& guess);
     void recheck();
+    void showCheck(ColumnMapCheck check);
     void applyPreset(int index);
     void showUnits(AccUnit acc, GyrUnit gyr, TimeUnit time);
     void accept() override;

@@ -598,7 +598,7 @@ void drawGaitStrideFigures(PageComposer& page, QPainter& painter, const std::vec
                 });
 }
 
-void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
+void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c, const GaitStatistics& statistics)
 {
     const Result& result = *c.result;
     TrajectoryView2D view2D;
@@ -654,7 +654,7 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c)
     flags.setTimeRange(from, to);
     page.figure(detectorFigureCaption(c.parameters, from, to), page.mm(paper ? 170 : 110),
                 [&](const QRectF& r) { drawPlot(painter, flags.plot(), r); });
-    drawGaitFigures(page, painter, computeGaitStatistics(result, c.recording.get()));
+    drawGaitFigures(page, painter, statistics);
     drawGaitStrideFigures(page, painter, result.gaitStrides);
 }
 
@@ -687,9 +687,8 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
     page.table(headerRows(content), {0.3, 0.7}, 9.0, false);
     page.heading(tr("Summary"));
     const Result& result = *content.result;
-    page.table(summaryRows(computeGaitStatistics(result, content.recording.get()), result.summary,
-                           result.mergedMovements.size()),
-               {0.5, 0.5}, 9.0);
+    const GaitStatistics statistics = computeGaitStatistics(result, content.recording.get());  // once for the report
+    page.table(summaryRows(statistics, result.summary, result.mergedMovements.size()), {0.5, 0.5}, 9.0);
     if (const QString motion = motionCountsSentence(*content.result); !motion.isEmpty())
         page.paragraph(MotionLanes::tr("Motion (barometer): %1.").arg(motion));
     writeGait(page, content);
@@ -699,7 +698,7 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
     // The heading with its first figure (at its smallest), not alone at the foot of a page.
     page.ensureRoom(page.mm(12 + 0.65 * 110 + 8));
     page.heading(tr("Figures"));
-    drawFigures(page, painter, content);
+    drawFigures(page, painter, content, statistics);
     // The values' columns as wide as a number of six digits in bold ("0.000958747" wrapped after
     // its point at 0.12 of the page).
     const QList<QStringList> parameters = parameterRows(content.parameters);

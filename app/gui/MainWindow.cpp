@@ -917,8 +917,9 @@ void MainWindow::restoreLayout()
     if (restoreState(settings_.windowState()))
         return;
     // First start: the plots and the path get two thirds of the height and more, the summary and
-    // the history under a third (the plots keep the height their rows need to stay readable). Once shown, as docks are sized when the window is laid out; the user's
-    // sizes are saved with the dock state.
+    // the history under a third (the plots keep the height their rows need to stay readable).
+    // Once shown, as docks are sized when the window is laid out; the user's sizes are saved with
+    // the dock state.
     QTimer::singleShot(0, this, [this] {
         if (auto* summaryDock = findChild<QDockWidget*>(QStringLiteral("summaryDock"))) {
             summaryDock->raise();  // in front of the history and the comparison it shares the area with

@@ -233,15 +233,16 @@ ColumnMapCheck checkColumnMap(const std::string& head, const std::string& path, 
 
 ColumnMapGuess guessColumnMap(const std::string& path, const ImportOptions& options)
 {
-    ColumnMapGuess guess;
     // A few thousand rows tell as well as the whole file, and a dialog opening must not wait for
     // a long recording to be read.
-    const std::string head = headOfFile(path, kColumnGuessBytes);
+    return guessColumnMapFromHead(headOfFile(path, kColumnGuessBytes), path, options);
+}
+
+ColumnMapGuess guessColumnMapFromHead(const std::string& head, const std::string& path, const ImportOptions& options)
+{
+    ColumnMapGuess guess;
     std::vector<TextRow> rows = splitTextRows(head, kGuessRows);
-    if (!rows.empty() && std::none_of(rows.front().cells.begin(), rows.front().cells.end(), [](const std::string& cell) {
-            double value = 0.0;
-            return parseCell(cell, value);
-        })) {
+    if (!rows.empty() && isHeaderRow(rows.front().cells)) {
         guess.headerNames = rows.front().cells;
         guess.headerLine = rows.front().line;
         rows.erase(rows.begin());

@@ -47,6 +47,8 @@ struct ColumnMapGuess {
 /// column are chosen from the values (the steps of the time column give an IMU's rate, a pressure
 /// column holds 30-110 kPa or is skipped). Reads only the first 256 KiB.
 ColumnMapGuess guessColumnMap(const std::string& path, const ImportOptions& options);
+/// The same for the first part of the file at path, already read (headOfFile).
+ColumnMapGuess guessColumnMapFromHead(const std::string& head, const std::string& path, const ImportOptions& options);
 
 /// The first `bytes` of a file, cut at its last line break when the file is longer.
 std::string headOfFile(const std::string& path, std::size_t bytes);

@@ -191,19 +191,17 @@ bool TextParser::nextContentLine(std::string& line)
     return false;
 }
 
-/// A line of names, not one number among them: a header row (a damaged data row keeps numbers).
 bool TextParser::isNamesOnly(const std::string& line)
 {
     splitLine(line, delimiter_, cells_);
-    return std::none_of(cells_.begin(), cells_.end(), isNumeric)
-           && std::any_of(cells_.begin(), cells_.end(), [](const std::string& cell) { return !trim(cell).empty(); });
+    return isHeaderRow(cells_);
 }
 
-/// Moves past the header row. One the column map replaces is said, not reported as a damaged row.
+/// Moves past the header row. One the column map replaces (isNamesOnly split it into cells_) is
+/// said, not reported as a damaged row.
 bool TextParser::skipHeader(std::string& line, bool layoutFromIt)
 {
     if (!layoutFromIt) {
-        splitLine(line, delimiter_, cells_);
         std::vector<std::string> names;
         for (const std::string& cell : cells_)
             names.push_back(trim(cell));
@@ -619,6 +617,12 @@ std::vector<TextRow> splitTextRows(const std::string& text, std::size_t maxRows)
 bool parseCell(const std::string& cell, double& value)
 {
     return parseNumber(cell, false, value) || parseNumber(cell, true, value);
+}
+
+bool isHeaderRow(const std::vector<std::string>& cells)
+{
+    return std::none_of(cells.begin(), cells.end(), isNumeric)
+           && std::any_of(cells.begin(), cells.end(), [](const std::string& cell) { return !trim(cell).empty(); });
 }
 
 ImportResult readDelimitedText(std::istream& in, const std::string& sourceName, const ImportOptions& options,

@@ -53,5 +53,8 @@ struct TextRow {
 std::vector<TextRow> splitTextRows(const std::string& text, std::size_t maxRows);
 /// A cell as a number, with a decimal point or a decimal comma; false for anything else.
 bool parseCell(const std::string& cell, double& value);
+/// A row of names with not one number among them: a header row (a damaged data row keeps
+/// numbers). What the reader skips before a column map, and what the column guess reads names from.
+bool isHeaderRow(const std::vector<std::string>& cells);
 
 }  // namespace footpath

@@ -1,6 +1,7 @@
 #include "tune/AutoTune.h"
 
 #include "metrics/Evaluation.h"
+#include "metrics/GaitStatistics.h"
 #include "nav/Pipeline.h"
 
 #include <algorithm>
@@ -75,18 +76,8 @@ struct Evaluation {
 
 StrideFigures strideFiguresOf(const Result& result)
 {
-    StrideFigures figures;
-    double sum = 0.0, sumOfSquares = 0.0;
-    for (std::size_t i = 1; i < result.steps.size(); ++i) {
-        sum += result.steps[i].strideLength_m;
-        sumOfSquares += result.steps[i].strideLength_m * result.steps[i].strideLength_m;
-    }
-    figures.count = result.summary.steps;
-    if (figures.count > 1) {
-        const double n = static_cast<double>(figures.count);
-        figures.lengthSpread_m = std::sqrt(std::max(0.0, (sumOfSquares - sum * sum / n) / (n - 1.0)));
-    }
-    return figures;
+    const GaitStatistics stats = computeGaitStatistics(result);
+    return {stats.strides, stats.strides > 1 ? stats.strideLengthStd_m : 0.0};
 }
 
 /// Runs every candidate on every recording, the (candidate, recording) pairs spread over threads.
