@@ -94,7 +94,7 @@ private slots:
     void defaults_areThePaperValues_data();
     void defaults_areThePaperValues();
     void fieldNames_mapToTheirMembers();
-    void unmetScope_saysWhichFieldsThePipelineReads();
+    void unmetCondition_saysWhichFieldsThePipelineReads();
     void validate_reportsOutOfRangeWithTheFieldName_data();
     void validate_reportsOutOfRangeWithTheFieldName();
     void validate_acceptsRangeBoundaries_data();
@@ -174,30 +174,37 @@ void TestParameters::defaults_areThePaperValues()
     QCOMPARE(footpath::parameterValue(footpath::guo2015Parameters(), *field), expected);
 }
 
-void TestParameters::unmetScope_saysWhichFieldsThePipelineReads()
+void TestParameters::unmetCondition_saysWhichFieldsThePipelineReads()
 {
-    using footpath::FieldScope;
-    const auto scopeOf = [](const Parameters& params, const char* name) {
-        return footpath::unmetScope(*footpath::findParameterField(name), params);
+    const auto unmet = [](const Parameters& params, const char* name) -> std::string {
+        const footpath::FieldCondition* condition = footpath::unmetCondition(*footpath::findParameterField(name), params);
+        return condition ? condition->id : "";
     };
     const Parameters defaults;  // SHOE, adaptive threshold, 9 states
-    QCOMPARE(scopeOf(defaults, "detector"), FieldScope::Always);
-    QCOMPARE(scopeOf(defaults, "zv_adapt_window_s"), FieldScope::Always);
-    QCOMPARE(scopeOf(defaults, "zv_log_threshold"), FieldScope::FixedThreshold);
-    QCOMPARE(scopeOf(defaults, "acc_std_max_mps2"), FieldScope::PaperDetector);
-    QCOMPARE(scopeOf(defaults, "p0_acc_bias_mps2"), FieldScope::BiasStates);
-    QCOMPARE(scopeOf(defaults, "use_zaru"), FieldScope::Zaru);
+    QCOMPARE(unmet(defaults, "detector"), std::string());
+    QCOMPARE(unmet(defaults, "zv_adapt_window_s"), std::string());
+    QCOMPARE(unmet(defaults, "zv_log_threshold"), std::string("fixed_threshold"));
+    QCOMPARE(unmet(defaults, "acc_std_max_mps2"), std::string("paper_detector"));
+    QCOMPARE(unmet(defaults, "p0_acc_bias_mps2"), std::string("bias_states"));
+    QCOMPARE(unmet(defaults, "use_zaru"), std::string("zaru"));
+    QCOMPARE(unmet(defaults, "hdr_lag_s"), std::string("hdr"));
+    QCOMPARE(unmet(defaults, "iper_axis_rad"), std::string("iper"));  // IPER off says more than "auto axis"
     const Parameters paper = footpath::guo2015Parameters();  // C1/C2/C3, 15 states
-    QCOMPARE(scopeOf(paper, "acc_std_max_mps2"), FieldScope::Always);
-    QCOMPARE(scopeOf(paper, "zv_log_threshold"), FieldScope::StatisticDetectors);  // the detector first
-    QCOMPARE(scopeOf(paper, "use_zaru"), FieldScope::Always);
+    QCOMPARE(unmet(paper, "acc_std_max_mps2"), std::string());
+    QCOMPARE(unmet(paper, "zv_log_threshold"), std::string("statistic_detectors"));  // the detector first
+    QCOMPARE(unmet(paper, "use_zaru"), std::string());
     Parameters ared;
     QVERIFY(footpath::setParameter(ared, "detector", "ared").empty());
-    QCOMPARE(scopeOf(ared, "zv_sigma_acc_mps2"), FieldScope::DetectorAccelerometer);
-    QCOMPARE(scopeOf(ared, "zv_sigma_gyr_radps"), FieldScope::Always);
+    QCOMPARE(unmet(ared, "zv_sigma_acc_mps2"), std::string("detector_accelerometer"));
+    QCOMPARE(unmet(ared, "zv_sigma_gyr_radps"), std::string());
     Parameters amvd;
     QVERIFY(footpath::setParameter(amvd, "detector", "amvd").empty());
-    QCOMPARE(scopeOf(amvd, "zv_sigma_gyr_radps"), FieldScope::DetectorGyroscope);
+    QCOMPARE(unmet(amvd, "zv_sigma_gyr_radps"), std::string("detector_gyroscope"));
+    Parameters iper;
+    iper.use_iper = true;
+    QCOMPARE(unmet(iper, "iper_axis_rad"), std::string("iper_fixed_axis"));
+    iper.iper_axis_auto = false;
+    QCOMPARE(unmet(iper, "iper_axis_rad"), std::string());
 }
 
 void TestParameters::fieldNames_mapToTheirMembers()

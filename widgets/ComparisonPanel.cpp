@@ -1,5 +1,7 @@
 #include "ComparisonPanel.h"
 
+#include "methods/MethodRegistry.h"
+
 #include <QFont>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -60,8 +62,8 @@ QWidget* ComparisonPanel::createSetColumn()
     customEdit_ = new QLineEdit(column);
     customEdit_->setObjectName(QStringLiteral("customSet"));
     customEdit_->setPlaceholderText(tr("Add a set, e.g. zupt,hdr,mag"));
-    customEdit_->setToolTip(tr("Methods separated by commas: zupt, zaru, hdr, iper, zuna, baro, mag, feliz, 9state, "
-                               "15state. Enter adds the set."));
+    customEdit_->setToolTip(tr("Methods separated by commas: %1. Enter adds the set.")
+                                .arg(QString::fromStdString(methodSetTokensText())));
     customError_ = new QLabel(column);
     customError_->setObjectName(QStringLiteral("customSetError"));
     customError_->setWordWrap(true);

@@ -1,6 +1,7 @@
 #include "MotionLanes.h"
 
 #include "TimeBands.h"
+#include "methods/MethodRegistry.h"
 #include "nav/Parameters.h"
 
 #include <QCoreApplication>
@@ -168,11 +169,12 @@ QString methodLabel(const std::string& method)
 {
     // The method's own label in the parameter list: the lanes, the notes and the panel name a method
     // alike (the lane said "Heading drift reduction" where the panel said "Heuristic ...").
-    const std::string flag = method == "mag" ? "use_mag_heading" : "use_" + method;
-    if (const ParameterField* field = findParameterField(flag))
-        return QCoreApplication::translate("footpath::ParameterFields", field->label);
-    if (method == "feliz")
-        return MotionLanes::tr("Feliz integrator");
+    if (const SourceMethod* source = findSourceMethod(method))
+        if (const ParameterField* field = findParameterField(source->switchName))
+            return QCoreApplication::translate("footpath::ParameterFields", field->label);
+    for (const EstimatorMethod& estimator : estimatorMethods())
+        if (method == estimator.token && *estimator.laneLabel)
+            return QCoreApplication::translate("footpath::MotionLanes", estimator.laneLabel);
     return QString::fromStdString(method);
 }
 

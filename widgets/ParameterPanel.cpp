@@ -403,48 +403,15 @@ QString chosenDetectorLabel(const Parameters& params)
     return detector && index < detector->choiceLabels.size() ? fieldText(detector->choiceLabels[index]) : QString();
 }
 
-/// Why the field has no effect with the other values of params (core's field scopes say when the
-/// pipeline reads each field); empty when it has one.
+/// Why the field has no effect with the other values of params (the field conditions of core's
+/// methods say when the pipeline reads each field); empty when it has one.
 QString notUsedBecause(const ParameterField& field, const Parameters& params)
 {
-    switch (unmetScope(field, params)) {
-    case FieldScope::Always:
+    const FieldCondition* unmet = unmetCondition(field, params);
+    if (!unmet)
         return {};
-    case FieldScope::PaperDetector:
-        return ParameterPanel::tr("Not used: only the C1/C2/C3 detector uses it, and %1 is chosen.")
-            .arg(chosenDetectorLabel(params));
-    case FieldScope::StatisticDetectors:
-        return ParameterPanel::tr("Not used: the statistic detectors (SHOE, ARED, AMVD, MBGTD) use it, and C1/C2/C3 "
-                                  "is chosen.");
-    case FieldScope::DetectorAccelerometer:
-        return ParameterPanel::tr("Not used: ARED looks at the gyroscope alone.");
-    case FieldScope::DetectorGyroscope:
-        return ParameterPanel::tr("Not used: %1 looks at the accelerometer alone.").arg(chosenDetectorLabel(params));
-    case FieldScope::FixedThreshold:
-        return ParameterPanel::tr("Not used: the threshold is adaptive (zv_adaptive is on).");
-    case FieldScope::AdaptiveThreshold:
-        return ParameterPanel::tr("Not used: the threshold is fixed (zv_adaptive is off).");
-    case FieldScope::BiasStates:
-        return ParameterPanel::tr("Not used: the 9-state filter has no bias states.");
-    case FieldScope::Zaru:
-        // ZARU measures the gyro bias; with the bias states held at zero it corrects nothing.
-        return ParameterPanel::tr("Not used: ZARU corrects the gyro bias, which the 9-state filter does not estimate.");
-    case FieldScope::Hdr:
-        return ParameterPanel::tr("Not used: HDR is off (use_hdr).");
-    case FieldScope::Iper:
-        return ParameterPanel::tr("Not used: IPER is off (use_iper).");
-    case FieldScope::IperFixedAxis:
-        return ParameterPanel::tr("Not used: the axis is estimated from the walk (iper_axis_auto is on).");
-    case FieldScope::Zuna:
-        return ParameterPanel::tr("Not used: ZUNA is off (use_zuna).");
-    case FieldScope::Barometer:
-        return ParameterPanel::tr("Not used: the barometer is off (use_baro).");
-    case FieldScope::LinearBarometer:
-        return ParameterPanel::tr("Not used: the barometric formula is chosen, not the linear constant.");
-    case FieldScope::MagHeading:
-        return ParameterPanel::tr("Not used: the magnetometer heading update is off (use_mag_heading).");
-    }
-    return {};
+    const QString reason = QCoreApplication::translate("footpath::ParameterPanel", unmet->notUsedReason);
+    return reason.contains(QLatin1String("%1")) ? reason.arg(chosenDetectorLabel(params)) : reason;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "io/Import.h"
 #include "io/NearestNames.h"
+#include "methods/MethodRegistry.h"
 #include "nav/MethodSets.h"
 
 #include <algorithm>
@@ -56,7 +57,7 @@ const char* const kRecordSynopsis =
 
 const char* const kImportOptions = R"(
 Import options (every format is detected from the content; these override or complete it):
-  --format NAME              xsens-text, xsens-mtb, delimited, pyshoe-vicon
+  --format NAME              FORMATS
   --columns role,role,...    a file without a header: one role per column, from time_s, time_ms,
                              time_us, counter, acc_x..z, gyr_x..z, mag_x..z, pressure_pa|hpa|kpa, skip
   --acc-unit mps2|g  --gyr-unit radps|degps  --time-unit s|ms|us  --rate HZ
@@ -107,8 +108,8 @@ output keeps the input order. A file that cannot be read becomes an error row, t
 
 const char* const kCompareText =
     R"(compare runs every method set of --sets on each INPUT (files or folders, as for eval): sets are
-separated by ';', methods within a set by ',', from zupt, zaru, hdr, iper, zuna, baro, mag, feliz,
-9state, 15state; every method a set does not name is off, the other parameters come from --params
+separated by ';', methods within a set by ',', from METHODS;
+every method a set does not name is off, the other parameters come from --params
 and --set. Without --sets it runs the suggested sets:
   SUGGESTED
 It prints a table per INPUT, one row per set in the order given: end-to-start (m and % of the path),
@@ -153,11 +154,14 @@ const char* const kWarningsText =
     "eval, compare and process print the plausibility warnings to stderr: FILE: warning: [t0-t1 s] message.\n";
 const char* const kExitCodes = "Exit codes: 0 success, 2 bad input or options or a device problem, 1 internal error.\n";
 
-std::string withSuggestedSets(std::string text)
+/// The lists that come from the method registry: the suggested sets, the method tokens, the formats.
+std::string withRegistryLists(std::string text)
 {
-    const std::string placeholder = "SUGGESTED";
-    if (const auto at = text.find(placeholder); at != std::string::npos)
-        text.replace(at, placeholder.size(), suggestedMethodSetsSpec());
+    const std::pair<std::string, std::string> lists[] = {
+        {"SUGGESTED", suggestedMethodSetsSpec()}, {"METHODS", methodSetTokensText()}, {"FORMATS", importerNamesText()}};
+    for (const auto& [placeholder, list] : lists)
+        for (auto at = text.find(placeholder); at != std::string::npos; at = text.find(placeholder, at + list.size()))
+            text.replace(at, placeholder.size(), list);
     return text;
 }
 
@@ -175,7 +179,7 @@ std::string usageText()
                        + kTuneSynopsis + kGaitSynopsis + kInfoSynopsis + kRecordSynopsis
                        + "  footpath-cli COMMAND --help   the options of one command\n" + kImportOptions
                        + kReferenceText + kRecordText + kEvalText + kCompareText + kTuneText + kGaitText + kWarningsText + kExitCodes;
-    return withSuggestedSets(std::move(text));
+    return withRegistryLists(std::move(text));
 }
 
 std::string commandSynopsis(const std::string& command)
@@ -211,7 +215,7 @@ std::string commandUsageText(const std::string& command)
         text += kRecordSynopsis + std::string("\n") + kRecordText;
     else
         return usageText();
-    return withSuggestedSets(text + kExitCodes);
+    return withRegistryLists(text + kExitCodes);
 }
 
 namespace {

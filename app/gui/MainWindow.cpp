@@ -24,6 +24,7 @@
 #include "io/FootPairing.h"
 #include "io/NearestNames.h"
 #include "io/ResultWriters.h"
+#include "methods/MethodRegistry.h"
 #include "metrics/Evaluation.h"
 
 #include <QActionGroup>
@@ -675,7 +676,7 @@ void MainWindow::chooseRecording()
     // Two files at once: the left and the right foot of one walk.
     const QStringList paths = QFileDialog::getOpenFileNames(
         this, tr("Open recording (two files: both feet)"), settings_.lastFolder(),
-        tr("Recordings (*.txt *.csv *.mtb *.TXT *.CSV);;All files (*)"));
+        tr("Recordings (%1);;All files (*)").arg(QString::fromStdString(importerFilePatterns())));
     if (!paths.isEmpty())
         openRecordings(paths);
 }

@@ -30,63 +30,54 @@ Eigen::Vector3d meanAcceleration(const ImuSample* window, std::size_t count)
 
 }  // namespace
 
+StatisticConstants statisticConstants(const Parameters& params)
+{
+    StatisticConstants constants;
+    constants.gravity_mps2 = params.gravity_mps2;
+    constants.varAcc = params.zv_sigma_acc_mps2 * params.zv_sigma_acc_mps2;
+    constants.varGyr = params.zv_sigma_gyr_radps * params.zv_sigma_gyr_radps;
+    constants.invVarAcc = 1.0 / constants.varAcc;
+    constants.invVarGyr = 1.0 / constants.varGyr;
+    return constants;
+}
+
 ZeroVelocityStatistic::ZeroVelocityStatistic(const Parameters& params)
-    : kind_(params.detectorKind())
-    , gravity_mps2_(params.gravity_mps2)
-    , varAcc_(params.zv_sigma_acc_mps2 * params.zv_sigma_acc_mps2)
-    , varGyr_(params.zv_sigma_gyr_radps * params.zv_sigma_gyr_radps)
-    , invVarAcc_(1.0 / varAcc_)
-    , invVarGyr_(1.0 / varGyr_)
+    : constants_(statisticConstants(params))
+    , statistic_(chosenDetector(params).statistic ? chosenDetector(params).statistic : shoeStatistic)
 {
 }
 
-double ZeroVelocityStatistic::operator()(const ImuSample* window, std::size_t count) const
-{
-    switch (kind_) {
-    case DetectorKind::Ared:
-        return ared(window, count);
-    case DetectorKind::Amvd:
-        return amvd(window, count);
-    case DetectorKind::Mbgtd:
-        return mbgtd(window, count);
-    case DetectorKind::Shoe:
-    case DetectorKind::PaperC1C2C3:
-        break;
-    }
-    return shoe(window, count);
-}
-
-double ZeroVelocityStatistic::shoe(const ImuSample* window, std::size_t count) const
+double shoeStatistic(const StatisticConstants& c, const ImuSample* window, std::size_t count)
 {
     const Eigen::Vector3d mean = meanAcceleration(window, count);
     const double meanNorm = mean.norm();
     const Eigen::Vector3d gravityAlongMean =
-        meanNorm > 0.0 ? Eigen::Vector3d(gravity_mps2_ * mean / meanNorm) : Eigen::Vector3d::Zero();
+        meanNorm > 0.0 ? Eigen::Vector3d(c.gravity_mps2 * mean / meanNorm) : Eigen::Vector3d::Zero();
     double sum = 0.0;
     for (std::size_t k = 0; k < count; ++k)
-        sum += (window[k].acc_mps2 - gravityAlongMean).squaredNorm() * invVarAcc_
-               + window[k].gyr_radps.squaredNorm() * invVarGyr_;
+        sum += (window[k].acc_mps2 - gravityAlongMean).squaredNorm() * c.invVarAcc
+               + window[k].gyr_radps.squaredNorm() * c.invVarGyr;
     return sum / static_cast<double>(count);
 }
 
-double ZeroVelocityStatistic::ared(const ImuSample* window, std::size_t count) const
+double aredStatistic(const StatisticConstants& c, const ImuSample* window, std::size_t count)
 {
     double sum = 0.0;
     for (std::size_t k = 0; k < count; ++k)
         sum += window[k].gyr_radps.squaredNorm();
-    return sum / static_cast<double>(count) / varGyr_;
+    return sum / static_cast<double>(count) / c.varGyr;
 }
 
-double ZeroVelocityStatistic::amvd(const ImuSample* window, std::size_t count) const
+double amvdStatistic(const StatisticConstants& c, const ImuSample* window, std::size_t count)
 {
     const Eigen::Vector3d mean = meanAcceleration(window, count);
     double sum = 0.0;
     for (std::size_t k = 0; k < count; ++k)
         sum += (window[k].acc_mps2 - mean).squaredNorm();
-    return sum / static_cast<double>(count) / varAcc_;
+    return sum / static_cast<double>(count) / c.varAcc;
 }
 
-double ZeroVelocityStatistic::mbgtd(const ImuSample* window, std::size_t count) const
+double mbgtdStatistic(const StatisticConstants& c, const ImuSample* window, std::size_t count)
 {
     double largest = 0.0;
     for (std::size_t split = 0; split + 1 < count; ++split) {
@@ -97,7 +88,7 @@ double ZeroVelocityStatistic::mbgtd(const ImuSample* window, std::size_t count) 
         const double pairs = static_cast<double>((split + 1) * (count - 1 - split));
         largest = std::max(largest, sum / pairs);
     }
-    return largest * largest / varAcc_;
+    return largest * largest / c.varAcc;
 }
 
 StatisticStanceDetector::StatisticStanceDetector(const Parameters& params)

@@ -2,6 +2,7 @@
 
 #include "Recording.h"
 #include "detect/StanceDetector.h"
+#include "methods/MethodRegistry.h"
 #include "nav/Parameters.h"
 
 #include <algorithm>
@@ -28,21 +29,20 @@ class ZeroVelocityStatistic {
 public:
     explicit ZeroVelocityStatistic(const Parameters& params);
     /// The statistic over the count samples from window on (count >= 1).
-    double operator()(const ImuSample* window, std::size_t count) const;
+    double operator()(const ImuSample* window, std::size_t count) const { return statistic_(constants_, window, count); }
 
 private:
-    double shoe(const ImuSample* window, std::size_t count) const;
-    double ared(const ImuSample* window, std::size_t count) const;
-    double amvd(const ImuSample* window, std::size_t count) const;
-    double mbgtd(const ImuSample* window, std::size_t count) const;
-
-    DetectorKind kind_;
-    double gravity_mps2_;
-    double varAcc_;  ///< zv_sigma_acc_mps2^2
-    double varGyr_;
-    double invVarAcc_;  ///< 1 / varAcc_
-    double invVarGyr_;
+    StatisticConstants constants_;
+    ZeroVelocityStatisticFunction statistic_;  ///< the chosen detector's (SHOE for C1/C2/C3's thresholds)
 };
+
+/// The noise normalisation of params, worked out once.
+StatisticConstants statisticConstants(const Parameters& params);
+/// The statistics of the field (definitions above); the detector registry names them.
+double shoeStatistic(const StatisticConstants& constants, const ImuSample* window, std::size_t count);
+double aredStatistic(const StatisticConstants& constants, const ImuSample* window, std::size_t count);
+double amvdStatistic(const StatisticConstants& constants, const ImuSample* window, std::size_t count);
+double mbgtdStatistic(const StatisticConstants& constants, const ImuSample* window, std::size_t count);
 
 /// The values of a stream from some index on, in one vector: appended at the back, taken from the
 /// front by moving a head, the taken ones erased in batches of at least half the vector, so each

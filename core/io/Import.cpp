@@ -1,9 +1,9 @@
 #include "io/Import.h"
 
 #include "io/IpolGaitEvents.h"
-#include "io/MtbReader.h"
 #include "io/ReferenceSidecar.h"
 #include "io/XsensTextReader.h"
+#include "methods/MethodRegistry.h"
 #include "nav/InputCheck.h"
 
 #include <algorithm>
@@ -64,15 +64,6 @@ bool looksBinary(const std::string& head)
     return control > 0 && static_cast<double>(control) > 0.01 * static_cast<double>(head.size());
 }
 
-std::string firstLineOf(const std::string& head)
-{
-    std::istringstream in(head);
-    std::string line;
-    while (std::getline(in, line) && line.find_first_not_of(" \t\r") == std::string::npos) {
-    }
-    return line;
-}
-
 /// What a container format the file is in says of itself at its start ("a MATLAB .mat file (v5)"),
 /// or empty: such a file is named for what it is, not called a broken log.
 std::string knownContainer(const std::string& head)
@@ -93,43 +84,47 @@ std::string knownContainer(const std::string& head)
     return {};
 }
 
-/// Which reader a file needs, from its content; an error message when none fits.
-std::string detectFormat(const std::string& head, const ImportOptions& options, std::string& error)
+std::string whyNoBinaryFormat()
+{
+    return "binary content of no format Footpath knows (an Xsens .mtb log starts with the Xbus preamble 0xFA)";
+}
+
+std::string whyNoTextFormat(const std::string& head)
+{
+    if (!looksLikeSensorText(head))
+        return "does not look like sensor data: no numeric rows (a recording has a row of numbers per sample)";
+    std::istringstream in(head);
+    std::string header;
+    while (std::getline(in, header) && header.find_first_not_of(" \t\r") == std::string::npos) {
+    }
+    return "no header row: the first line has " + std::to_string(columnCount(header))
+           + " numeric columns; give the column map (what each column is, e.g. time_ms,acc_x,acc_y,acc_z,"
+             "gyr_x,gyr_y,gyr_z,...) or an import preset";
+}
+
+/// Which reader a file needs, from its content (the importers' recognisers, in the registry's
+/// order); an error message when none fits.
+const ImporterMethod* detectFormat(const std::string& head, const ImportOptions& options, std::string& error)
 {
     if (head.rfind("\xFF\xFE", 0) == 0 || head.rfind("\xFE\xFF", 0) == 0) {
         error = "UTF-16 text (byte-order mark at byte 0): save the file as UTF-8 or plain ASCII";
-        return {};
+        return nullptr;
     }
     if (const std::string container = knownContainer(head); !container.empty()) {
         error = container + ", a format Footpath does not read: export its samples as CSV (time, acc, gyr)";
-        return {};
+        return nullptr;
     }
-    if (looksBinary(head)) {
-        if (!head.empty() && static_cast<unsigned char>(head.front()) == 0xFA)
-            return "xsens-mtb";
-        error = "binary content of no format Footpath knows (an Xsens .mtb log starts with the Xbus preamble 0xFA)";
-        return {};
-    }
-    if (head.find_first_not_of(" \t\r\n") == std::string::npos) {
+    const bool binary = looksBinary(head);
+    if (!binary && head.find_first_not_of(" \t\r\n") == std::string::npos) {
         error = "the file is empty: expected samples";
-        return {};
+        return nullptr;
     }
-    if (looksLikeXsensText(head))
-        return "xsens-text";
-    if (!looksLikeSensorText(head)) {
-        error = "does not look like sensor data: no numeric rows (a recording has a row of numbers per sample)";
-        return {};
-    }
-    const std::string header = firstLineOf(head);
-    if (header.find("vicon_x_m") != std::string::npos)
-        return "pyshoe-vicon";
-    if (!startsWithHeaderRow(head) && options.columnMap.empty()) {
-        error = "no header row: the first line has " + std::to_string(columnCount(header))
-                + " numeric columns; give the column map (what each column is, e.g. time_ms,acc_x,acc_y,acc_z,"
-                  "gyr_x,gyr_y,gyr_z,...) or an import preset";
-        return {};
-    }
-    return "delimited";
+    for (const bool catchAll : {false, true})
+        for (const ImporterMethod& importer : importerMethods())
+            if (importer.binary == binary && importer.catchAll == catchAll && importer.recognises(head, options))
+                return &importer;
+    error = binary ? whyNoBinaryFormat() : whyNoTextFormat(head);
+    return nullptr;
 }
 
 // ---- units ---------------------------------------------------------------------------------
@@ -308,34 +303,9 @@ void finishImport(ImportResult& r, const std::string& path, const ImportOptions&
         r.recording.warnings.push_back(std::move(warning));
     if (cancelledWhileFinishing(r, path, options))
         return;
-    if (r.info.format == "pyshoe-vicon") {
-        r.recording.reference.closedLoop = true;
-        r.recording.reference.notes.push_back("closed loop: every pyshoe-vicon trial ends where it started");
-    }
     attachReferenceSidecar(path, r.recording);
     attachIpolGaitEvents(path, r.recording, r.recording.warnings);
     listChannels(r);
-}
-
-ImportResult readWith(const std::string& format, std::istream& in, const std::string& path,
-                      const ImportOptions& options, std::size_t size)
-{
-    if (format == "xsens-mtb")
-        return readMtb(in, path, options, size);
-    if (format == "xsens-text")
-        return readXsensText(in, path, options, size);
-    if (format == "pyshoe-vicon" && options.referenceColumns.empty()) {
-        // The VICON horizontal axes are mirrored relative to a right-handed z-up frame.
-        ImportOptions withReference = options;
-        withReference.referenceColumns = {"vicon_x_m", "-vicon_y_m", "vicon_z_m"};
-        ImportResult r = readDelimitedText(in, path, withReference, size);
-        r.recording.reference.notes.push_back("reference positions from vicon_x_m, -vicon_y_m, vicon_z_m "
-                                              "(VICON axes are mirrored)");
-        if (!r.recording.reference.stance.empty())
-            r.recording.reference.notes.push_back("reference stance from zv_vicon_opt (zero velocity by motion capture)");
-        return r;
-    }
-    return readDelimitedText(in, path, options, size);
 }
 
 }  // namespace
@@ -360,9 +330,11 @@ const char* unitName(TimeUnit unit)
     }
 }
 
-const std::vector<std::string>& importFormatNames()
+std::vector<std::string> importFormatNames()
 {
-    static const std::vector<std::string> names = {"xsens-text", "xsens-mtb", "delimited", "pyshoe-vicon"};
+    std::vector<std::string> names;
+    for (const ImporterMethod& importer : importerMethods())
+        names.emplace_back(importer.name);
     return names;
 }
 
@@ -376,24 +348,20 @@ ImportResult importStream(std::istream& in, std::size_t size, const std::string&
     in.clear();
     in.seekg(0);
 
-    std::string format = options.format;
-    if (!format.empty()
-        && std::find(importFormatNames().begin(), importFormatNames().end(), format) == importFormatNames().end()) {
-        std::string known;
-        for (const std::string& candidate : importFormatNames())
-            known += (known.empty() ? "" : ", ") + candidate;
-        failed.error = ReadError{name, 0, 0, "unknown format '" + format + "'; expected one of " + known};
-        return failed;
-    }
+    const ImporterMethod* importer = nullptr;
     std::string problem;
-    if (format.empty())
-        format = detectFormat(head, options, problem);
-    if (format.empty()) {
+    if (!options.format.empty()) {
+        importer = findImporter(options.format);
+        problem = "unknown format '" + options.format + "'; expected one of " + importerNamesText();
+    } else {
+        importer = detectFormat(head, options, problem);
+    }
+    if (!importer) {
         failed.error = ReadError{name, 0, 0, problem};
         return failed;
     }
-    ImportResult result = readWith(format, in, name, options, size);
-    result.info.format = format;
+    ImportResult result = importer->read(in, name, options, size);
+    result.info.format = importer->name;
     if (result.ok())
         finishImport(result, name, options);
     return result;

@@ -81,8 +81,8 @@ ImportResult importRecording(const std::string& path, const ImportOptions& optio
 ImportResult importStream(std::istream& in, std::size_t size, const std::string& name,
                           const ImportOptions& options = {});
 
-/// The names --format accepts: "xsens-text", "xsens-mtb", "delimited", "pyshoe-vicon".
-const std::vector<std::string>& importFormatNames();
+/// The names --format accepts, the importer registry's (core/methods/ImporterMethods.cpp).
+std::vector<std::string> importFormatNames();
 
 
 }  // namespace footpath

@@ -1,29 +1,23 @@
 #include "nav/MeasurementSources.h"
 
+#include "methods/MethodRegistry.h"
 #include "nav/ErrorStateEkf.h"
-#include "nav/sources/BarometricHeight.h"
-#include "nav/sources/HeadingDriftReduction.h"
-#include "nav/sources/MagneticHeading.h"
-#include "nav/sources/PositionErrorReduction.h"
-#include "nav/sources/ZeroNavigationAcceleration.h"
-#include "nav/sources/ZeroVelocity.h"
+
+#include <algorithm>
 
 namespace footpath {
 
 MeasurementSources::MeasurementSources(const Parameters& params)
 {
-    if (params.use_zupt || params.use_zaru)
-        sources_.push_back(std::make_unique<ZeroVelocitySource>(params));
-    if (params.use_zuna)
-        sources_.push_back(std::make_unique<ZeroNavigationAccelerationSource>(params));
-    if (params.use_hdr)
-        sources_.push_back(std::make_unique<HeadingDriftReductionSource>(params));
-    if (params.use_mag_heading)
-        sources_.push_back(std::make_unique<MagneticHeadingSource>(params));
-    if (params.use_iper)
-        sources_.push_back(std::make_unique<PositionErrorReductionSource>(params));
-    if (params.use_baro)
-        sources_.push_back(std::make_unique<BarometricHeightSource>(params));
+    std::vector<const SourceMethod*> methods;
+    for (const SourceMethod& method : sourceMethods())
+        if (method.make)
+            methods.push_back(&method);
+    std::stable_sort(methods.begin(), methods.end(),
+                     [](const SourceMethod* a, const SourceMethod* b) { return a->applyRank < b->applyRank; });
+    for (const SourceMethod* method : methods)
+        if (std::unique_ptr<MeasurementSource> source = method->make(params))
+            sources_.push_back(std::move(source));
 }
 
 MeasurementSources::~MeasurementSources() = default;

@@ -35,8 +35,8 @@ public:
     virtual void finish(double /*endTime_s*/, std::vector<MethodNote>& /*notes*/) {}
 };
 
-/// The sources the parameters switch on, in the order they are applied at each sample. The one
-/// place to add the next one: write a MeasurementSource in nav/sources/ and list it here.
+/// The sources the parameters switch on, in the order they are applied at each sample (the
+/// registry's applyRank; a new source is added in core/methods/SourceMethods.cpp).
 class MeasurementSources {
 public:
     explicit MeasurementSources(const Parameters& params);

@@ -1,10 +1,10 @@
 #include "nav/MethodSets.h"
 
 #include "io/NearestNames.h"
+#include "methods/MethodRegistry.h"
 #include "metrics/Evaluation.h"
 
 #include <algorithm>
-#include <map>
 #include <sstream>
 #include <thread>
 
@@ -23,58 +23,57 @@ std::string trimmed(const std::string& text)
 
 std::string nearestToken(const std::string& token)
 {
-    const std::vector<std::string>& known = methodTokens();
+    const std::vector<std::string> known = methodSetTokens();
     return *std::min_element(known.begin(), known.end(), [&](const std::string& a, const std::string& b) {
         return editDistance(token, a) < editDistance(token, b);
     });
-}
-
-std::string knownTokensText()
-{
-    std::string text;
-    for (const std::string& token : methodTokens())
-        text += (text.empty() ? "" : ", ") + token;
-    return text;
 }
 
 Parameters withAllMethodsOff(const Parameters& base)
 {
     Parameters params = base;
     params.estimator = static_cast<int>(EstimatorKind::Ekf);
-    params.use_zupt = params.use_zaru = params.use_hdr = params.use_iper = false;
-    params.use_zuna = params.use_baro = params.use_mag_heading = false;
+    for (const SourceMethod& source : sourceMethods())
+        source.setOn(params, false);
     return params;
+}
+
+int estimatorIndex(const std::string& token)
+{
+    const std::vector<EstimatorMethod>& estimators = estimatorMethods();
+    for (std::size_t i = 0; i < estimators.size(); ++i)
+        if (*estimators[i].setLabel && token == estimators[i].token)
+            return static_cast<int>(i);
+    return -1;
+}
+
+/// The filter size a token names ("9state" or "9", "15state" or "15"), if it names one.
+std::optional<FilterStates> filterStatesOf(const std::string& token)
+{
+    if (token == "9state" || token == "9")
+        return FilterStates::Nine;
+    if (token == "15state" || token == "15")
+        return FilterStates::Fifteen;
+    return std::nullopt;
 }
 
 /// Sets the method a token names; false if the token is unknown.
 bool applyToken(const std::string& token, Parameters& params, bool& statesNamed)
 {
-    if (token == "zupt")
-        params.use_zupt = true;
-    else if (token == "zaru")
-        params.use_zaru = true;
-    else if (token == "hdr")
-        params.use_hdr = true;
-    else if (token == "iper")
-        params.use_iper = true;
-    else if (token == "zuna")
-        params.use_zuna = true;
-    else if (token == "baro")
-        params.use_baro = true;
-    else if (token == "mag")
-        params.use_mag_heading = true;
-    else if (token == "feliz")
-        params.estimator = static_cast<int>(EstimatorKind::Feliz);
-    else if (token == "rts")
-        params.estimator = static_cast<int>(EstimatorKind::Smoother);
-    else if (token == "9state" || token == "9")
-        params.filter_states = static_cast<int>(FilterStates::Nine);
-    else if (token == "15state" || token == "15")
-        params.filter_states = static_cast<int>(FilterStates::Fifteen);
-    else
-        return false;
-    statesNamed = statesNamed || token == "9state" || token == "9" || token == "15state" || token == "15";
-    return true;
+    if (const SourceMethod* source = findSourceMethod(token)) {
+        source->setOn(params, true);
+        return true;
+    }
+    if (const int estimator = estimatorIndex(token); estimator >= 0) {
+        params.estimator = estimator;
+        return true;
+    }
+    if (const std::optional<FilterStates> states = filterStatesOf(token)) {
+        params.filter_states = static_cast<int>(*states);
+        statesNamed = true;
+        return true;
+    }
+    return false;
 }
 
 ComparisonRow evaluateSet(const Recording& recording, const MethodSet& set, const std::atomic<bool>* cancel,
@@ -106,11 +105,9 @@ ComparisonRow evaluateSet(const Recording& recording, const MethodSet& set, cons
 
 }  // namespace
 
-const std::vector<std::string>& methodTokens()
+std::vector<std::string> methodTokens()
 {
-    static const std::vector<std::string> tokens{"zupt", "zaru", "hdr", "iper", "zuna", "baro", "mag", "feliz",
-                                                 "rts", "9state", "15state"};
-    return tokens;
+    return methodSetTokens();
 }
 
 std::optional<MethodSet> parseMethodSet(const std::string& spec, const Parameters& base, std::string& error)
@@ -127,7 +124,7 @@ std::optional<MethodSet> parseMethodSet(const std::string& spec, const Parameter
             continue;
         if (!applyToken(token, set.params, statesNamed)) {
             error = "unknown method '" + token + "' in set '" + trimmed(spec) + "' (did you mean '" + nearestToken(token)
-                    + "'?); known: " + knownTokensText();
+                    + "'?); known: " + methodSetTokensText();
             return std::nullopt;
         }
         names.push_back(token);
@@ -145,21 +142,18 @@ std::optional<MethodSet> parseMethodSet(const std::string& spec, const Parameter
 
 std::string methodSetSpec(const Parameters& params)
 {
+    const EstimatorMethod& estimator = estimatorMethods()[static_cast<std::size_t>(params.estimator)];
     std::vector<std::string> tokens;
     if (params.estimatorKind() == EstimatorKind::Feliz) {
-        tokens.push_back("feliz");
+        tokens.emplace_back(estimator.token);  // Feliz runs no filter, so no source
     } else {
-        const std::pair<bool, const char*> switches[] = {
-            {params.use_zupt, "zupt"}, {params.use_zaru, "zaru"}, {params.use_hdr, "hdr"},
-            {params.use_iper, "iper"}, {params.use_zuna, "zuna"}, {params.use_baro, "baro"},
-            {params.use_mag_heading, "mag"}};
-        for (const auto& [on, token] : switches)
-            if (on)
-                tokens.push_back(token);
+        for (const SourceMethod& source : sourceMethods())
+            if (source.isOn(params))
+                tokens.emplace_back(source.token);
         if (!tokens.empty() && params.filter_states != Parameters().filter_states)
             tokens.push_back(params.filterStates() == FilterStates::Fifteen ? "15state" : "9state");
-        if (params.estimatorKind() == EstimatorKind::Smoother)
-            tokens.push_back("rts");
+        if (*estimator.setLabel)
+            tokens.emplace_back(estimator.token);
     }
     std::string spec;
     for (std::size_t i = 0; i < tokens.size(); ++i)
@@ -167,18 +161,28 @@ std::string methodSetSpec(const Parameters& params)
     return spec;
 }
 
+namespace {
+
+/// How a set spells one token ("HDR" for "hdr"); the token itself when no method has it.
+std::string tokenLabel(const std::string& token)
+{
+    if (const SourceMethod* source = findSourceMethod(token))
+        return source->setLabel;
+    if (const int estimator = estimatorIndex(token); estimator >= 0)
+        return estimatorMethods()[static_cast<std::size_t>(estimator)].setLabel;
+    if (const std::optional<FilterStates> states = filterStatesOf(token))
+        return *states == FilterStates::Nine ? "9-state" : "15-state";
+    return token;
+}
+
+}  // namespace
+
 std::string methodSetLabel(const std::string& spec)
 {
-    static const std::map<std::string, std::string> labels{
-        {"zupt", "ZUPT"}, {"zaru", "ZARU"}, {"hdr", "HDR"}, {"iper", "IPER"}, {"zuna", "ZUNA"},
-        {"baro", "barometer"}, {"mag", "magnetometer"}, {"feliz", "Feliz"}, {"rts", "RTS smoother"}, {"9state", "9-state"},
-        {"15state", "15-state"}, {"9", "9-state"}, {"15", "15-state"}};
     std::string label;
     std::istringstream in(spec);
-    for (std::string token; std::getline(in, token, ',');) {
-        const auto known = labels.find(token);
-        label += (label.empty() ? "" : "+") + (known != labels.end() ? known->second : token);
-    }
+    for (std::string token; std::getline(in, token, ',');)
+        label += (label.empty() ? "" : "+") + tokenLabel(token);
     return label;
 }
 

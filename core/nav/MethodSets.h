@@ -18,7 +18,7 @@ struct MethodSet {
 
 /// The tokens a method set is written with, in a stable order: zupt, zaru, hdr, iper, zuna, baro,
 /// mag, feliz, 9state, 15state.
-const std::vector<std::string>& methodTokens();
+std::vector<std::string> methodTokens();
 
 /// One method set from a comma-separated list of tokens. Every method not named is off; the
 /// detector, noise and method parameters come from base. "zaru" means the 15-state filter unless

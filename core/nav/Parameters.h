@@ -140,26 +140,16 @@ struct Parameters {
 /// differ where measurement on real walks said so (docs/accuracy.md).
 Parameters guo2015Parameters();
 
-/// When the pipeline reads a field: always, or only with some values of the other fields. Kept in
-/// the field table, so a new field states it where it is declared and every front end (the panel
-/// greys what is not read) follows.
-enum class FieldScope {
-    Always,
-    PaperDetector,           ///< detector c1c2c3
-    StatisticDetectors,      ///< shoe, ared, amvd, mbgtd
-    DetectorAccelerometer,   ///< a statistic that reads the accelerometer (not ARED)
-    DetectorGyroscope,       ///< a statistic that reads the gyroscope (SHOE, ARED)
-    FixedThreshold,          ///< a statistic detector with zv_adaptive off
-    AdaptiveThreshold,       ///< a statistic detector with zv_adaptive on
-    BiasStates,              ///< the 15-state filter
-    Zaru,                    ///< the 15-state filter: ZARU corrects the gyro bias states
-    Hdr,                     ///< use_hdr
-    Iper,                    ///< use_iper
-    IperFixedAxis,           ///< use_iper with iper_axis_auto off
-    Zuna,                    ///< use_zuna
-    Barometer,               ///< use_baro
-    MagHeading,              ///< use_mag_heading
-    LinearBarometer,         ///< use_baro with baro_model linear
+/// When the pipeline reads a field: a condition on the other fields, kept with the method that owns
+/// the field (a source's switch, the detector's kind, the filter's size), so a new method states it
+/// where it is declared and every front end (the panel greys what is not read) follows.
+struct FieldCondition {
+    const char* id;                     ///< stable name for tests and logs ("hdr", "fixed_threshold")
+    bool (*met)(const Parameters&);     ///< whether the pipeline reads the field with these values
+    /// Why it is not read, for people; marked for translation in the "footpath::ParameterPanel"
+    /// context. "%1" stands for the label of the chosen detector.
+    const char* notUsedReason;
+    const FieldCondition* within = nullptr;  ///< checked first (IPER's fixed axis within IPER)
 };
 
 /// Description of one field, so every front end walks the same list.
@@ -177,7 +167,7 @@ struct ParameterField {
     int Parameters::*choice = nullptr;  ///< set when kind == Choice: an index into choiceNames
     std::vector<const char*> choiceNames = {};  ///< names of the choices, as presets and --set spell them
     std::vector<const char*> choiceLabels = {};  ///< what a user reads ("SHOE (GLRT)")
-    FieldScope scope = FieldScope::Always;
+    const FieldCondition* condition = nullptr;  ///< nullptr: always read
     /// A short name for people ("C2 bound on the std of |a|"), without the unit: front ends show
     /// labelWithUnit() and keep `name` for the tool tip, presets and --set.
     const char* label = "";
@@ -190,10 +180,21 @@ std::string displayUnit(const ParameterField& field);
 std::string labelWithUnit(const ParameterField& field);
 const ParameterField* findParameterField(const std::string& name);
 
-/// The first condition of field's scope that params does not meet (a statistic-detector field under
-/// the C1/C2/C3 detector gives StatisticDetectors, even if it is also a fixed-threshold one);
-/// Always when the pipeline reads the field with these parameters.
-FieldScope unmetScope(const ParameterField& field, const Parameters& params);
+/// The first condition of field's that params does not meet, innermost last (a statistic-detector
+/// field under the C1/C2/C3 detector gives "statistic_detectors", even if it is also a
+/// fixed-threshold one); nullptr when the pipeline reads the field with these parameters.
+const FieldCondition* unmetCondition(const ParameterField& field, const Parameters& params);
+
+/// Builders of field rows, for the files that declare their methods' fields. Labels, descriptions
+/// and groups are marked for translation in the "footpath::ParameterFields" context.
+ParameterField realField(const char* name, const char* label, double Parameters::*member, double lo, double hi,
+                         const char* unit, const char* description, const char* group,
+                         const FieldCondition* condition = nullptr);
+ParameterField flagField(const char* name, const char* label, bool Parameters::*member, const char* description,
+                         const char* group, const FieldCondition* condition = nullptr);
+ParameterField choiceField(const char* name, const char* label, int Parameters::*member,
+                           std::vector<const char*> names, std::vector<const char*> labels, const char* description,
+                           const char* group, const FieldCondition* condition = nullptr);
 
 /// Equal in every field of parameterFields().
 bool operator==(const Parameters& a, const Parameters& b);

@@ -1,7 +1,10 @@
 #include "nav/sources/BarometricHeight.h"
 
+#include "methods/SourceMethodSupport.h"
 #include "nav/ErrorStateEkf.h"
 #include "nav/MotionClasses.h"
+
+#include <QtGlobal>
 
 #include <algorithm>
 #include <array>
@@ -198,6 +201,58 @@ void BarometricHeightSource::finish(double endTime_s, std::vector<MethodNote>& n
         return;
     notes.push_back(MethodNote{"baro", firstTime_s_, endTime_s,
                                "not applied: the recording has no pressure readings, so there is no barometric height"});
+}
+
+
+// ---- registry entry (core/methods/SourceMethods.cpp lists it) ----------------------------
+
+namespace {
+
+const FieldCondition baroOn{"baro", methods::switchIsOn<&Parameters::use_baro>,
+    QT_TRANSLATE_NOOP("footpath::ParameterPanel", "Not used: the barometer is off (use_baro).")};
+const FieldCondition linearBarometer{
+    "linear_barometer", [](const Parameters& p) { return p.barometerModel() == BarometerModel::Linear; },
+    QT_TRANSLATE_NOOP("footpath::ParameterPanel", "Not used: the barometric formula is chosen, not the linear constant."),
+    &baroOn};
+
+}  // namespace
+
+SourceMethod barometricHeightMethod()
+{
+    const auto fields = [] {
+        using P = Parameters;
+        return std::vector<ParameterField>{
+            flagField("use_baro", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometric height"), &P::use_baro,
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometric height at each stance (Zheng et al. 2016)"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Measurements")),
+            choiceField("baro_model", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Pressure to height"), &P::baro_model,
+                   {"formula", "linear"},
+                   {QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometric formula"),
+                    QT_TRANSLATE_NOOP("footpath::ParameterFields", "Linear constant (Zheng et al. 2016)")},
+                   QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometer: pressure difference to height"),
+                   QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometer"), &baroOn),
+            realField("baro_linear_m_per_pa", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Linear constant N"),
+                 &P::baro_linear_m_per_pa, 0.0, 1.0, "m/Pa",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometer: linear constant N"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometer"), &linearBarometer),
+            realField("r_baro_m", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometer height std"), &P::r_baro_m, 1e-6,
+                 100.0, "m", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometer: R of the height, std"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometer"), &baroOn),
+            realField("motion_level_max_m", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Level walking height change"),
+                 &P::motion_level_max_m, 0.0, 5.0, "m",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "Motion class: smaller height change per step is level walking"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometer")),
+            realField("motion_elevator_var_pa2",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Elevator pressure variance"),
+                 &P::motion_elevator_var_pa2, 0.0, 1e6, "Pa^2",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "Motion class: pressure variance between steps above this is an elevator"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Barometer")),
+        };
+    };
+    return {"baro", "barometer", "use_baro", methods::switchIsOn<&Parameters::use_baro>, methods::setSwitch<&Parameters::use_baro>,
+            methods::makeWhenOn<BarometricHeightSource, &Parameters::use_baro>, fields, 60};
 }
 
 }  // namespace footpath

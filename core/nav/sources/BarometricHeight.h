@@ -1,5 +1,6 @@
 #pragma once
 
+#include "methods/MethodRegistry.h"
 #include "nav/MeasurementSources.h"
 
 #include <vector>
@@ -68,5 +69,8 @@ private:
     double referencePressure_pa_ = 0.0;
     double referenceZ_m_ = 0.0;
 };
+
+/// Its entry in the method registry (core/methods/MethodRegistry.h).
+SourceMethod barometricHeightMethod();
 
 }  // namespace footpath

@@ -1,6 +1,9 @@
 #include "nav/sources/HeadingDriftReduction.h"
 
+#include "methods/SourceMethodSupport.h"
 #include "nav/ErrorStateEkf.h"
+
+#include <QtGlobal>
 
 #include <cmath>
 
@@ -49,6 +52,45 @@ void HeadingDriftReductionSource::apply(ErrorStateEkf& ekf, const SourceContext&
     // Keep what the lag can still reach, plus the stance just before it.
     while (history_.size() > 2 && now.time_s - history_[1].time_s >= params_.hdr_lag_s)
         history_.pop_front();
+}
+
+
+// ---- registry entry (core/methods/SourceMethods.cpp lists it) ----------------------------
+
+namespace {
+
+const FieldCondition hdrOn{"hdr", methods::switchIsOn<&Parameters::use_hdr>,
+    QT_TRANSLATE_NOOP("footpath::ParameterPanel", "Not used: HDR is off (use_hdr).")};
+
+}  // namespace
+
+SourceMethod headingDriftReductionMethod()
+{
+    const auto fields = [] {
+        using P = Parameters;
+        return std::vector<ParameterField>{
+            flagField("use_hdr", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Heuristic drift reduction (HDR)"),
+                 &P::use_hdr,
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "Heuristic drift reduction: heading held on straight walks"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Measurements")),
+            realField("hdr_lag_s", QT_TRANSLATE_NOOP("footpath::ParameterFields", "HDR heading lag"), &P::hdr_lag_s, 0.05,
+                 10.0, "s",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "HDR: heading compared with the heading this long ago"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "HDR"), &hdrOn),
+            realField("hdr_threshold_rad", QT_TRANSLATE_NOOP("footpath::ParameterFields", "HDR turn threshold"),
+                 &P::hdr_threshold_rad, 0.0, 1.0, "rad",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "HDR: a smaller heading change is drift, a larger one a turn"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "HDR"), &hdrOn),
+            realField("r_hdr_rad", QT_TRANSLATE_NOOP("footpath::ParameterFields", "HDR measurement std"), &P::r_hdr_rad,
+                 1e-6, 1.0, "rad",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "HDR: R of the heading measurement, std"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "HDR"), &hdrOn),
+        };
+    };
+    return {"hdr", "HDR", "use_hdr", methods::switchIsOn<&Parameters::use_hdr>, methods::setSwitch<&Parameters::use_hdr>,
+            methods::makeWhenOn<HeadingDriftReductionSource, &Parameters::use_hdr>, fields, 30};
 }
 
 }  // namespace footpath

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "methods/MethodRegistry.h"
 #include "nav/MeasurementSources.h"
 #include "nav/sources/SourceSupport.h"
 
@@ -45,5 +46,8 @@ private:
     bool stretchOpen_ = false;
     StanceHeading stretchStart_{0.0, 0.0, 0.0};
 };
+
+/// Its entry in the method registry (core/methods/MethodRegistry.h).
+SourceMethod headingDriftReductionMethod();
 
 }  // namespace footpath

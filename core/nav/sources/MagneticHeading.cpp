@@ -1,8 +1,11 @@
 #include "nav/sources/MagneticHeading.h"
 
+#include "methods/SourceMethodSupport.h"
 #include "nav/Alignment.h"
 #include "nav/Attitude.h"
 #include "nav/ErrorStateEkf.h"
+
+#include <QtGlobal>
 
 #include <cmath>
 #include <cstdio>
@@ -84,6 +87,46 @@ void MagneticHeadingSource::finish(double endTime_s, std::vector<MethodNote>& no
         return;
     }
     notes_.finish(endTime_s, notes);
+}
+
+
+// ---- registry entry (core/methods/SourceMethods.cpp lists it) ----------------------------
+
+namespace {
+
+const FieldCondition magOn{"mag", methods::switchIsOn<&Parameters::use_mag_heading>,
+    QT_TRANSLATE_NOOP("footpath::ParameterPanel", "Not used: the magnetometer heading update is off (use_mag_heading).")};
+
+}  // namespace
+
+SourceMethod magneticHeadingMethod()
+{
+    const auto fields = [] {
+        using P = Parameters;
+        return std::vector<ParameterField>{
+            flagField("use_mag_heading", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Magnetometer heading"),
+                 &P::use_mag_heading,
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "Magnetometer heading during stance, skipped near steel"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Measurements")),
+            realField("r_mag_rad", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Magnetometer heading std"), &P::r_mag_rad,
+                 1e-6, 3.0, "rad",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Magnetometer: R of the heading, std"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Magnetometer"), &magOn),
+            realField("mag_norm_tolerance", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Field strength tolerance"),
+                 &P::mag_norm_tolerance, 0.0, 1.0, "x",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "Magnetometer: |m| within this fraction of its value at alignment"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Magnetometer"), &magOn),
+            realField("mag_dip_tolerance_rad", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Dip angle tolerance"),
+                 &P::mag_dip_tolerance_rad, 0.0, 1.6, "rad",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "Magnetometer: dip within this of its value at alignment"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Magnetometer"), &magOn),
+        };
+    };
+    return {"mag", "magnetometer", "use_mag_heading", methods::switchIsOn<&Parameters::use_mag_heading>, methods::setSwitch<&Parameters::use_mag_heading>,
+            methods::makeWhenOn<MagneticHeadingSource, &Parameters::use_mag_heading>, fields, 40};
 }
 
 }  // namespace footpath

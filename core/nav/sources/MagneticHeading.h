@@ -1,5 +1,6 @@
 #pragma once
 
+#include "methods/MethodRegistry.h"
 #include "nav/MeasurementSources.h"
 #include "nav/sources/SourceSupport.h"
 
@@ -39,5 +40,8 @@ private:
     double referenceNorm_ = 0.0;
     double referenceDip_rad_ = 0.0;
 };
+
+/// Its entry in the method registry (core/methods/MethodRegistry.h).
+SourceMethod magneticHeadingMethod();
 
 }  // namespace footpath

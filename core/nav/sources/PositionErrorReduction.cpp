@@ -1,6 +1,9 @@
 #include "nav/sources/PositionErrorReduction.h"
 
+#include "methods/SourceMethodSupport.h"
 #include "nav/ErrorStateEkf.h"
+
+#include <QtGlobal>
 
 #include <cmath>
 #include <cstdio>
@@ -131,6 +134,62 @@ void PositionErrorReductionSource::apply(ErrorStateEkf& ekf, const SourceContext
 void PositionErrorReductionSource::finish(double endTime_s, std::vector<MethodNote>& notes)
 {
     notes_.finish(endTime_s, notes);
+}
+
+
+// ---- registry entry (core/methods/SourceMethods.cpp lists it) ----------------------------
+
+namespace {
+
+const FieldCondition iperOn{"iper", methods::switchIsOn<&Parameters::use_iper>,
+    QT_TRANSLATE_NOOP("footpath::ParameterPanel", "Not used: IPER is off (use_iper).")};
+const FieldCondition iperFixedAxis{"iper_fixed_axis", [](const Parameters& p) { return !p.iper_axis_auto; },
+                                  QT_TRANSLATE_NOOP("footpath::ParameterPanel",
+                                                    "Not used: the axis is estimated from the walk (iper_axis_auto is on)."),
+                                  &iperOn};
+
+}  // namespace
+
+SourceMethod positionErrorReductionMethod()
+{
+    const auto fields = [] {
+        using P = Parameters;
+        return std::vector<ParameterField>{
+            flagField("use_iper", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Position error reduction (IPER)"),
+                 &P::use_iper,
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "Position error reduction: walks along the building's axes, level floor ("
+                                   "assumes a rectilinear building)"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Measurements")),
+            flagField("iper_axis_auto", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Building axis from the walk"),
+                 &P::iper_axis_auto,
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "IPER: building axis from the walk's dominant directions"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER"), &iperOn),
+            realField("iper_axis_rad", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Building axis angle"),
+                 &P::iper_axis_rad, -M_PI, M_PI, "rad",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER: angle of the building's main axis from x"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER"), &iperFixedAxis),
+            realField("iper_threshold_rad", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Along-axis tolerance"),
+                 &P::iper_threshold_rad, 0.0, 0.8, "rad",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "IPER: walking within this of an axis counts as along it"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER"), &iperOn),
+            realField("iper_window_s", QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER window"), &P::iper_window_s, 0.2,
+                 30.0, "s", QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER: displacement window"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER"), &iperOn),
+            realField("r_iper_m", QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER cross-axis std"), &P::r_iper_m, 1e-6,
+                 10.0, "m",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER: R of the cross-axis displacement, std"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER"), &iperOn),
+            realField("r_iper_height_m", QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER level-floor height std"),
+                 &P::r_iper_height_m, 1e-6, 10.0, "m",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER: R of the level-floor height, std"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "IPER"), &iperOn),
+        };
+    };
+    return {"iper", "IPER", "use_iper", methods::switchIsOn<&Parameters::use_iper>, methods::setSwitch<&Parameters::use_iper>,
+            methods::makeWhenOn<PositionErrorReductionSource, &Parameters::use_iper>, fields, 50};
 }
 
 }  // namespace footpath

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "methods/MethodRegistry.h"
 #include "nav/MeasurementSources.h"
 #include "nav/sources/SourceSupport.h"
 
@@ -52,5 +53,8 @@ private:
     Stance stretchStart_{0.0, Eigen::Vector2d::Zero()};
     double stretchDirection_rad_ = 0.0;
 };
+
+/// Its entry in the method registry (core/methods/MethodRegistry.h).
+SourceMethod positionErrorReductionMethod();
 
 }  // namespace footpath

@@ -1,7 +1,10 @@
 #include "nav/sources/ZeroNavigationAcceleration.h"
 
+#include "methods/SourceMethodSupport.h"
 #include "nav/Attitude.h"
 #include "nav/ErrorStateEkf.h"
+
+#include <QtGlobal>
 
 #include <sstream>
 
@@ -98,6 +101,49 @@ void ZeroNavigationAccelerationSource::finish(double endTime_s, std::vector<Meth
     message << "not applied: no stance lasted " << params_.zuna_min_stance_s << " s with the detector statistic "
             << params_.zuna_margin_dec << " decades below its threshold (zuna_min_stance_s, zuna_margin_dec)";
     notes.push_back(MethodNote{"zuna", startTime_s_ + params_.zuna_reference_s, endTime_s, message.str()});
+}
+
+
+// ---- registry entry (core/methods/SourceMethods.cpp lists it) ----------------------------
+
+namespace {
+
+const FieldCondition zunaOn{"zuna", methods::switchIsOn<&Parameters::use_zuna>,
+    QT_TRANSLATE_NOOP("footpath::ParameterPanel", "Not used: ZUNA is off (use_zuna).")};
+
+}  // namespace
+
+SourceMethod zeroNavigationAccelerationMethod()
+{
+    const auto fields = [] {
+        using P = Parameters;
+        return std::vector<ParameterField>{
+            flagField("use_zuna", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Zero navigation acceleration (ZUNA)"),
+                 &P::use_zuna,
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "Zero navigation acceleration at mid-stance"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "Measurements")),
+            realField("zuna_reference_s", QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA reference period"),
+                 &P::zuna_reference_s, 0.1, 60.0, "s",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA: static start averaged for the reference"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA"), &zunaOn),
+            realField("zuna_min_stance_s", QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA shortest stance"),
+                 &P::zuna_min_stance_s, 0.0, 2.0, "s",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA: mid-stance needs a stance run this long"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA"), &zunaOn),
+            realField("zuna_margin_dec", QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA margin below the threshold"),
+                 &P::zuna_margin_dec, 0.0, 5.0, "decades",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                   "ZUNA: mid-stance statistic this far below the threshold"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA"), &zunaOn),
+            realField("r_zuna_mps2", QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA measurement std"), &P::r_zuna_mps2,
+                 1e-6, 10.0, "m/s^2",
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA: R of the acceleration, std"),
+                 QT_TRANSLATE_NOOP("footpath::ParameterFields", "ZUNA"), &zunaOn),
+        };
+    };
+    return {"zuna", "ZUNA", "use_zuna", methods::switchIsOn<&Parameters::use_zuna>, methods::setSwitch<&Parameters::use_zuna>,
+            methods::makeWhenOn<ZeroNavigationAccelerationSource, &Parameters::use_zuna>, fields, 20};
 }
 
 }  // namespace footpath

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "methods/MethodRegistry.h"
 #include "nav/MeasurementSources.h"
 
 #include <Eigen/Core>
@@ -45,5 +46,8 @@ private:
     double stanceStart_s_ = 0.0;
     std::size_t updates_ = 0;
 };
+
+/// Its entry in the method registry (core/methods/MethodRegistry.h).
+SourceMethod zeroNavigationAccelerationMethod();
 
 }  // namespace footpath

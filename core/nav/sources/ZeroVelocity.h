@@ -1,5 +1,6 @@
 #pragma once
 
+#include "methods/MethodRegistry.h"
 #include "nav/MeasurementSources.h"
 
 namespace footpath {
@@ -16,5 +17,10 @@ private:
     bool zupt_;
     bool zaru_;
 };
+
+/// Its entry in the method registry (core/methods/MethodRegistry.h).
+SourceMethod zeroVelocityMethod();
+/// Its entry in the method registry (core/methods/MethodRegistry.h).
+SourceMethod zeroAngularRateMethod();
 
 }  // namespace footpath
