@@ -70,6 +70,7 @@ void AnalysisSession::setRecording(std::shared_ptr<const Recording> recording, c
     info_ = info;
     path_ = path;
     result_.reset();
+    evaluation_.reset();
     timeCursor_ = recording_ && !recording_->samples.empty() ? recording_->samples.front().time_s : 0.0;
     emit recordingChanged();
     emit resultChanged();
@@ -134,15 +135,19 @@ void AnalysisSession::estimate()
         return;
     }
     runner_->run(recording_, params_);
+    runningParams_ = params_;  // the runner reports the newest run only
     if (!estimating_) {
         estimating_ = true;
         emit estimatingChanged(true);
     }
 }
 
-void AnalysisSession::onResult(const std::shared_ptr<const Result>& result)
+void AnalysisSession::onResult(const std::shared_ptr<const Result>& result,
+                               const std::shared_ptr<const ResultEvaluation>& evaluation)
 {
     result_ = result;
+    evaluation_ = evaluation;
+    resultParams_ = runningParams_;
     estimating_ = runner_->isRunning();
     emit estimatingChanged(estimating_);
     emit resultChanged();

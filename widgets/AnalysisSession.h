@@ -3,6 +3,7 @@
 #include "Recording.h"
 #include "Result.h"
 #include "io/Import.h"
+#include "metrics/ResultEvaluation.h"
 #include "nav/Parameters.h"
 
 #include <QObject>
@@ -30,6 +31,11 @@ public:
     const RecordingInfo& recordingInfo() const { return info_; }
     QString recordingPath() const { return path_; }
     std::shared_ptr<const Result> result() const { return result_; }
+    /// The figures of result(), evaluated once against the recording (null with no result).
+    std::shared_ptr<const ResultEvaluation> evaluation() const { return evaluation_; }
+    /// The parameters result() was estimated with: parameters() runs ahead of it while a newer
+    /// estimate is on its way, and a view that draws the result's threshold takes these.
+    const Parameters& resultParameters() const { return resultParams_; }
     const Parameters& parameters() const { return params_; }
     double timeCursor() const { return timeCursor_; }
     QUndoStack* undoStack() const { return undoStack_; }
@@ -57,13 +63,16 @@ private:
     void applyParameters(const Parameters& params);  ///< no undo entry; used by the undo commands
     void estimate();
     void stopEstimating();
-    void onResult(const std::shared_ptr<const Result>& result);
+    void onResult(const std::shared_ptr<const Result>& result, const std::shared_ptr<const ResultEvaluation>& evaluation);
 
     std::shared_ptr<const Recording> recording_;
     RecordingInfo info_;
     QString path_;
     Parameters params_;
     std::shared_ptr<const Result> result_;
+    std::shared_ptr<const ResultEvaluation> evaluation_;
+    Parameters resultParams_;   ///< what result_ was estimated with
+    Parameters runningParams_;  ///< what the estimate on its way was started with
     double timeCursor_ = 0.0;
     QUndoStack* undoStack_;
     PipelineRunner* runner_;

@@ -88,8 +88,10 @@ void PipelineRunner::start(std::shared_ptr<const Recording> recording, const Par
         outcome.request = request;
         outcome.cancelled = output.result.cancelled;
         outcome.error = QString::fromStdString(output.error);
-        if (output.error.empty() && !outcome.cancelled)
+        if (output.error.empty() && !outcome.cancelled) {
+            outcome.evaluation = std::make_shared<const ResultEvaluation>(evaluate(output.result, recording.get()));
             outcome.result = sharedResult(std::move(output.result), spare);
+        }
         else if (keeper)  // a cancelled or failed run's memory serves the next one
             keeper->giveBack(std::make_unique<Result>(std::move(output.result)));
         return outcome;
@@ -109,7 +111,7 @@ void PipelineRunner::onRunFinished()
     if (!outcome.error.isEmpty())
         emit failed(outcome.error);
     else if (outcome.result)
-        emit finished(outcome.result);
+        emit finished(outcome.result, outcome.evaluation);
 }
 
 }  // namespace footpath

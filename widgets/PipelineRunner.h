@@ -4,6 +4,7 @@
 
 #include "Recording.h"
 #include "Result.h"
+#include "metrics/ResultEvaluation.h"
 #include "nav/Parameters.h"
 
 #include <QFutureWatcher>
@@ -34,12 +35,15 @@ public:
     bool isRunning() const;
 
 signals:
-    void finished(std::shared_ptr<const footpath::Result> result);
+    /// The newest run's result and what the views derive from it (evaluated on the run's thread).
+    void finished(std::shared_ptr<const footpath::Result> result,
+                  std::shared_ptr<const footpath::ResultEvaluation> evaluation);
     void failed(const QString& message);
 
 private:
     struct Outcome {
         std::shared_ptr<const Result> result;
+        std::shared_ptr<const ResultEvaluation> evaluation;
         QString error;
         bool cancelled = false;
         std::uint64_t request = 0;  ///< which run() asked for it

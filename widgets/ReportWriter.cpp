@@ -243,10 +243,8 @@ void drawBars(QPainter& painter, const QRectF& target, const QVector<double>& ke
 }
 
 /// The summary panel's bins (robust range, outliers in end bars), as bar positions and heights.
-std::pair<QVector<double>, QVector<double>> histogramBars(const std::vector<double>& values, double minimumBinWidth,
-                                                          double& binWidth)
+std::pair<QVector<double>, QVector<double>> histogramBars(const Histogram& h, double minimumBinWidth, double& binWidth)
 {
-    const Histogram h = makeHistogram(values, minimumBinWidth);
     binWidth = h.binWidth > 0.0 ? h.binWidth : minimumBinWidth;
     QVector<double> centres, counts;
     if (h.below > 0) {
@@ -542,8 +540,9 @@ void drawHeightOverTime(QPainter& painter, const Result& result, const QRectF& t
     drawPlot(painter, &plot, target);
 }
 
-void drawGaitFigures(PageComposer& page, QPainter& painter, const GaitStatistics& g)
+void drawGaitFigures(PageComposer& page, QPainter& painter, const ResultEvaluation& evaluation)
 {
+    const GaitStatistics& g = evaluation.statistics;
     QVector<double> strideSteps, strides, stanceSteps, stances;
     for (std::size_t i = 0; i < g.strideLengths_m.size(); ++i) {
         strideSteps << double(i + 2);  // the stride that ends at stance phase i + 2 (the first has none)
@@ -561,8 +560,8 @@ void drawGaitFigures(PageComposer& page, QPainter& painter, const GaitStatistics
     });
     double strideWidth = 0.0, stanceWidth = 0.0;
     // Pairs, not structured bindings: C++17 does not let the lambda below capture those (clang refuses).
-    const auto strideHistogram = histogramBars(g.strideLengths_m, 0.01, strideWidth);
-    const auto stanceHistogram = histogramBars(g.stanceDurations_s, 0.01, stanceWidth);
+    const auto strideHistogram = histogramBars(evaluation.strideLengths, kStrideLengthBin_m, strideWidth);
+    const auto stanceHistogram = histogramBars(evaluation.stanceDurations, kStanceDurationBin_s, stanceWidth);
     page.figure(tr("Figure 8. Histograms of stride length (left) and stance duration (right)."), page.mm(50),
                 [&](const QRectF& r) {
                     const QRectF left(r.left(), r.top(), r.width() / 2 - page.mm(2), r.height());
@@ -598,7 +597,7 @@ void drawGaitStrideFigures(PageComposer& page, QPainter& painter, const std::vec
                 });
 }
 
-void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c, const GaitStatistics& statistics)
+void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c, const ResultEvaluation& evaluation)
 {
     const Result& result = *c.result;
     TrajectoryView2D view2D;
@@ -606,7 +605,7 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c, 
     view2D.setResult(c.result);
     view2D.setPathLabel(c.pathLabel);
     view2D.setOverlays(c.otherPaths);
-    view2D.setReference(alignReferenceToEstimate(c.recording->reference.positions_m, result.position_m));
+    view2D.setReference(evaluation.alignedReference);
     // A long walk's stances are too close at the page's scale to be marked (as on screen).
     const QString caption =
         view2D.layOutForPrinting() || result.steps.empty()
@@ -621,7 +620,7 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c, 
     view3D.setResult(c.result);
     view3D.setPathLabel(c.pathLabel);
     view3D.setOverlays(c.otherPaths);
-    view3D.setReference(alignReferenceToEstimate(c.recording->reference.positions_m, result.position_m));
+    view3D.setReference(evaluation.alignedReference);
     // drawScaled renders the figure 760 units wide at the figure's proportions, whatever its scale.
     constexpr int kFigure3Width = 760;
     const double figure3Height = page.mm(100);
@@ -654,7 +653,7 @@ void drawFigures(PageComposer& page, QPainter& painter, const ReportContent& c, 
     flags.setTimeRange(from, to);
     page.figure(detectorFigureCaption(c.parameters, from, to), page.mm(paper ? 170 : 110),
                 [&](const QRectF& r) { drawPlot(painter, flags.plot(), r); });
-    drawGaitFigures(page, painter, statistics);
+    drawGaitFigures(page, painter, evaluation);
     drawGaitStrideFigures(page, painter, result.gaitStrides);
 }
 
@@ -687,8 +686,11 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
     page.table(headerRows(content), {0.3, 0.7}, 9.0, false);
     page.heading(tr("Summary"));
     const Result& result = *content.result;
-    const GaitStatistics statistics = computeGaitStatistics(result, content.recording.get());  // once for the report
-    page.table(summaryRows(statistics, result.summary, result.mergedMovements.size()), {0.5, 0.5}, 9.0);
+    // The window's evaluation of this result when it hands one over; made once here otherwise.
+    const std::shared_ptr<const ResultEvaluation> evaluation =
+        content.evaluation ? content.evaluation
+                           : std::make_shared<const ResultEvaluation>(evaluate(result, content.recording.get()));
+    page.table(summaryRows(evaluation->statistics, result.summary, result.mergedMovements.size()), {0.5, 0.5}, 9.0);
     if (const QString motion = motionCountsSentence(*content.result); !motion.isEmpty())
         page.paragraph(MotionLanes::tr("Motion (barometer): %1.").arg(motion));
     writeGait(page, content);
@@ -698,7 +700,7 @@ QString writePdfReport(const ReportContent& content, const QString& path, QPageS
     // The heading with its first figure (at its smallest), not alone at the foot of a page.
     page.ensureRoom(page.mm(12 + 0.65 * 110 + 8));
     page.heading(tr("Figures"));
-    drawFigures(page, painter, content, statistics);
+    drawFigures(page, painter, content, *evaluation);
     // The values' columns as wide as a number of six digits in bold ("0.000958747" wrapped after
     // its point at 0.12 of the page).
     const QList<QStringList> parameters = parameterRows(content.parameters);

@@ -5,6 +5,7 @@
 #include "Result.h"
 #include "gait/BilateralGait.h"
 #include "io/Import.h"
+#include "metrics/ResultEvaluation.h"
 #include "nav/MethodSets.h"
 #include "nav/Parameters.h"
 
@@ -23,6 +24,8 @@ struct ReportContent {
     RecordingInfo info;
     std::shared_ptr<const Recording> recording;
     std::shared_ptr<const Result> result;
+    /// result's figures as the window evaluated them; null: the report evaluates them itself.
+    std::shared_ptr<const ResultEvaluation> evaluation;
     Parameters parameters;
     QString parameterSource = QStringLiteral("defaults");  ///< "defaults" or the preset's path
     QString device;                                      ///< sensor/device when known

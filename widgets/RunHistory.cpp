@@ -15,21 +15,23 @@
 
 namespace footpath {
 
-RunFigures runFigures(const Result& result, const Recording* recording)
+RunFigures runFigures(const Result& result, const ResultEvaluation& evaluation)
 {
     RunFigures figures;
     figures.pathLength_m = result.summary.pathLength_m;
     figures.endToStart_m = result.summary.endToStart_m;
     figures.steps = static_cast<int>(result.summary.steps);
-    if (!recording)
-        return figures;
-    const Reference& reference = recording->reference;
-    // Only a result of this recording is compared sample by sample with its reference.
-    if (!result.position_m.empty() && reference.positions_m.size() == result.position_m.size())
-        figures.armse2d_m = computeArmse(result.position_m, reference.positions_m).armse2d_m;
-    if (reference.knownLength_m > 0.0)
-        figures.referenceLength_m = reference.knownLength_m;
+    const GaitStatistics& statistics = evaluation.statistics;
+    if (statistics.armse)
+        figures.armse2d_m = statistics.armse->armse2d_m;
+    if (statistics.distanceError)
+        figures.referenceLength_m = statistics.distanceError->reference_m;
     return figures;
+}
+
+RunFigures runFigures(const Result& result, const Recording* recording)
+{
+    return runFigures(result, evaluate(result, recording));
 }
 
 Judgement judgeLowerIsBetter(double before, double after)

@@ -2,6 +2,7 @@
 
 #include "Recording.h"
 #include "Result.h"
+#include "metrics/ResultEvaluation.h"
 #include "nav/Parameters.h"
 
 #include <QAbstractTableModel>
@@ -28,6 +29,8 @@ struct RunFigures {
     double referenceLength_m = kNone;  ///< the walk's known length, when the recording states it
     int steps = 0;
 };
+RunFigures runFigures(const Result& result, const ResultEvaluation& evaluation);
+/// The same, evaluating result against recording (null: no reference) first.
 RunFigures runFigures(const Result& result, const Recording* recording);
 
 /// Whether a change of a figure is an improvement: lower end-to-start and ARMSE are better, a path

@@ -39,8 +39,6 @@ namespace footpath {
 
 namespace {
 
-constexpr double kStrideLengthBin_m = 0.01;  ///< finer bins would only show estimation noise
-constexpr double kStanceDurationBin_s = 0.01;
 
 /// Decimals that show every multiple of step exactly (0.25 -> 2, 0.5 -> 1, 2 -> 0).
 int decimalsFor(double step)
@@ -418,18 +416,22 @@ QChartView* SummaryPanel::createChartView(const QString& objectName)
 void SummaryPanel::setRecording(std::shared_ptr<const Recording> recording)
 {
     recordedRecording_ = std::move(recording);
+    recordedEvaluation_.reset();  // evaluated against the recording before
     if (live_)
         return;  // kept for showRecorded()
     recording_ = recordedRecording_;
+    evaluation_.reset();
     refresh();
 }
 
-void SummaryPanel::setResult(std::shared_ptr<const Result> result)
+void SummaryPanel::setResult(std::shared_ptr<const Result> result, std::shared_ptr<const ResultEvaluation> evaluation)
 {
     recordedResult_ = std::move(result);
+    recordedEvaluation_ = std::move(evaluation);
     if (live_)
         return;
     result_ = recordedResult_;
+    evaluation_ = recordedEvaluation_;
     refresh();
 }
 
@@ -437,6 +439,7 @@ void SummaryPanel::showLive(std::shared_ptr<const Result> live)
 {
     live_ = true;
     result_ = std::move(live);
+    evaluation_.reset();
     recording_.reset();  // the recorded walk's reference is not this session's
     liveSource_->show();
     changeGroup_->hide();
@@ -449,6 +452,7 @@ void SummaryPanel::showRecorded()
         return;
     live_ = false;
     result_ = recordedResult_;
+    evaluation_ = recordedEvaluation_;
     recording_ = recordedRecording_;
     liveSource_->hide();
     changeGroup_->setVisible(changeShown_);
@@ -459,16 +463,23 @@ void SummaryPanel::clear()
 {
     recordedRecording_.reset();
     recordedResult_.reset();
+    recordedEvaluation_.reset();
     if (!live_) {
         recording_.reset();
         result_.reset();
+        evaluation_.reset();
     }
     refresh();
 }
 
 void SummaryPanel::refresh()
 {
-    statistics_ = result_ ? computeGaitStatistics(*result_, recording_.get()) : GaitStatistics();
+    // A result without its evaluation (the live estimate, a caller of setResult without one) is
+    // evaluated here, once per refresh.
+    if (result_ && !evaluation_)
+        evaluation_ = std::make_shared<const ResultEvaluation>(evaluate(*result_, recording_.get()));
+    if (!result_)
+        evaluation_.reset();
     stepModel_->setResult(result_);
     showWalkFigures();
     showGaitFigures();
@@ -583,7 +594,7 @@ QString SummaryPanel::mergedMovementsText(const std::vector<MergedMovement>& mer
 
 void SummaryPanel::showWalkFigures()
 {
-    const GaitStatistics& s = statistics_;
+    const GaitStatistics& s = statistics();
     if (!result_) {
         for (auto& [key, row] : figures_)
             row.value->setText(QStringLiteral("\u2013"));
@@ -652,7 +663,7 @@ void SummaryPanel::showBothFeetFigures()
 
 void SummaryPanel::showReferenceFigures()
 {
-    const GaitStatistics& s = statistics_;
+    const GaitStatistics& s = statistics();
     const auto showRow = [this](const QString& key, bool visible) {
         figures_.at(key).name->setVisible(visible);
         figures_.at(key).value->setVisible(visible);
@@ -765,15 +776,15 @@ void setDataRange(QValueAxis* axis, const std::vector<double>& values)
 void SummaryPanel::showCharts()
 {
     chartsStale_ = false;
-    const GaitStatistics& s = statistics_;
+    const GaitStatistics& s = statistics();
     // Strides start at the second stance (step 2 in the table); stance durations at the first.
     showPerStepChart(strideLengthChart_, tr("Stride length per step"), tr("Stride length (m)"), 2, s.strideLengths_m);
     showPerStepChart(stanceDurationChart_, tr("Stance duration per step"), tr("Stance duration (s)"), 1,
                      s.stanceDurations_s);
     showHistogram(strideLengthHistogram_, tr("Stride length"), tr("Stride length (m)"),
-                  makeHistogram(s.strideLengths_m, kStrideLengthBin_m));
+                  evaluation_ ? evaluation_->strideLengths : Histogram());
     showHistogram(stanceDurationHistogram_, tr("Stance duration"), tr("Stance duration (s)"),
-                  makeHistogram(s.stanceDurations_s, kStanceDurationBin_s));
+                  evaluation_ ? evaluation_->stanceDurations : Histogram());
     std::vector<double> stancePct, clearance_m;
     static const std::vector<GaitStride> none;  // both branches lvalues: the strides are not copied
     for (const GaitStride& stride : result_ ? result_->gaitStrides : none) {

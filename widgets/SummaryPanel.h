@@ -6,6 +6,7 @@
 #include "gait/BilateralGait.h"
 #include "metrics/Evaluation.h"
 #include "metrics/GaitStatistics.h"
+#include "metrics/ResultEvaluation.h"
 
 #include <QString>
 #include <QWidget>
@@ -44,7 +45,9 @@ public:
     void setRecording(std::shared_ptr<const Recording> recording);
     /// The recorded walk's result; null shows an empty panel. While the live session is shown it
     /// is kept for showRecorded().
-    void setResult(std::shared_ptr<const Result> result);
+    /// evaluation: the result's figures evaluated against the recording (the pipeline runner's);
+    /// null evaluates them here.
+    void setResult(std::shared_ptr<const Result> result, std::shared_ptr<const ResultEvaluation> evaluation = nullptr);
     /// Shows a live session's estimate so far (with its plausibility warnings) in place of the
     /// recorded walk, under a line saying so; call again as the estimate grows.
     void showLive(std::shared_ptr<const Result> live);
@@ -57,7 +60,7 @@ public:
     /// or "gait". Returns false for any other name.
     bool showTab(const QString& name);
 
-    const GaitStatistics& statistics() const { return statistics_; }
+    const GaitStatistics& statistics() const { return evaluation_ ? evaluation_->statistics : noStatistics_; }
 
     /// Double support and left/right symmetry when both feet of the walk are open (the result
     /// shown is then the left foot's); nothing hides them.
@@ -113,7 +116,9 @@ private:
     std::shared_ptr<const Result> recordedResult_;
     bool live_ = false;
     bool changeShown_ = false;  ///< the recorded walk has a last change to show
-    GaitStatistics statistics_;
+    std::shared_ptr<const ResultEvaluation> evaluation_;  ///< of result_: made once, shared with the window
+    std::shared_ptr<const ResultEvaluation> recordedEvaluation_;
+    GaitStatistics noStatistics_;  ///< what statistics() gives with no result
 
     std::map<QString, FigureRow> figures_;  ///< by key, e.g. "armse2d"
     QLabel* liveSource_ = nullptr;  ///< "Live session: ..." while the live estimate is shown

@@ -25,7 +25,6 @@
 #include "io/NearestNames.h"
 #include "io/ResultWriters.h"
 #include "methods/MethodRegistry.h"
-#include "metrics/Evaluation.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -419,7 +418,6 @@ void MainWindow::wireSession()
             [this](const QString& message) { showWalkStatus(tr("Estimate failed: %1").arg(message), true); });
     connect(session_, &AnalysisSession::parametersChanged, this, [this] {
         parameters_->setParameters(session_->parameters());
-        flags_->setParameters(session_->parameters());
         live_->setParameters(session_->parameters());  // tuning works on the live estimate too
     });
     connect(parameters_, &ParameterPanel::parameterEdited, session_, &AnalysisSession::setParameter);
@@ -462,6 +460,7 @@ ReportContent MainWindow::reportContent() const
     content.info = session_->recordingInfo();
     content.recording = session_->recording();
     content.result = session_->result();
+    content.evaluation = session_->evaluation();
     content.parameters = session_->parameters();
     content.parameterSource = content.parameters == Parameters() ? tr("defaults") : tr("adjusted in the window");
     if (comparisonDock_ && !comparisonDock_->isHidden()) {
@@ -771,10 +770,13 @@ void MainWindow::onLoadFailed(const QString& path, const QString& message, const
 void MainWindow::showResult()
 {
     const std::shared_ptr<const Result> result = session_->result();
+    const std::shared_ptr<const ResultEvaluation> evaluation = session_->evaluation();
     signalPlots_->setResult(result);
+    // The threshold drawn is the one this result was detected with, not a newer one on its way.
+    flags_->setParameters(session_->resultParameters());
     flags_->setResult(result);
     statePlots_->setResult(result);
-    summary_->setResult(result);
+    summary_->setResult(result, evaluation);
     if (!result) {
         trajectory2D_->clear();
         trajectory3D_->clear();
@@ -784,23 +786,20 @@ void MainWindow::showResult()
     trajectory2D_->setResult(result);
     trajectory3D_->setResult(result);
     // The reference is drawn in the estimate's frame, aligned as ARMSE aligns it.
-    const std::vector<Eigen::Vector3d> reference =
-        session_->recording() ? alignReferenceToEstimate(session_->recording()->reference.positions_m, result->position_m)
-                              : std::vector<Eigen::Vector3d>();
-    trajectory2D_->setReference(reference);
-    trajectory3D_->setReference(reference);
-    recordRun(result);
+    trajectory2D_->setReference(evaluation->alignedReference);
+    trajectory3D_->setReference(evaluation->alignedReference);
+    recordRun(result, *evaluation);
     showResultStatus(*result);
     emit resultShown();
 }
 
-void MainWindow::recordRun(const std::shared_ptr<const Result>& result)
+void MainWindow::recordRun(const std::shared_ptr<const Result>& result, const ResultEvaluation& evaluation)
 {
     // The undo step that made this result: the results of one dragged slider update one run.
     const QUndoStack* stack = session_->undoStack();
     const int index = stack->index();
     const void* gesture = index > 0 ? stack->command(index - 1) : nullptr;
-    history_->record(result, session_->parameters(), runFigures(*result, session_->recording().get()), gesture, index);
+    history_->record(result, session_->resultParameters(), runFigures(*result, evaluation), gesture, index);
 }
 
 void MainWindow::showGhost()

@@ -106,7 +106,7 @@ private:
     void createHelpMenu();
     /// Adds the result on screen to the history and shows the run before the last change as the
     /// ghost path and the summary's before -> after.
-    void recordRun(const std::shared_ptr<const Result>& result);
+    void recordRun(const std::shared_ptr<const Result>& result, const ResultEvaluation& evaluation);
     void showGhost();
     void wireSession();
     void wireViews();
