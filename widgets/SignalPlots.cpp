@@ -1,5 +1,6 @@
 #include "SignalPlots.h"
 
+#include "AnalysisSession.h"
 #include "DecimatedGraph.h"
 #include "DeferredReplot.h"
 #include "PlotInteraction.h"
@@ -521,6 +522,16 @@ void SignalPlots::keyPressEvent(QKeyEvent* event)
 void SignalPlots::renderTo(QPainter& painter, const QRect& target)
 {
     renderPlotTo(plot_, painter, target);
+}
+
+void SignalPlots::showRecording(const AnalysisSession& session)
+{
+    setRecording(session.recording());
+}
+
+void SignalPlots::showEstimate(const AnalysisSession& session)
+{
+    setResult(session.result());
 }
 
 }  // namespace footpath

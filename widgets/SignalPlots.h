@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SessionView.h"
 #include "Recording.h"
 #include "Result.h"
 
@@ -41,7 +42,7 @@ class WarningOverlay;
 /// Home shows the whole recording; a click places the time cursor and emits timeCursorMoved.
 /// The widget knows nothing of the session: MainWindow wires the setters and signals. Setters
 /// schedule one replot for the next event-loop pass, so several in a row draw once.
-class SignalPlots : public QWidget {
+class SignalPlots : public QWidget, public SessionView {
     Q_OBJECT
 public:
     enum class Channel { AccX, AccY, AccZ, AccNorm, GyrX, GyrY, GyrZ, MagX, MagY, MagZ, Pressure, Height };
@@ -55,6 +56,9 @@ public:
 
     explicit SignalPlots(QWidget* parent = nullptr);
     ~SignalPlots() override;
+    void showRecording(const AnalysisSession& session) override;
+    void showEstimate(const AnalysisSession& session) override;
+    void showTimeCursor(double time_s) override { setTimeCursor(time_s); }
 
     /// Plots every sample; the previous result's shading is dropped (it belonged to the old recording).
     void setRecording(std::shared_ptr<const Recording> recording);

@@ -1,5 +1,6 @@
 #include "StanceFlagsPlot.h"
 
+#include "AnalysisSession.h"
 #include "DecimatedGraph.h"
 #include "DeferredReplot.h"
 #include "MotionLanes.h"
@@ -786,6 +787,18 @@ void StanceFlagsPlot::renderTo(QPainter& painter, const QRect& target)
 {
     ensureCurvesPlotted();
     renderPlotTo(plot_, painter, target);
+}
+
+void StanceFlagsPlot::showRecording(const AnalysisSession& session)
+{
+    setRecording(session.recording());
+}
+
+void StanceFlagsPlot::showEstimate(const AnalysisSession& session)
+{
+    // The threshold drawn is the one this result was detected with, not a newer one on its way.
+    setParameters(session.resultParameters());
+    setResult(session.result());
 }
 
 }  // namespace footpath

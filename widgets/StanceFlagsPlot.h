@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SessionView.h"
 #include "Recording.h"
 #include "Result.h"
 #include "nav/Parameters.h"
@@ -49,7 +50,7 @@ class WarningOverlay;
 /// Navigation is the same as in SignalPlots (wheel/drag on time, +/-, Left/Right, Home, click for
 /// the cursor); setTimeRange/timeRangeChanged let MainWindow link the two time axes. Setters
 /// schedule one replot for the next event-loop pass, so several in a row draw once.
-class StanceFlagsPlot : public QWidget {
+class StanceFlagsPlot : public QWidget, public SessionView {
     Q_OBJECT
 public:
     enum class Lane { C1, C2, C3, C, Stance };  ///< top to bottom
@@ -64,6 +65,9 @@ public:
 
     explicit StanceFlagsPlot(QWidget* parent = nullptr);
     ~StanceFlagsPlot() override;
+    void showRecording(const AnalysisSession& session) override;
+    void showEstimate(const AnalysisSession& session) override;
+    void showTimeCursor(double time_s) override { setTimeCursor(time_s); }
 
     /// Plots the detector inputs (copied: the recording is not kept); the lanes are cleared, since
     /// they belonged to the old recording.

@@ -1,5 +1,6 @@
 #include "StatePlots.h"
 
+#include "AnalysisSession.h"
 #include "DecimatedGraph.h"
 #include "DeferredReplot.h"
 #include "PlotInteraction.h"
@@ -548,6 +549,11 @@ void StatePlots::renderTo(QPainter& painter, const QRect& target)
 {
     ensureRowsPlotted();
     renderPlotTo(plot_, painter, target);
+}
+
+void StatePlots::showEstimate(const AnalysisSession& session)
+{
+    setResult(session.result());
 }
 
 }  // namespace footpath

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SessionView.h"
 #include "Result.h"
 
 #include <QWidget>
@@ -37,7 +38,7 @@ class TimeBands;
 /// Navigation as in SignalPlots (wheel/drag on time, +/-, Left/Right, Home, click for the cursor),
 /// with setTimeRange/timeRangeChanged for MainWindow to link it to the other time plots; hover
 /// readout, marker, Y zoom and export come from PlotInteraction.
-class StatePlots : public QWidget {
+class StatePlots : public QWidget, public SessionView {
     Q_OBJECT
 public:
     enum class Row { Attitude, Velocity, Height, GyroBias, AccBias };
@@ -47,6 +48,8 @@ public:
 
     explicit StatePlots(QWidget* parent = nullptr);
     ~StatePlots() override;
+    void showEstimate(const AnalysisSession& session) override;
+    void showTimeCursor(double time_s) override { setTimeCursor(time_s); }
 
     /// Plots the result's states; nullptr empties the rows.
     void setResult(std::shared_ptr<const Result> result);

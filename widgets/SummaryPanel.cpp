@@ -1,5 +1,6 @@
 #include "SummaryPanel.h"
 
+#include "AnalysisSession.h"
 #include "StepTableModel.h"
 
 #include "MotionLanes.h"
@@ -904,6 +905,16 @@ bool SummaryPanel::eventFilter(QObject* watched, QEvent* event)
     if (event->type() == QEvent::Resize && (watched == strideLengthHistogram_ || watched == stanceDurationHistogram_))
         labelHistogramEdges(static_cast<QChartView*>(watched));
     return QWidget::eventFilter(watched, event);
+}
+
+void SummaryPanel::showRecording(const AnalysisSession& session)
+{
+    setRecording(session.recording());
+}
+
+void SummaryPanel::showEstimate(const AnalysisSession& session)
+{
+    setResult(session.result(), session.evaluation());
 }
 
 }  // namespace footpath

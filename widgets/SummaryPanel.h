@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SessionView.h"
 #include "Recording.h"
 #include "Result.h"
 #include "RunHistory.h"
@@ -35,11 +36,13 @@ class StepTableModel;
 /// The result's plausibility warnings head the figures (each with its time span, a link that asks
 /// for the time cursor there), and the steps whose stride overlaps a warning's span are marked in
 /// the table. The panel knows nothing of the session: MainWindow wires timeCursorRequested.
-class SummaryPanel : public QWidget {
+class SummaryPanel : public QWidget, public SessionView {
     Q_OBJECT
 public:
     explicit SummaryPanel(QWidget* parent = nullptr);
     ~SummaryPanel() override;
+    void showRecording(const AnalysisSession& session) override;
+    void showEstimate(const AnalysisSession& session) override;
 
     /// The recording whose reference the figures are evaluated against; kept until replaced.
     void setRecording(std::shared_ptr<const Recording> recording);

@@ -1,5 +1,6 @@
 #include "TrajectoryView2D.h"
 
+#include "AnalysisSession.h"
 #include "DeferredReplot.h"
 #include "MotionLanes.h"
 #include "PixelCurve.h"
@@ -801,6 +802,17 @@ bool TrajectoryView2D::nearestPathSampleToPixel(const QPointF& pixel, std::size_
     // Equal scales: one tolerance in metres holds in both directions.
     const double metresPerPixel = plot_->xAxis->range().size() / plot_->axisRect()->width();
     return std::sqrt(bestSquared) <= kClickTolerance_px * metresPerPixel;
+}
+
+void TrajectoryView2D::showEstimate(const AnalysisSession& session)
+{
+    if (!session.result()) {
+        clear();
+        return;
+    }
+    setResult(session.result());
+    // The reference is drawn in the estimate's frame, aligned as ARMSE aligns it.
+    setReference(session.evaluation()->alignedReference);
 }
 
 }  // namespace footpath

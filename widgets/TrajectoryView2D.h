@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SessionView.h"
 #include "PathOverlay.h"
 #include "Result.h"
 
@@ -37,7 +38,7 @@ std::size_t nearestSampleAtTime(const std::vector<double>& times_s, double time_
 /// colour scale), one dot per stance, start and end marked, a time cursor, an optional reference
 /// overlay, equal scales on both axes so a rectangle looks like one. Drawn by QCustomPlot without
 /// OpenGL. Plain setters and signals: MainWindow wires it to the session.
-class TrajectoryView2D : public QWidget {
+class TrajectoryView2D : public QWidget, public SessionView {
     Q_OBJECT
 public:
     /// Overlays up to this many are keyed in the main key below the plot, more in a box over it.
@@ -47,6 +48,8 @@ public:
     Q_ENUM(Colouring)
 
     explicit TrajectoryView2D(QWidget* parent = nullptr);
+    void showEstimate(const AnalysisSession& session) override;
+    void showTimeCursor(double time_s) override { setTimeCursor(time_s); }
 
     void setResult(std::shared_ptr<const Result> result);
     /// For a path that grows (live input): refits the view unless the user has panned or zoomed

@@ -422,6 +422,10 @@ void MainWindow::wireSession()
     });
     connect(parameters_, &ParameterPanel::parameterEdited, session_, &AnalysisSession::setParameter);
     // Runs of another recording are not comparable: the history and the ghost start afresh.
+    connect(session_, &AnalysisSession::recordingChanged, this, [this] {
+        for (SessionView* view : sessionViews())
+            view->showRecording(*session_);
+    });
     connect(session_, &AnalysisSession::recordingChanged, history_, &RunHistory::clear);
     connect(history_, &RunHistory::currentChanged, this, &MainWindow::showGhost);
     connect(historyPanel_, &RunHistoryPanel::runChosen, this, [this](const Parameters& params, int number) {
@@ -440,10 +444,8 @@ void MainWindow::wireViews()
     connect(trajectory2D_, &TrajectoryView2D::timeCursorMoved, session_, &AnalysisSession::setTimeCursor);
     connect(summary_, &SummaryPanel::timeCursorRequested, this, &MainWindow::showMoment);
     connect(session_, &AnalysisSession::timeCursorChanged, this, [this](double t) {
-        signalPlots_->setTimeCursor(t);
-        flags_->setTimeCursor(t);
-        statePlots_->setTimeCursor(t);
-        trajectory2D_->setTimeCursor(t);
+        for (SessionView* view : sessionViews())
+            view->showTimeCursor(t);
         trajectory3D_->setTimeCursor(t);
     });
     // The signal and detector plots share their time axis.
@@ -745,9 +747,6 @@ void MainWindow::onLoaded(const QString& path, const std::shared_ptr<const Impor
     setWindowTitle(otherFoot_->isActive() ? tr("Footpath - %1 + %2")
                                                 .arg(QFileInfo(path).fileName(), QFileInfo(otherFoot_->path()).fileName())
                                           : tr("Footpath - %1").arg(QFileInfo(path).fileName()));
-    signalPlots_->setRecording(recording);
-    flags_->setRecording(recording);
-    summary_->setRecording(recording);
     session_->setRecording(recording, result->info, path);
 }
 
@@ -767,28 +766,24 @@ void MainWindow::onLoadFailed(const QString& path, const QString& message, const
         openRecording(path, dialog.options());
 }
 
+std::vector<SessionView*> MainWindow::sessionViews() const
+{
+    return {signalPlots_, flags_, statePlots_, summary_, trajectory2D_};
+}
+
 void MainWindow::showResult()
 {
+    for (SessionView* view : sessionViews())
+        view->showEstimate(*session_);
     const std::shared_ptr<const Result> result = session_->result();
-    const std::shared_ptr<const ResultEvaluation> evaluation = session_->evaluation();
-    signalPlots_->setResult(result);
-    // The threshold drawn is the one this result was detected with, not a newer one on its way.
-    flags_->setParameters(session_->resultParameters());
-    flags_->setResult(result);
-    statePlots_->setResult(result);
-    summary_->setResult(result, evaluation);
     if (!result) {
-        trajectory2D_->clear();
         trajectory3D_->clear();
         ghost_.reset();  // the 3D view dropped its ghost: the next one is handed over again
         return;
     }
-    trajectory2D_->setResult(result);
     trajectory3D_->setResult(result);
-    // The reference is drawn in the estimate's frame, aligned as ARMSE aligns it.
-    trajectory2D_->setReference(evaluation->alignedReference);
-    trajectory3D_->setReference(evaluation->alignedReference);
-    recordRun(result, *evaluation);
+    trajectory3D_->setReference(session_->evaluation()->alignedReference);
+    recordRun(result, *session_->evaluation());
     showResultStatus(*result);
     emit resultShown();
 }

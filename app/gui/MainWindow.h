@@ -27,6 +27,7 @@ class RecordedInputPanel;
 class RecordingLoader;
 class RunHistory;
 class RunHistoryPanel;
+class SessionView;
 class SignalPlots;
 class StanceFlagsPlot;
 class StatePlots;
@@ -106,6 +107,8 @@ private:
     void createHelpMenu();
     /// Adds the result on screen to the history and shows the run before the last change as the
     /// ghost path and the summary's before -> after.
+    /// The views that follow the session: each gets every estimate and time cursor alike.
+    std::vector<SessionView*> sessionViews() const;
     void recordRun(const std::shared_ptr<const Result>& result, const ResultEvaluation& evaluation);
     void showGhost();
     void wireSession();
