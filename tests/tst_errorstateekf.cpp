@@ -1,5 +1,6 @@
 #include "DenseReferenceFilter.h"
 #include "nav/Attitude.h"
+#include "nav/ChiSquare.h"
 #include "nav/ErrorStateEkf.h"
 #include "nav/Strapdown.h"
 
@@ -296,6 +297,39 @@ private slots:
         ekf.propagate(Eigen::Vector3d(5.0, 0.0, 9.81), Eigen::Vector3d(1.0, 0.0, 0.0), 0.0);
         QCOMPARE(ekf.state().velocity_mps.norm(), 0.0);
         QCOMPARE((ekf.covariance() - before).norm(), 0.0);
+    }
+
+    void chiSquareQuantilesMatchTheTables()
+    {
+        // Values of the standard tables (and of scipy.stats.chi2.ppf).
+        QVERIFY(std::abs(chiSquareQuantile(0.95, 1) - 3.841458820694124) < 1e-8);
+        QVERIFY(std::abs(chiSquareQuantile(0.99, 2) - 9.210340371976184) < 1e-8);
+        QVERIFY(std::abs(chiSquareQuantile(0.999, 3) - 16.26623619623813) < 1e-7);
+        QVERIFY(std::abs(chiSquareQuantile(0.5, 6) - 5.348120627447122) < 1e-8);
+        QVERIFY(std::abs(chiSquareProbability(chiSquareQuantile(0.9999, 4), 4) - 0.9999) < 1e-12);
+    }
+
+    void innovationGateRejectsWhatTheCovarianceRulesOut()
+    {
+        Parameters params;
+        params.p0_att_rad = 0.01;  // a yaw std of 0.01 rad
+        params.gate_probability = 0.99;
+        ErrorStateEkf ekf(params, Eigen::Matrix3d::Identity());
+        Eigen::MatrixXd h = Eigen::MatrixXd::Zero(1, ErrorStateEkf::kStates);
+        h(0, ErrorStateEkf::kAtt + 2) = 1.0;
+        const Eigen::VectorXd noise = Eigen::VectorXd::Constant(1, 0.01 * 0.01);
+        // S = 2e-4: a 0.05 rad innovation is 3.5 sigma (12.5 > 6.63), a 0.01 rad one 0.7 sigma.
+        const Matrix15 before = ekf.covariance();
+        QVERIFY(!ekf.updateRows(h, Eigen::VectorXd::Constant(1, 0.05), noise));
+        QCOMPARE((ekf.covariance() - before).norm(), 0.0);  // a rejected measurement changes nothing
+        QVERIFY(ekf.updateRows(h, Eigen::VectorXd::Constant(1, 0.01), noise));
+        QCOMPARE(ekf.gateCounts().tested, std::size_t(2));
+        QCOMPARE(ekf.gateCounts().rejected, std::size_t(1));
+
+        params.gate_probability = 0.0;  // no gate: everything is applied, nothing counted
+        ErrorStateEkf ungated(params, Eigen::Matrix3d::Identity());
+        QVERIFY(ungated.updateRows(h, Eigen::VectorXd::Constant(1, 0.05), noise));
+        QCOMPARE(ungated.gateCounts().tested, std::size_t(0));
     }
 };
 

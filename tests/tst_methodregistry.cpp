@@ -8,6 +8,7 @@
 #include "nav/MeasurementSources.h"
 #include "nav/MethodSets.h"
 #include "nav/Pipeline.h"
+#include "nav/sources/SourceSupport.h"
 #include "sim/WalkSimulator.h"
 
 #include <QtTest>
@@ -67,6 +68,39 @@ SourceMethod stanceCounterMethod()
             100};
 }
 
+// ---- a source that is always wrong: the innovation gate refuses it --------------------------
+
+bool wrongHeadingOn = false;
+
+/// Claims at every stance that the heading is a radian off, with a confidence no filter shares.
+class WrongHeadingSource : public MeasurementSource {
+public:
+    explicit WrongHeadingSource(const Parameters&) {}
+    const char* name() const override { return "wrongheading"; }
+    void apply(ErrorStateEkf& ekf, const SourceContext& context) override
+    {
+        if (trigger_.fires(context.flags.stance, context.sample.time_s))
+            sources::updateYaw(ekf, 1.0, 0.001);
+    }
+
+private:
+    sources::StanceTrigger trigger_{0.03};
+};
+
+SourceMethod wrongHeadingMethod()
+{
+    return {"wrongheading",
+            "wrong heading",
+            "",
+            [](const Parameters&) { return wrongHeadingOn; },
+            [](Parameters&, bool on) { wrongHeadingOn = on; },
+            [](const Parameters& params) -> std::unique_ptr<MeasurementSource> {
+                return wrongHeadingOn ? std::make_unique<WrongHeadingSource>(params) : nullptr;
+            },
+            nullptr,
+            101};
+}
+
 // ---- a format: "#trivial-imu" then rows of "t ax ay az gx gy gz" in SI units -----------------
 
 bool recognisesTrivialImu(const std::string& head, const ImportOptions&)
@@ -123,6 +157,7 @@ private slots:
     void aRegisteredSourceJoinsTheMethodSetsAndRuns();
     void aRegisteredFormatIsRecognisedAndListed();
     void theBuiltInListsComeFromTheRegistry();
+    void theInnovationGateRefusesAndSaysSo();
 
 private:
     SimulatedWalk walk_;
@@ -132,6 +167,7 @@ void TestMethodRegistry::initTestCase()
 {
     addDetectorMethod({"peak", "Peak angular rate", peakRateStatistic, false, true});
     addSourceMethod(stanceCounterMethod());
+    addSourceMethod(wrongHeadingMethod());
     addImporterMethod({"trivial-imu", "a test's example format", "*.trivial", false, false, recognisesTrivialImu,
                        readTrivialImu});
     walk_ = simulateWalk(straightLinePath(8.0), mtiClassSensor());
@@ -219,6 +255,28 @@ void TestMethodRegistry::theBuiltInListsComeFromTheRegistry()
     QCOMPARE(methodSetLabel("zupt,15state,rts"), std::string("ZUPT+15-state+RTS smoother"));
     for (const char* name : {"xsens-text", "xsens-mtb", "delimited", "pyshoe-vicon"})
         QVERIFY2(findImporter(name), name);
+}
+
+void TestMethodRegistry::theInnovationGateRefusesAndSaysSo()
+{
+    std::string error;
+    std::optional<MethodSet> set = parseMethodSet("zupt,wrongheading", Parameters(), error);
+    QVERIFY2(set, error.c_str());
+    const Result ungated = runPipeline(walk_.recording, set->params).result;
+    set->params.gate_probability = 0.999;
+    const Result gated = runPipeline(walk_.recording, set->params).result;
+    wrongHeadingOn = false;
+    const Result plain = runPipeline(walk_.recording, Parameters()).result;
+
+    const auto gateNote = std::find_if(gated.methodNotes.begin(), gated.methodNotes.end(), [](const MethodNote& n) {
+        return n.method == "wrongheading" && n.message.find("innovation gate") != std::string::npos;
+    });
+    QVERIFY(gateNote != gated.methodNotes.end());
+    QVERIFY2(gateNote->message.find(" of ") != std::string::npos, gateNote->message.c_str());
+    // Refused, the wrong heading leaves the path as it was; let through, it turns the path.
+    const Eigen::Vector3d end = plain.position_m.back();
+    QVERIFY((gated.position_m.back() - end).norm() < 0.05);
+    QVERIFY((ungated.position_m.back() - end).norm() > 1.0);
 }
 
 QTEST_GUILESS_MAIN(TestMethodRegistry)

@@ -1,5 +1,7 @@
 #include "nav/ErrorStateEkf.h"
 
+#include "nav/ChiSquare.h"
+
 #include "nav/Attitude.h"
 #include "nav/Strapdown.h"
 
@@ -141,6 +143,9 @@ ErrorStateEkf::ErrorStateEkf(const Parameters& params, const Eigen::Matrix3d& in
     processVariancePerStep_ = blockDiagonal(params.q_att_rad, biasGate * params.q_gyro_bias_radps, params.q_pos_m,
                                             params.q_vel_mps, biasGate * params.q_acc_bias_mps2);
     biasStates_ = biasStates;
+    if (params.gate_probability > 0.0)
+        for (int rows = 1; rows <= kGatedRows; ++rows)
+            gateThresholds_.push_back(chiSquareQuantile(params.gate_probability, rows));
 }
 
 void ErrorStateEkf::propagate(const Eigen::Vector3d& acc_mps2, const Eigen::Vector3d& gyr_radps, double dt_s)
@@ -392,13 +397,16 @@ void ErrorStateEkf::updateZeroVelocityAndRate(const Eigen::Vector3d& gyr_radps)
     update<6>(blocks, innovation, variance);
 }
 
-void ErrorStateEkf::updateRows(const Eigen::MatrixXd& h, const Eigen::VectorXd& innovation,
+bool ErrorStateEkf::updateRows(const Eigen::MatrixXd& h, const Eigen::VectorXd& innovation,
                                const Eigen::VectorXd& noiseVariance)
 {
     const Eigen::MatrixXd pht = covariance_ * h.transpose();
     Eigen::MatrixXd s = h * pht;
     s.diagonal() += noiseVariance;
-    const Eigen::MatrixXd gain = s.ldlt().solve(pht.transpose()).transpose();
+    const Eigen::LDLT<Eigen::MatrixXd> sFactor = s.ldlt();
+    if (!passesGate(sFactor, innovation))
+        return false;
+    const Eigen::MatrixXd gain = sFactor.solve(pht.transpose()).transpose();
     const Vector15 dx = gain * innovation;
     // Joseph form, as in the block update.
     const Matrix15 iMinusKh = Matrix15::Identity() - gain * h;
@@ -414,6 +422,20 @@ void ErrorStateEkf::updateRows(const Eigen::MatrixXd& h, const Eigen::VectorXd& 
         appendRecord(update);
     }
     applyCorrection(dx);
+    return true;
+}
+
+bool ErrorStateEkf::passesGate(const Eigen::LDLT<Eigen::MatrixXd>& sFactor, const Eigen::VectorXd& innovation)
+{
+    const auto rows = static_cast<std::size_t>(innovation.size());
+    if (gateThresholds_.empty() || rows == 0 || rows > gateThresholds_.size())
+        return true;
+    ++gateCounts_.tested;
+    const double normalised = innovation.dot(sFactor.solve(innovation));
+    if (normalised <= gateThresholds_[rows - 1])
+        return true;
+    ++gateCounts_.rejected;
+    return false;
 }
 
 void ErrorStateEkf::applyCorrection(const Vector15& dx)

@@ -81,7 +81,16 @@ public:
     /// in the error convention above (so dx = estimate - truth gives z = H dx), H dense (rows x 15),
     /// noiseVariance one R entry per row. For the sources that see parts of blocks (a yaw row alone,
     /// one horizontal axis); dense, so meant for a few updates per stride, not every sample.
-    void updateRows(const Eigen::MatrixXd& h, const Eigen::VectorXd& innovation, const Eigen::VectorXd& noiseVariance);
+    /// With gate_probability set, a measurement whose normalised innovation y' S^-1 y exceeds that
+    /// quantile of the chi-square distribution (rows degrees of freedom) is not applied: false.
+    bool updateRows(const Eigen::MatrixXd& h, const Eigen::VectorXd& innovation, const Eigen::VectorXd& noiseVariance);
+
+    /// What the innovation gate of updateRows did since the filter started.
+    struct GateCounts {
+        std::size_t tested = 0;    ///< measurements put to the gate
+        std::size_t rejected = 0;  ///< of them, not applied
+    };
+    const GateCounts& gateCounts() const { return gateCounts_; }
 
     const NavState& state() const { return state_; }
     const Matrix15& covariance() const { return covariance_; }
@@ -125,6 +134,8 @@ private:
                       const Eigen::Matrix<double, Rows, 1>& innovation,
                       const Eigen::Matrix<double, Rows, Rows>& choleskyFactor);
     void appendRecord(const update_record::GeneralUpdate& update);
+    /// The innovation gate: whether the measurement may be applied (counted in gateCounts_).
+    bool passesGate(const Eigen::LDLT<Eigen::MatrixXd>& sFactor, const Eigen::VectorXd& innovation);
     int runningStates() const { return biasStates_ ? kStates : 9; }
     void applyCorrection(const Vector15& dx);
 
@@ -139,6 +150,10 @@ private:
     bool recordUpdates_ = false;
     update_record::Records updateRecords_;  ///< reused: grows to the most one sample had
     bool recordsObservePosition_ = false;
+    /// The gate's threshold on y' S^-1 y for 1..kGatedRows rows (index rows - 1); empty: no gate.
+    static constexpr int kGatedRows = 6;
+    std::vector<double> gateThresholds_;
+    GateCounts gateCounts_;
 };
 
 }  // namespace footpath

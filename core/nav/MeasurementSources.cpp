@@ -4,6 +4,8 @@
 #include "nav/ErrorStateEkf.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
 namespace footpath {
 
@@ -18,6 +20,8 @@ MeasurementSources::MeasurementSources(const Parameters& params)
     for (const SourceMethod* method : methods)
         if (std::unique_ptr<MeasurementSource> source = method->make(params))
             sources_.push_back(std::move(source));
+    gates_.resize(sources_.size());
+    gateProbability_ = params.gate_probability;
 }
 
 MeasurementSources::~MeasurementSources() = default;
@@ -26,14 +30,38 @@ MeasurementSources& MeasurementSources::operator=(MeasurementSources&&) noexcept
 
 void MeasurementSources::apply(ErrorStateEkf& ekf, const SourceContext& context)
 {
-    for (const std::unique_ptr<MeasurementSource>& source : sources_)
-        source->apply(ekf, context);
+    for (std::size_t i = 0; i < sources_.size(); ++i) {
+        const ErrorStateEkf::GateCounts before = ekf.gateCounts();
+        sources_[i]->apply(ekf, context);
+        gates_[i].add(before, ekf.gateCounts(), context.sample.time_s);
+    }
+}
+
+void MeasurementSources::GateTally::add(const ErrorStateEkf::GateCounts& before, const ErrorStateEkf::GateCounts& after,
+                                         double time_s)
+{
+    tested += after.tested - before.tested;
+    if (after.rejected == before.rejected)
+        return;
+    rejected += after.rejected - before.rejected;
+    if (std::isnan(firstRejected_s))
+        firstRejected_s = time_s;
+    lastRejected_s = time_s;
 }
 
 void MeasurementSources::finish(double endTime_s, std::vector<MethodNote>& notes)
 {
-    for (const std::unique_ptr<MeasurementSource>& source : sources_)
-        source->finish(endTime_s, notes);
+    for (std::size_t i = 0; i < sources_.size(); ++i) {
+        sources_[i]->finish(endTime_s, notes);
+        const GateTally& gate = gates_[i];
+        if (gate.rejected == 0)
+            continue;
+        std::ostringstream message;
+        message << gate.rejected << " of " << gate.tested
+                << " measurements rejected by the innovation gate (chi-square, p = " << gateProbability_
+                << "): the filter's own uncertainty says they cannot be right";
+        notes.push_back({sources_[i]->name(), gate.firstRejected_s, gate.lastRejected_s, message.str()});
+    }
 }
 
 }  // namespace footpath

@@ -3,15 +3,16 @@
 #include "Recording.h"
 #include "Result.h"
 #include "detect/StanceDetector.h"
+#include "nav/ErrorStateEkf.h"
 #include "nav/Parameters.h"
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace footpath {
 
-class ErrorStateEkf;
 
 /// What a measurement source sees at one sample, after the filter has propagated to it.
 struct SourceContext {
@@ -49,7 +50,18 @@ public:
     std::size_t size() const { return sources_.size(); }
 
 private:
+    /// What the innovation gate did to one source's measurements.
+    struct GateTally {
+        std::size_t tested = 0;
+        std::size_t rejected = 0;
+        double firstRejected_s = std::nan("");
+        double lastRejected_s = std::nan("");
+        void add(const ErrorStateEkf::GateCounts& before, const ErrorStateEkf::GateCounts& after, double time_s);
+    };
+
     std::vector<std::unique_ptr<MeasurementSource>> sources_;
+    std::vector<GateTally> gates_;  ///< one per source
+    double gateProbability_ = 0.0;
 };
 
 }  // namespace footpath

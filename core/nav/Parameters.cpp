@@ -222,6 +222,13 @@ std::vector<ParameterField> noiseFields()
              &P::p0_acc_bias_mps2, 0.0, 100.0, "m/s^2",
              QT_TRANSLATE_NOOP("footpath::ParameterFields", "P0 accelerometer bias, std"),
              QT_TRANSLATE_NOOP("footpath::ParameterFields", "Initial covariance"), &conditions::biasStates),
+        realField("gate_probability", QT_TRANSLATE_NOOP("footpath::ParameterFields", "Innovation gate"),
+                  &P::gate_probability, 0.0, 0.999999, "x",
+                  QT_TRANSLATE_NOOP("footpath::ParameterFields",
+                                    "Aiding measurements (HDR, IPER, ZUNA, barometer, magnetometer) less likely than "
+                                    "this under the filter's own uncertainty are rejected (chi-square test); 0: no "
+                                    "gate. ZUPT and ZARU are never gated."),
+                  QT_TRANSLATE_NOOP("footpath::ParameterFields", "Measurement noise")),
     };
 }
 

@@ -118,6 +118,11 @@ struct Parameters {
     // Measurement noise R: std
     double r_zupt_mps = 0.005;
     double r_zaru_radps = 0.1;
+    /// Innovation gate of the aiding measurements (HDR, IPER, ZUNA, barometer, magnetometer): one
+    /// whose normalised innovation y' S^-1 y lies above this quantile of its chi-square distribution
+    /// is rejected and counted in the method notes; 0 turns the gate off. ZUPT and ZARU are never
+    /// gated: they are the detector's decision, and a refused one would let the drift run.
+    double gate_probability = 0.0;
 
     // Initial covariance P0: std per 3-block
     double p0_att_rad = 0.0;
