@@ -108,9 +108,10 @@ output keeps the input order. A file that cannot be read becomes an error row, t
 
 const char* const kCompareText =
     R"(compare runs every method set of --sets on each INPUT (files or folders, as for eval): sets are
-separated by ';', methods within a set by ',', from METHODS;
-every method a set does not name is off, the other parameters come from --params
-and --set. Without --sets it runs the suggested sets:
+separated by ';', methods within a set by ',', from
+  METHODS;
+every method a set does not name is off, the other parameters come from --params and --set.
+Without --sets it runs the suggested sets:
   SUGGESTED
 It prints a table per INPUT, one row per set in the order given: end-to-start (m and % of the path),
 path length, height change, ARMSE 2D and stance F1 where the recording has the reference, steps and
