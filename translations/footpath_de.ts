@@ -540,10 +540,6 @@
         <translation>Kombination hinzufügen, z. B. zupt,hdr,mag</translation>
     </message>
     <message>
-        <source>Methods separated by commas: zupt, zaru, hdr, iper, zuna, baro, mag, feliz, 9state, 15state. Enter adds the set.</source>
-        <translation>Methoden durch Kommas getrennt: zupt, zaru, hdr, iper, zuna, baro, mag, feliz, 9state, 15state. Eingabe fügt die Kombination hinzu.</translation>
-    </message>
-    <message>
         <source>Run</source>
         <translation>Rechnen</translation>
     </message>
@@ -605,6 +601,10 @@
             <numerusform>Rechne %n Kombination...</numerusform>
             <numerusform>Rechne %n Kombinationen...</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Methods separated by commas: %1. Enter adds the set.</source>
+        <translation>Methoden durch Kommas getrennt: %1. Eingabe fügt die Kombination hinzu.</translation>
     </message>
 </context>
 <context>
@@ -1410,10 +1410,6 @@
         <translation>Trajektorie, Schritte, Zusammenfassung und Parameter gespeichert in %1</translation>
     </message>
     <message>
-        <source>Recordings (*.txt *.csv *.mtb *.TXT *.CSV);;All files (*)</source>
-        <translation>Aufzeichnungen (*.txt *.csv *.mtb *.TXT *.CSV);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <source>Reading %1...</source>
         <translation>%1 wird gelesen...</translation>
     </message>
@@ -1587,6 +1583,10 @@
     <message>
         <source>Trajectory, steps and summary of both feet, and the parameters, written to %1</source>
         <translation>Trajektorie, Schritte und Zusammenfassung beider Füße sowie die Parameter gespeichert in %1</translation>
+    </message>
+    <message>
+        <source>Recordings (%1);;All files (*)</source>
+        <translation>Aufzeichnungen (%1);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>
@@ -2336,6 +2336,14 @@
     <message>
         <source>P0 accelerometer bias, std</source>
         <translation>P0 Beschleunigungssensor-Bias, SD</translation>
+    </message>
+    <message>
+        <source>Innovation gate</source>
+        <translation>Innovationstor</translation>
+    </message>
+    <message>
+        <source>Aiding measurements (HDR, IPER, ZUNA, barometer, magnetometer) less likely than this under the filter&apos;s own uncertainty are rejected (chi-square test); 0: no gate. ZUPT and ZARU are never gated.</source>
+        <translation>Stützmessungen (HDR, IPER, ZUNA, Barometer, Magnetometer), die unter der eigenen Unsicherheit des Filters unwahrscheinlicher sind, werden verworfen (Chi-Quadrat-Test); 0: kein Tor. ZUPT und ZARU werden nie geprüft.</translation>
     </message>
 </context>
 <context>

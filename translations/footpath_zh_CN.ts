@@ -540,10 +540,6 @@
         <translation>添加组合，例如 zupt,hdr,mag</translation>
     </message>
     <message>
-        <source>Methods separated by commas: zupt, zaru, hdr, iper, zuna, baro, mag, feliz, 9state, 15state. Enter adds the set.</source>
-        <translation>用逗号分隔的方法：zupt、zaru、hdr、iper、zuna、baro、mag、feliz、9state、15state。按回车添加。</translation>
-    </message>
-    <message>
         <source>Run</source>
         <translation>运行</translation>
     </message>
@@ -604,6 +600,10 @@
         <translation>
             <numerusform>正在运行 %n 个组合...</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Methods separated by commas: %1. Enter adds the set.</source>
+        <translation>用逗号分隔的方法：%1。按回车添加。</translation>
     </message>
 </context>
 <context>
@@ -1409,10 +1409,6 @@
         <translation>轨迹、各步、摘要和参数已写入 %1</translation>
     </message>
     <message>
-        <source>Recordings (*.txt *.csv *.mtb *.TXT *.CSV);;All files (*)</source>
-        <translation>记录 (*.txt *.csv *.mtb *.TXT *.CSV);;所有文件 (*)</translation>
-    </message>
-    <message>
         <source>Reading %1...</source>
         <translation>正在读取 %1...</translation>
     </message>
@@ -1585,6 +1581,10 @@
     <message>
         <source>Trajectory, steps and summary of both feet, and the parameters, written to %1</source>
         <translation>双脚的轨迹、各步和摘要以及参数已写入 %1</translation>
+    </message>
+    <message>
+        <source>Recordings (%1);;All files (*)</source>
+        <translation>记录 (%1);;所有文件 (*)</translation>
     </message>
 </context>
 <context>
@@ -2334,6 +2334,14 @@
     <message>
         <source>P0 accelerometer bias, std</source>
         <translation>P0 加速度计零偏，标准差</translation>
+    </message>
+    <message>
+        <source>Innovation gate</source>
+        <translation>新息门限</translation>
+    </message>
+    <message>
+        <source>Aiding measurements (HDR, IPER, ZUNA, barometer, magnetometer) less likely than this under the filter&apos;s own uncertainty are rejected (chi-square test); 0: no gate. ZUPT and ZARU are never gated.</source>
+        <translation>在滤波器自身不确定性下比此概率更不可能的辅助测量（HDR、IPER、ZUNA、气压计、磁力计）将被拒绝（卡方检验）；0：不设门限。ZUPT 和 ZARU 从不检验。</translation>
     </message>
 </context>
 <context>

@@ -13,22 +13,22 @@ namespace footpath {
 
 namespace {
 
-#define FP_LABEL(text) QT_TRANSLATE_NOOP("footpath::ParameterFields", text)
-
 std::vector<DetectorMethod>& registry()
 {
+    // token, label, statistic, reads the accelerometer, reads the gyroscope
     static std::vector<DetectorMethod> detectors{
-        // token     label                                    statistic       reads acc, gyr
-        {"c1c2c3", FP_LABEL("C1/C2/C3 (Guo 2015)"), nullptr, true, true},
-        {"shoe", FP_LABEL("SHOE (GLRT)"), shoeStatistic, true, true},
-        {"ared", FP_LABEL("ARED (angular rate energy)"), aredStatistic, false, true},
-        {"amvd", FP_LABEL("AMVD (acceleration variance)"), amvdStatistic, true, false},
-        {"mbgtd", FP_LABEL("MBGTD (graph theoretic)"), mbgtdStatistic, true, false},
+        {"c1c2c3", QT_TRANSLATE_NOOP("footpath::ParameterFields", "C1/C2/C3 (Guo 2015)"), nullptr, true, true},
+        {"shoe", QT_TRANSLATE_NOOP("footpath::ParameterFields", "SHOE (GLRT)"), shoeStatistic, true, true},
+        {"ared", QT_TRANSLATE_NOOP("footpath::ParameterFields", "ARED (angular rate energy)"), aredStatistic, false,
+         true},
+        {"amvd", QT_TRANSLATE_NOOP("footpath::ParameterFields", "AMVD (acceleration variance)"), amvdStatistic, true,
+         false},
+        {"mbgtd", QT_TRANSLATE_NOOP("footpath::ParameterFields", "MBGTD (graph theoretic)"), mbgtdStatistic, true,
+         false},
     };
     return detectors;
 }
 
-#undef FP_LABEL
 
 }  // namespace
 
