@@ -238,6 +238,7 @@ void TestParameters::fieldNames_mapToTheirMembers()
         {"q_acc_bias_mps2", &Parameters::q_acc_bias_mps2},
         {"r_zupt_mps", &Parameters::r_zupt_mps},
         {"r_zaru_radps", &Parameters::r_zaru_radps},
+        {"gate_probability", &Parameters::gate_probability},
         {"p0_att_rad", &Parameters::p0_att_rad},
         {"p0_gyro_bias_radps", &Parameters::p0_gyro_bias_radps},
         {"p0_pos_m", &Parameters::p0_pos_m},

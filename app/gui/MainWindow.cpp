@@ -175,6 +175,43 @@ void MainWindow::createDocks()
     summaryDock->raise();
 }
 
+void MainWindow::createComparison()
+{
+    comparison_ = new ComparisonPanel(this);
+    comparison_->setObjectName(QStringLiteral("comparisonPanel"));
+    comparison_->setBaseParameters(session_->parameters());
+    comparisonDock_ = dock(this, tr("Method comparison"), QStringLiteral("comparisonDock"), comparison_,
+                           Qt::BottomDockWidgetArea);
+    if (auto* summaryDock = findChild<QDockWidget*>(QStringLiteral("summaryDock")))
+        tabifyDockWidget(summaryDock, comparisonDock_);
+    comparisonDock_->hide();
+    auto* compare = new QAction(tr("&Compare methods"), this);
+    compare->setObjectName(QStringLiteral("compareMethods"));
+    compare->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
+    compare->setToolTip(tr("Run several method sets on this recording and compare their paths and figures"));
+    connect(compare, &QAction::triggered, this, [this] { showComparison(); });
+    addComparisonMenu(compare);
+    // In reach next to the path it changes, without a toolbar taking height from the views.
+    auto* button = new QToolButton(trajectoryTabs_);
+    button->setObjectName(QStringLiteral("compareButton"));
+    button->setText(tr("Compare"));  // short: the tab bar beside it needs the width
+    button->setToolTip(compare->toolTip());
+    button->setAutoRaise(true);
+    connect(button, &QToolButton::clicked, compare, &QAction::trigger);
+    trajectoryTabs_->setCornerWidget(button, Qt::TopRightCorner);
+
+    connect(session_, &AnalysisSession::recordingChanged, this,
+            [this] { comparison_->setRecording(session_->recording()); });
+    connect(session_, &AnalysisSession::parametersChanged, this,
+            [this] { comparison_->setBaseParameters(session_->parameters()); });
+    connect(comparison_, &ComparisonPanel::rowsChanged, this,
+            [this] { showOverlays(); });
+    connect(comparison_, &ComparisonPanel::parametersChosen, this, [this](const Parameters& params, const QString& label) {
+        session_->setParameters(params, tr("Methods of the set %1").arg(label));
+    });
+    connect(comparisonDock_->toggleViewAction(), &QAction::toggled, this, [this] { showOverlays(); });
+}
+
 void MainWindow::showLiveTabs(bool liveInputInFront)
 {
     const bool shown = liveInputInFront || live_->sampleCount() > 0;
