@@ -1,3 +1,4 @@
+#include "OrbitCamera.h"
 #include "TrajectoryView3D.h"
 #include "nav/Pipeline.h"
 #include "sim/WalkSimulator.h"
@@ -492,6 +493,64 @@ private slots:
         view->setTimeCursor(10.0);
         (void)view->grab();
         QCOMPARE(view->sceneBuilds(), builtBefore + 1);
+    }
+
+    void orbitCameraProjectsTheOrbitCentreToTheAreaCentre()
+    {
+        const Eigen::AlignedBox3d scene(Eigen::Vector3d(-3, -1, 0), Eigen::Vector3d(5, 7, 2));
+        const QRectF area(10, 20, 400, 300);
+        OrbitCamera camera;
+        for (const bool perspective : {false, true})
+            for (const double azimuth : {-60.0, 0.0, 135.0})
+                for (const double elevation : {-90.0, 10.0, 90.0}) {
+                    camera.setPerspective(perspective);
+                    camera.setAngles(azimuth, elevation);
+                    camera.setHeightFactor(elevation > 0 ? 3.0 : 1.0);
+                    const QPointF centre = camera.transform(scene, area)(scene.center());
+                    QVERIFY2(std::hypot(centre.x() - area.center().x(), centre.y() - area.center().y()) < 1e-9,
+                             qPrintable(QString("%1, %2").arg(centre.x()).arg(centre.y())));
+                }
+    }
+
+    void orbitCameraZoomScalesDistancesAboutThePointer()
+    {
+        const Eigen::AlignedBox3d scene(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10, 4, 1));
+        const QRectF area(0, 0, 600, 400);
+        OrbitCamera camera;
+        camera.fitTo(scene, {scene.min(), scene.max()});
+        const Eigen::Vector3d a(1, 1, 0), b(9, 3, 1);
+        const auto distance = [&] {
+            const ViewTransform view = camera.transform(scene, area);
+            const QPointF d = view(b) - view(a);
+            return std::hypot(d.x(), d.y());
+        };
+        const double before = distance();
+        const QPointF pointer = camera.transform(scene, area)(b);
+        camera.zoomAbout(pointer, 2.0, area);
+        QCOMPARE(camera.zoom(), 1.2 * 1.2);
+        QVERIFY2(std::abs(distance() / before - 1.44) < 1e-9, qPrintable(QString::number(distance() / before)));
+        const QPointF stays = camera.transform(scene, area)(b) - pointer;
+        QVERIFY(std::hypot(stays.x(), stays.y()) < 1e-9);  // the point under the pointer stays there
+        camera.resetOrbit();
+        QCOMPARE(camera.zoom(), 1.0);
+    }
+
+    void orbitCameraFitsThePointsIntoAnyArea()
+    {
+        const Eigen::AlignedBox3d scene(Eigen::Vector3d(-20, 5, 0), Eigen::Vector3d(30, 12, 3));
+        const std::vector<Eigen::Vector3d> corners{scene.min(), scene.max(), {-20, 12, 3}, {30, 5, 0}};
+        OrbitCamera camera;
+        camera.fitTo(scene, corners);
+        for (const QRectF area : {QRectF(0, 0, 600, 400), QRectF(50, 50, 200, 700)}) {
+            QPolygonF projected;
+            for (const Eigen::Vector3d& p : corners)
+                projected << camera.transform(scene, area)(p);
+            const QRectF bounds = projected.boundingRect();
+            QVERIFY(area.contains(bounds));
+            QVERIFY(std::abs(bounds.center().x() - area.center().x()) < 1e-6 && std::abs(bounds.center().y() - area.center().y()) < 1e-6);
+            // The fitted points fill the area in one direction, but for the margin kept for labels.
+            QVERIFY(std::max(bounds.width() / area.width(), bounds.height() / area.height()) > 0.8);
+        }
     }
 
     void longPathRedrawsWellUnder100Milliseconds()

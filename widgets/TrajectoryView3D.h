@@ -1,20 +1,17 @@
 #pragma once
 
+#include "OrbitCamera.h"
 #include "PathOverlay.h"
+#include "PathScene3D.h"
 #include "Result.h"
 
 #include <Eigen/Core>
 
-#include <QFont>
 #include <QPoint>
-#include <QPolygonF>
 #include <QRectF>
 #include <QWidget>
 
-#include <cstddef>
-#include <functional>
 #include <memory>
-#include <utility>
 #include <vector>
 
 class QCheckBox;
@@ -22,6 +19,8 @@ class QDoubleSpinBox;
 class QPainter;
 
 namespace footpath {
+
+class Scene3DPainter;
 
 /// The foot path in 3D, drawn with QPainter only (no OpenGL: it must work offscreen and inside the
 /// PDF report): a ground grid with metre labels, x/y/z arrows, start, end and stance markers, the
@@ -49,44 +48,44 @@ public:
     /// Further paths (the comparison's method sets) drawn with the main one, with a key of their
     /// own; empty removes them. The camera refits to hold them all.
     void setOverlays(const std::vector<PathOverlay>& overlays);
-    const std::vector<PathOverlay>& overlays() const { return overlays_; }
+    const std::vector<PathOverlay>& overlays() const { return scene_.overlays(); }
     /// The main path's key entry: "Foot path", or the foot ("Left foot") when both feet are shown;
     /// empty restores the default.
     void setPathLabel(const QString& label);
-    QString pathLabel() const { return pathLabel_.isEmpty() ? tr("Foot path") : pathLabel_; }
+    QString pathLabel() const { return scene_.pathLabel(); }
     /// The path before the last parameter change, drawn faintly under the current one so the
     /// change shows; empty hides it. It does not move the camera.
     void setGhostPath(const std::vector<Eigen::Vector3d>& positions_m);
-    const std::vector<Eigen::Vector3d>& ghostPath() const { return ghost_m_; }
+    const std::vector<Eigen::Vector3d>& ghostPath() const { return scene_.ghost(); }
     /// Where the key (path, reference, markers) is drawn in a view of this size; empty when the
     /// view is too small to hold it beside the path.
     QRectF legendRect(const QSizeF& size) const;
     /// Colours each stride by the motion class of the step it leads to (Zheng et al. 2016), with a key;
     /// a result without classified steps keeps the one path colour.
     void setMotionColouring(bool on);
-    bool motionColouring() const { return motionColouring_; }
+    bool motionColouring() const { return scene_.motionColouring(); }
     /// Whether the path is drawn in the motion classes' colours now.
     bool showsMotionColours() const;
     /// Marks the path sample nearest in time; NaN hides the marker.
     void setTimeCursor(double time_s);
-    double timeCursor() const { return timeCursor_s_; }
+    double timeCursor() const { return scene_.timeCursor(); }
 
     /// Vertical scale relative to horizontal (1 = true shape), clamped to [0.1, 50].
     void setHeightExaggeration(double factor);
-    double heightExaggeration() const { return heightFactor_; }
+    double heightExaggeration() const { return camera_.heightFactor(); }
     void setProjection(Projection projection);
-    Projection projection() const { return projection_; }
+    Projection projection() const { return camera_.perspective() ? Projection::Perspective : Projection::Orthographic; }
     /// Direction the camera looks from: azimuth about z from +x, elevation above the ground
     /// (clamped to [-90, 90]); both in degrees.
     void setViewAngles(double azimuth_deg, double elevation_deg);
-    double azimuth_deg() const { return azimuth_deg_; }
-    double elevation_deg() const { return elevation_deg_; }
-    double zoom() const { return zoom_; }
+    double azimuth_deg() const { return camera_.azimuth_deg(); }
+    double elevation_deg() const { return camera_.elevation_deg(); }
+    double zoom() const { return camera_.zoom(); }
     /// The default oblique camera, fitted to the whole path at the current height exaggeration.
     void resetView();
     /// How often the scene (the thinned-out paths, their bounds, the motion classes) was built:
     /// once per change that is drawn or asked about, none for changes while nobody looks (for tests).
-    int sceneBuilds() const { return sceneBuilds_; }
+    int sceneBuilds() const { return scene_.builds(); }
 
     using QWidget::render;
     /// Draws the current view (without the toolbar) into any painter; paintEvent uses it too.
@@ -110,88 +109,26 @@ protected:
     void wheelEvent(QWheelEvent* event) override;
 
 private:
-    struct ViewTransform;
-    struct Grid;
-
     QWidget* createToolbar();
     void layOutToolbar();
     /// The paths changed: the scene is built again when next needed; refit also fits the camera then.
     void sceneChanged(bool refit);
+    void resetCamera();  ///< the default angles and zoom; ensureScene() then fits the camera
     /// Builds the scene (and fits the camera) if a change is pending; every reader of it calls this.
     void ensureScene() const;
-    void rebuildScene();
-    void resetCamera();  ///< the default angles and zoom; fitCamera() then frames the scene
-    void fitCamera();
-    ViewTransform viewTransform(const QRectF& target) const;
-    /// Where the scene is fitted in a target: above the key when the key is drawn.
-    QRectF sceneArea(const QRectF& target) const;
-    Grid groundGrid() const;
-    void drawGrid(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
-    void drawAxisArrows(QPainter& painter, const ViewTransform& view, const QRectF& target) const;
-    QPolygonF projectedPolyline(const ViewTransform& view, const std::vector<Eigen::Vector3d>& points,
-                                const std::vector<std::size_t>& indices, double floorZ_m) const;
-    static void drawInPieces(QPainter& painter, const QPolygonF& polyline);
-    void drawPaths(QPainter& painter, const ViewTransform& view, const Grid& grid) const;
-    /// The stances (the steps' positions) on screen, in walking order.
-    QPolygonF projectedStances(const ViewTransform& view) const;
-    /// Start, end, time cursor, and the stance dots given (none when they would merge).
-    void drawMarkers(QPainter& painter, const ViewTransform& view, const Grid& grid, const QPolygonF& stances) const;
-    using LegendIcon = std::function<void(QPainter&, const QPointF&)>;
-    std::vector<std::pair<QString, LegendIcon>> legendEntries(bool withStances = true) const;
-    struct LegendLayout {
-        QFont font;
-        QRectF box;  ///< empty: no room
-        double lineHeight = 0.0;
-        double columnWidth = 0.0;
-        int rows = 0;
-    };
-    /// One column in the view's font, or in a smaller one, or two columns: the first that fits.
-    static LegendLayout legendLayout(const QFont& font, const QRectF& target,
-                                     const std::vector<std::pair<QString, LegendIcon>>& entries);
-    void drawLegend(QPainter& painter, const QRectF& target, bool withStances) const;
-    void drawMotionColouredPath(QPainter& painter, const ViewTransform& view) const;
-    void drawOverlays(QPainter& painter, const ViewTransform& view) const;
-    void drawGhost(QPainter& painter, const ViewTransform& view) const;
-    void drawOverlayLegend(QPainter& painter, const QRectF& target) const;
-    void extendSceneByOverlays();
-    const std::vector<Eigen::Vector3d>& positions() const;
+    /// The scene through the camera in target, with the on-screen toolbar kept clear when target is the view.
+    Scene3DPainter scenePainter(const QRectF& target) const;
 
-    std::shared_ptr<const Result> result_;
-    std::vector<Eigen::Vector3d> reference_m_;
-    std::vector<std::size_t> drawnPathIndices_;  ///< decimated, keeping every stance change
-    std::vector<std::size_t> drawnReferenceIndices_;
-    std::vector<PathOverlay> overlays_;
-    QString pathLabel_;  ///< empty: "Foot path"
-    std::vector<std::vector<std::size_t>> drawnOverlayIndices_;
-    std::vector<Eigen::Vector3d> ghost_m_;
-    std::vector<std::size_t> drawnGhostIndices_;
-    Eigen::Vector3d sceneMin_m_ = Eigen::Vector3d::Zero();
-    Eigen::Vector3d sceneMax_m_ = Eigen::Vector3d::Zero();
-    double timeCursor_s_;
-
-    double heightFactor_ = 1.0;
-    Projection projection_ = Projection::Orthographic;
-    double azimuth_deg_;
-    double elevation_deg_;
-    double zoom_ = 1.0;
-    QPointF pan_m_;  ///< screen-plane shift of the scene, in metres at the scene centre
-    /// Half-size (metres) of the scene as the default camera sees it; the zoom is relative to it,
-    /// so orbiting does not change the scale and any target size shows the same framing.
-    QPointF fitHalfExtent_m_;
-
+    PathScene3D scene_;
+    OrbitCamera camera_;
     QPoint lastMousePosition_;
     bool cameraMovedByUser_ = false;  ///< since the last resetView(); followResult keeps the camera
-    bool sceneStale_ = false;  ///< the paths changed since the scene was built
-    bool ghostStale_ = false;
     bool fitPending_ = false;  ///< the camera is to be fitted to the scene once built
-    int sceneBuilds_ = 0;
     QWidget* toolbar_;
     std::vector<QWidget*> toolbarWidgets_;  ///< in reading order; one row or two (layOutToolbar)
     QDoubleSpinBox* heightSpin_;
     QCheckBox* perspectiveCheck_;
     QCheckBox* motionCheck_ = nullptr;
-    bool motionColouring_ = false;
-    std::vector<MotionClass> sampleMotion_;  ///< per result sample (motionOfSamples)
 };
 
 }  // namespace footpath
