@@ -100,6 +100,13 @@ struct GaitEvent {
     double time_s = 0.0;     ///< interpolated between samples
 };
 
+/// Cadence, the one definition every figure uses: steps per minute for a stride time, counting both
+/// feet (two steps per stride, the clinical convention). 0 for a stride time that is not positive.
+inline double cadenceOf(double strideTime_s)
+{
+    return strideTime_s > 0.0 ? 2.0 * 60.0 / strideTime_s : 0.0;
+}
+
 /// One gait cycle of this foot: heel strike, its stance (foot flat, heel off, toe off) and the
 /// swing up to the next heel strike.
 struct GaitStride {
@@ -122,7 +129,7 @@ struct GaitSummary {
     std::size_t turningStrides = 0;
     double strideLength_m = 0.0;
     double strideTime_s = 0.0;
-    double cadence_spm = 0.0;
+    double cadence_spm = 0.0;        ///< cadenceOf(strideTime_s): of the mean stride time shown with it
     double stancePct = 0.0;
     double swingPct = 0.0;
     double clearance_m = 0.0;

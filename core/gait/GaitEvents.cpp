@@ -378,7 +378,7 @@ GaitStride makeStride(const std::vector<Swing>& swings, const std::vector<Stance
     stride.strideLength_m = (nextStance.position_m - stance.position_m).head<2>().norm();
     const double stanceTime_s = stride.toeOff.time_s - stride.heelStrike.time_s;
     if (stride.strideTime_s > 0.0) {
-        stride.cadence_spm = 2.0 * 60.0 / stride.strideTime_s;
+        stride.cadence_spm = cadenceOf(stride.strideTime_s);
         stride.stancePct = 100.0 * stanceTime_s / stride.strideTime_s;
         stride.swingPct = 100.0 - stride.stancePct;
     }
@@ -431,7 +431,6 @@ GaitSummary summarizeGait(const std::vector<GaitStride>& strides)
         ++summary.straightStrides;
         summary.strideLength_m += stride.strideLength_m;
         summary.strideTime_s += stride.strideTime_s;
-        summary.cadence_spm += stride.cadence_spm;
         summary.stancePct += stride.stancePct;
         summary.swingPct += stride.swingPct;
         summary.clearance_m += stride.clearance_m;
@@ -440,7 +439,7 @@ GaitSummary summarizeGait(const std::vector<GaitStride>& strides)
         const double n = static_cast<double>(summary.straightStrides);
         summary.strideLength_m /= n;
         summary.strideTime_s /= n;
-        summary.cadence_spm /= n;
+        summary.cadence_spm = cadenceOf(summary.strideTime_s);
         summary.stancePct /= n;
         summary.swingPct /= n;
         summary.clearance_m /= n;

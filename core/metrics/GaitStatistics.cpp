@@ -109,7 +109,7 @@ GaitStatistics computeGaitStatistics(const Result& result, const Recording* reco
         stats.medianStrideDuration_s = median(stats.strideDurations_s);
         if (stats.medianStrideDuration_s > 0.0) {
             stats.strideRate_perMin = 60.0 / stats.medianStrideDuration_s;
-            stats.cadence_stepsPerMin = 2.0 * stats.strideRate_perMin;
+            stats.cadence_stepsPerMin = cadenceOf(stats.medianStrideDuration_s);
         }
     }
     if (recording)
