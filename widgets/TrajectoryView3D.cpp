@@ -1,5 +1,6 @@
 #include "TrajectoryView3D.h"
 
+#include "AnalysisSession.h"
 #include "MotionLanes.h"
 #include "Scene3DPainter.h"
 
@@ -293,6 +294,17 @@ void TrajectoryView3D::wheelEvent(QWheelEvent* event)
     camera_.zoomAbout(event->position(), event->angleDelta().y() / 120.0, area);
     event->accept();
     update();
+}
+
+void TrajectoryView3D::showEstimate(const AnalysisSession& session)
+{
+    if (!session.result()) {
+        clear();
+        return;
+    }
+    setResult(session.result());
+    // The reference is drawn in the estimate's frame, aligned as ARMSE aligns it.
+    setReference(session.evaluation()->alignedReference);
 }
 
 }  // namespace footpath

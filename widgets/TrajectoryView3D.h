@@ -4,6 +4,7 @@
 #include "PathOverlay.h"
 #include "PathScene3D.h"
 #include "Result.h"
+#include "SessionView.h"
 
 #include <Eigen/Core>
 
@@ -27,7 +28,7 @@ class Scene3DPainter;
 /// time cursor and an optional reference. Left-drag orbits, the wheel zooms about the pointer,
 /// right- or middle-drag pans, a double-click resets the view. Heights can be exaggerated so a
 /// few centimetres of foot lift or a staircase stand out against tens of metres of walk.
-class TrajectoryView3D : public QWidget {
+class TrajectoryView3D : public QWidget, public SessionView {
     Q_OBJECT
 public:
     enum class Projection { Orthographic, Perspective };
@@ -35,6 +36,8 @@ public:
 
     explicit TrajectoryView3D(QWidget* parent = nullptr);
     ~TrajectoryView3D() override;
+    void showEstimate(const AnalysisSession& session) override;
+    void showTimeCursor(double time_s) override { setTimeCursor(time_s); }
 
     void setResult(std::shared_ptr<const Result> result);  ///< resets the camera to fit the path
     /// For a path that grows (live input): refits the camera unless the user has orbited, panned

@@ -280,7 +280,6 @@ void MainWindow::wireViews()
     connect(session_, &AnalysisSession::timeCursorChanged, this, [this](double t) {
         for (SessionView* view : sessionViews())
             view->showTimeCursor(t);
-        trajectory3D_->setTimeCursor(t);
     });
     // The signal and detector plots share their time axis.
     connect(signalPlots_, &SignalPlots::timeRangeChanged, flags_, &StanceFlagsPlot::setTimeRange);
@@ -324,7 +323,7 @@ void MainWindow::wireOtherFoot()
 
 std::vector<SessionView*> MainWindow::sessionViews() const
 {
-    return {signalPlots_, flags_, statePlots_, summary_, trajectory2D_};
+    return {signalPlots_, flags_, statePlots_, summary_, trajectory2D_, trajectory3D_};
 }
 
 void MainWindow::showResult()
@@ -333,12 +332,9 @@ void MainWindow::showResult()
         view->showEstimate(*session_);
     const std::shared_ptr<const Result> result = session_->result();
     if (!result) {
-        trajectory3D_->clear();
         ghost_.reset();  // the 3D view dropped its ghost: the next one is handed over again
         return;
     }
-    trajectory3D_->setResult(result);
-    trajectory3D_->setReference(session_->evaluation()->alignedReference);
     recordRun(result, *session_->evaluation());
     showResultStatus(*result);
     emit resultShown();
