@@ -1,5 +1,6 @@
 #include "ParameterPanel.h"
 
+#include "ParameterFieldText.h"
 #include "ParameterFieldValue.h"
 #include "io/ParameterIo.h"
 
@@ -7,7 +8,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
-#include <QDoubleValidator>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFrame>
@@ -17,8 +17,6 @@
 #include <QWheelEvent>
 #include <QLabel>
 #include <QLineEdit>
-#include <QLocale>
-#include <QMap>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
@@ -34,51 +32,6 @@
 #include <cmath>
 
 namespace footpath {
-
-namespace {
-
-QLocale numberLocale()
-{
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    return locale;
-}
-
-QString formatValue(double value)
-{
-    return numberLocale().toString(value, 'g', 6);
-}
-
-/// Names, descriptions and groups come from core as plain text; translated here when a
-/// translation provides them under this context.
-QString fieldText(const char* text)
-{
-    return QCoreApplication::translate("footpath::ParameterFields", text);
-}
-
-QString unitText(const ParameterField& field)
-{
-    return QString::fromStdString(displayUnit(field));
-}
-
-/// "C2 bound on the std of |a| (m/s²)": the label translated, the unit as written everywhere.
-QString fieldLabel(const ParameterField& field)
-{
-    const QString unit = unitText(field);
-    const QString label = fieldText(field.label);
-    return unit.isEmpty() ? label : QStringLiteral("%1 (%2)").arg(label, unit);
-}
-
-/// A name label above its controls; it wraps rather than widening the panel.
-QLabel* createNameLabel(const ParameterField& field)
-{
-    auto* label = new QLabel(fieldLabel(field));
-    label->setObjectName(QStringLiteral("label_") + QString::fromUtf8(field.name));
-    label->setWordWrap(true);
-    return label;
-}
-
-}  // namespace
 
 // --- ParameterPanel: construction ---------------------------------------------------------------
 
@@ -99,7 +52,9 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent)
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setWidget(createFieldSections());
+    scroll->setWidget(ParameterFieldRows(*this, defaults_).createSections(rows_));
+    for (std::size_t index = 0; index < rows_.size(); ++index)
+        connectRow(index);
     // Never narrower than the fields: the horizontal scroll bar is off, so they would be clipped.
     scroll->setMinimumWidth(scroll->widget()->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
     auto* layout = new QVBoxLayout(this);
@@ -155,219 +110,25 @@ QWidget* ParameterPanel::createButtonBar()
     return bar;
 }
 
-QWidget* ParameterPanel::createFieldSections()
+void ParameterPanel::connectRow(std::size_t rowIndex)
 {
-    for (const FieldRow& row : rows_)
-        unitColumnWidth_ = std::max(unitColumnWidth_, fontMetrics().horizontalAdvance(unitText(*row.field)));
-    // Groups appear in the order of their first field; each gets one grid.
-    QStringList groupOrder;
-    QMap<QString, QGridLayout*> grids;
-    for (std::size_t index = 0; index < rows_.size(); ++index) {
-        const QString group = QString::fromUtf8(rows_[index].field->group);
-        if (!grids.contains(group)) {
-            groupOrder.append(group);
-            auto* grid = new QGridLayout;
-            grid->setColumnStretch(0, 1);
-            grid->setVerticalSpacing(2);
-            grids.insert(group, grid);
-        }
-        switch (rows_[index].field->kind) {
-        case ParameterField::Kind::Real: addRealRow(grids.value(group), index); break;
-        case ParameterField::Kind::Flag: addFlagRow(grids.value(group), index); break;
-        case ParameterField::Kind::Choice: addChoiceRow(grids.value(group), index); break;
-        }
+    const FieldRow& row = rows_[rowIndex];
+    connect(row.reset, &QToolButton::clicked, this, [this, rowIndex] { resetField(rowIndex); });
+    if (row.slider) {
+        row.slider->installEventFilter(this);  // a wheel passing over it scrolls the panel
+        connect(row.slider, &QSlider::valueChanged, this, [this, rowIndex](int position) { onSliderMoved(rowIndex, position); });
+        connect(row.slider, &QSlider::sliderReleased, this, &ParameterPanel::flushPendingEdit);
     }
-    auto* container = new QWidget;
-    auto* layout = new QVBoxLayout(container);
-    layout->setContentsMargins(0, 0, 0, 0);
-    for (const QString& group : groupOrder) {
-        auto* content = new QWidget;
-        content->setLayout(grids.value(group));
-        layout->addWidget(createSection(fieldText(group.toUtf8().constData()), content));
+    if (row.edit) {
+        row.edit->installEventFilter(this);  // Up/Down step the value finely
+        connect(row.edit, &QLineEdit::editingFinished, this, [this, rowIndex] { onValueTyped(rowIndex); });
     }
-    layout->addStretch(1);
-    return container;
-}
-
-QWidget* ParameterPanel::createSection(const QString& title, QWidget* content)
-{
-    auto* header = new QToolButton;
-    header->setObjectName(QStringLiteral("section_") + title);
-    header->setText(title);
-    header->setCheckable(true);
-    header->setChecked(true);
-    header->setAutoRaise(true);
-    header->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    header->setArrowType(Qt::DownArrow);
-    header->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    QFont bold = header->font();
-    bold.setBold(true);
-    header->setFont(bold);
-
-    auto* frame = new QFrame;
-    frame->setFrameShape(QFrame::StyledPanel);
-    auto* frameLayout = new QVBoxLayout(frame);
-    frameLayout->setContentsMargins(6, 4, 6, 6);
-    frameLayout->addWidget(content);
-    connect(header, &QToolButton::toggled, frame, [header, frame](bool open) {
-        frame->setVisible(open);
-        header->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
-    });
-
-    auto* section = new QWidget;
-    auto* layout = new QVBoxLayout(section);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->setSpacing(0);
-    layout->addWidget(header);
-    layout->addWidget(frame);
-    return section;
-}
-
-namespace {
-
-QString choiceNames(const ParameterField& field)
-{
-    QStringList names;
-    for (const char* name : field.choiceNames)
-        names << QString::fromUtf8(name);
-    return names.join(QStringLiteral(", "));
-}
-
-/// The label, then the identifier presets and the command line use, then what the field does.
-QString fieldToolTip(const ParameterField& field, double defaultValue)
-{
-    const QString head = QStringLiteral("<b>%1</b><br><code>%2</code><br>%3")
-                             .arg(fieldLabel(field).toHtmlEscaped(), QString::fromUtf8(field.name),
-                                  fieldText(field.description).toHtmlEscaped());
-    if (field.kind == ParameterField::Kind::Flag)
-        return head;
-    if (field.kind == ParameterField::Kind::Choice)
-        return ParameterPanel::tr("%1<br>Choices in presets: %2<br>Default: %3")
-            .arg(head, choiceNames(field), QString::fromUtf8(field.choiceNames.at(static_cast<std::size_t>(defaultValue))));
-    const double sliderEnd = SliderScale::forField(field, defaultValue).sliderMaximum();
-    const QString span = sliderEnd < field.maximum
-                             ? ParameterPanel::tr(" (the slider up to %1; type a larger value)").arg(formatValue(sliderEnd))
-                             : QString();
-    return ParameterPanel::tr("%1<br>Range: %2 to %3 %4%6<br>Default: %5 %4<br>Up/Down in the value field: one slider "
-                              "step; Page Up/Down: ten")
-        .arg(head, formatValue(field.minimum), formatValue(field.maximum), unitText(field), formatValue(defaultValue), span);
-}
-
-}  // namespace
-
-void ParameterPanel::addRealRow(QGridLayout* grid, std::size_t rowIndex)
-{
-    FieldRow& row = rows_[rowIndex];
-    const ParameterField& field = *row.field;
-    const QString name = QString::fromUtf8(field.name);
-    const QString toolTip = fieldToolTip(field, parameterValue(defaults_, field));
-
-    row.label = createNameLabel(field);
-    row.label->setToolTip(toolTip);
-    row.edit = new QLineEdit;
-    row.edit->setObjectName(QStringLiteral("value_") + name);
-    row.edit->setToolTip(toolTip);
-    row.edit->setAlignment(Qt::AlignRight);
-    auto* validator = new QDoubleValidator(row.edit);
-    validator->setNotation(QDoubleValidator::ScientificNotation);
-    validator->setLocale(numberLocale());
-    row.edit->setValidator(validator);
-    row.edit->setFixedWidth(row.edit->fontMetrics().horizontalAdvance(QStringLiteral("-0.000000e-00")));
-    row.edit->installEventFilter(this);  // Up/Down step the value finely
-    auto* unit = new QLabel(unitText(field));
-    unit->setMinimumWidth(unitColumnWidth_);  // the same in every section, so the fields line up
-    row.slider = new QSlider(Qt::Horizontal);
-    row.slider->setObjectName(QStringLiteral("slider_") + name);
-    row.slider->setToolTip(toolTip);
-    row.slider->setRange(0, row.scale.maximumPosition());
-    row.slider->setPageStep(row.scale.pageStep());
-    row.slider->setFocusPolicy(Qt::StrongFocus);
-    row.slider->installEventFilter(this);
-    row.reset = createResetButton(rowIndex);
-    row.toolTip = toolTip;
-    row.parts = {row.label, row.edit, unit, row.slider, row.reset};
-
-    // The label on a line of its own: a readable label beside the value would widen the panel.
-    const int gridRow = grid->rowCount();
-    grid->addWidget(row.label, gridRow, 0, 1, 3);
-    grid->addWidget(row.reset, gridRow, 3);
-    grid->addWidget(row.slider, gridRow + 1, 0);
-    grid->addWidget(row.edit, gridRow + 1, 1);
-    grid->addWidget(unit, gridRow + 1, 2);
-    grid->setRowMinimumHeight(gridRow + 2, 6);  // air between fields
-
-    connect(row.slider, &QSlider::valueChanged, this, [this, rowIndex](int position) { onSliderMoved(rowIndex, position); });
-    connect(row.slider, &QSlider::sliderReleased, this, &ParameterPanel::flushPendingEdit);
-    connect(row.edit, &QLineEdit::editingFinished, this, [this, rowIndex] { onValueTyped(rowIndex); });
-}
-
-void ParameterPanel::addFlagRow(QGridLayout* grid, std::size_t rowIndex)
-{
-    FieldRow& row = rows_[rowIndex];
-    const ParameterField& field = *row.field;
-    const QString name = QString::fromUtf8(field.name);
-    row.check = new QCheckBox(fieldLabel(field));
-    row.check->setObjectName(QStringLiteral("check_") + name);
-    row.toolTip = fieldToolTip(field, parameterValue(defaults_, field));
-    row.check->setToolTip(row.toolTip);
-    // The description on its own wrapped line: beside the name it would widen the whole panel.
-    auto* description = new QLabel(fieldText(field.description));
-    description->setWordWrap(true);
-    description->setForegroundRole(QPalette::PlaceholderText);
-    description->setIndent(row.check->style()->pixelMetric(QStyle::PM_IndicatorWidth) + 6);
-    row.reset = createResetButton(rowIndex);
-    row.parts = {row.check, description, row.reset};
-    const int gridRow = grid->rowCount();
-    grid->addWidget(row.check, gridRow, 0, 1, 3);
-    grid->addWidget(row.reset, gridRow, 3);
-    grid->addWidget(description, gridRow + 1, 0, 1, 3);
-    grid->setRowMinimumHeight(gridRow + 2, 6);
-    connect(row.check, &QCheckBox::toggled, this, [this, rowIndex](bool checked) { onFlagToggled(rowIndex, checked); });
-}
-
-void ParameterPanel::addChoiceRow(QGridLayout* grid, std::size_t rowIndex)
-{
-    FieldRow& row = rows_[rowIndex];
-    const ParameterField& field = *row.field;
-    const QString name = QString::fromUtf8(field.name);
-    row.toolTip = fieldToolTip(field, parameterValue(defaults_, field));
-    row.label = createNameLabel(field);
-    row.label->setToolTip(row.toolTip);
-    row.combo = new QComboBox;
-    row.combo->setObjectName(QStringLiteral("choice_") + name);
-    row.combo->setToolTip(row.toolTip);
-    row.combo->setFocusPolicy(Qt::StrongFocus);
-    row.combo->installEventFilter(this);
-    for (std::size_t i = 0; i < field.choiceNames.size(); ++i) {
-        const char* label = i < field.choiceLabels.size() ? field.choiceLabels[i] : field.choiceNames[i];
-        row.combo->addItem(fieldText(label));
-        // What a preset or --set calls this choice.
-        row.combo->setItemData(static_cast<int>(i), QString::fromUtf8(field.choiceNames[i]), Qt::ToolTipRole);
+    if (row.check)
+        connect(row.check, &QCheckBox::toggled, this, [this, rowIndex](bool checked) { onFlagToggled(rowIndex, checked); });
+    if (row.combo) {
+        row.combo->installEventFilter(this);  // a wheel passing over it scrolls the panel
+        connect(row.combo, &QComboBox::activated, this, [this, rowIndex](int index) { onChoiceChosen(rowIndex, index); });
     }
-    row.reset = createResetButton(rowIndex);
-    row.parts = {row.label, row.combo, row.reset};
-    const int gridRow = grid->rowCount();
-    grid->addWidget(row.label, gridRow, 0, 1, 3);
-    grid->addWidget(row.combo, gridRow + 1, 0, 1, 3);
-    grid->addWidget(row.reset, gridRow, 3);
-    grid->setRowMinimumHeight(gridRow + 2, 6);
-    connect(row.combo, &QComboBox::activated, this, [this, rowIndex](int index) { onChoiceChosen(rowIndex, index); });
-}
-
-QToolButton* ParameterPanel::createResetButton(std::size_t rowIndex)
-{
-    const ParameterField& field = *rows_[rowIndex].field;
-    auto* button = new QToolButton;
-    button->setObjectName(QStringLiteral("reset_") + QString::fromUtf8(field.name));
-    button->setIcon(style()->standardIcon(QStyle::SP_DialogResetButton));
-    button->setAutoRaise(true);
-    button->setToolTip(tr("Back to the default (%1)").arg(formatValue(parameterValue(defaults_, field))));
-    // Hidden while the value is the default, but its space is kept so the rows do not jump.
-    QSizePolicy policy = button->sizePolicy();
-    policy.setRetainSizeWhenHidden(true);
-    button->setSizePolicy(policy);
-    connect(button, &QToolButton::clicked, this, [this, rowIndex] { resetField(rowIndex); });
-    return button;
 }
 
 // --- Showing values ------------------------------------------------------------------------------

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "SliderScale.h"
+#include "ParameterFieldRows.h"
 #include "nav/Parameters.h"
 
 #include <QString>
@@ -10,13 +10,8 @@
 #include <vector>
 
 class QAction;
-class QCheckBox;
-class QComboBox;
-class QGridLayout;
 class QKeyEvent;
 class QLabel;
-class QLineEdit;
-class QSlider;
 class QToolButton;
 class QUndoStack;
 
@@ -66,26 +61,11 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    struct FieldRow {
-        const ParameterField* field = nullptr;
-        SliderScale scale;
-        QLabel* label = nullptr;        ///< reals and choices: the name (bold when not the default)
-        QSlider* slider = nullptr;      ///< reals
-        QLineEdit* edit = nullptr;      ///< reals
-        QCheckBox* check = nullptr;     ///< flags
-        QComboBox* combo = nullptr;     ///< choices
-        QToolButton* reset = nullptr;   ///< back to the default; shown when the value differs
-        std::vector<QWidget*> parts;    ///< every widget of the row, enabled and disabled together
-        QString toolTip;                ///< the field's own tool tip, before any "not used" note
-    };
+    using FieldRow = ParameterFieldRow;
 
     QWidget* createButtonBar();
-    QWidget* createFieldSections();
-    QWidget* createSection(const QString& title, QWidget* content);
-    void addRealRow(QGridLayout* grid, std::size_t rowIndex);
-    void addFlagRow(QGridLayout* grid, std::size_t rowIndex);
-    void addChoiceRow(QGridLayout* grid, std::size_t rowIndex);
-    QToolButton* createResetButton(std::size_t rowIndex);
+    /// Listens to the row's widgets: their edits, and the keys and wheel eventFilter() handles.
+    void connectRow(std::size_t rowIndex);
 
     void showValue(FieldRow& row);
     void showModified(FieldRow& row);
@@ -114,7 +94,6 @@ private:
     Parameters current_;
     const Parameters defaults_;
     QString presetError_;
-    int unitColumnWidth_ = 0;
     QString lastPresetDir_;
 
     QTimer editThrottle_;
