@@ -3,8 +3,10 @@
 #include "AnalysisSession.h"
 #include "DecimatedGraph.h"
 #include "DeferredReplot.h"
+#include "DetectorInputRows.h"
 #include "MotionLanes.h"
 #include "PlotInteraction.h"
+#include "StanceFlagsPlotAxes.h"
 #include "TimeAxisNavigation.h"
 #include "TimeBands.h"
 #include "WarningOverlay.h"
@@ -29,18 +31,12 @@ namespace {
 
 using Lane = StanceFlagsPlot::Lane;
 using Input = StanceFlagsPlot::Input;
-using Threshold = StanceFlagsPlot::Threshold;
 
 constexpr double kLaneSpacing = 1.5;   // a lane is 1 high; the rest is the gap to the next
 constexpr double kLaneMargin = 0.3;    // air above the top lane and below the bottom one
-constexpr double kBandHeadroom = 1.5;  // |a| row: this many band widths above and below the band
-constexpr double kMinimumAccBand_mps2 = 0.5;  // framing for (invalid) parameters with no band
-constexpr double kThresholdHeadroom = 3.0;    // std and |w| rows: from 0 to at least this many thresholds
-constexpr double kDataShare = 0.99;  // input rows hold this share of the samples; rarer peaks run off the top
 constexpr double kReferenceLow = 0.2, kReferenceHigh = 0.8;  // the reference lane's step curve, on its 0..1 axis
 constexpr double kStatisticHeadroom_dec = 0.3;  // statistic row: air above and below the data, in decades
 constexpr double kMinimumStatisticSpan_dec = 2.0;
-constexpr double kValueMargin = 1.05;  // air above the data an input row holds
 const QString kCursorLayer = QStringLiteral("cursor");
 const QString kStanceLayer = QStringLiteral("stance");
 const QColor kStanceBrush(250, 200, 110, 90);  // SignalPlots' light amber
@@ -69,45 +65,8 @@ const std::array<LaneInfo, StanceFlagsPlot::kLaneCount>& laneInfos()
 const char* const kStatisticConditionLabel = QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "C: statistic\n< threshold");
 const char* const kStatisticStanceLabel = QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "Stance");
 
-/// The statistic row's axis label for each detector (DetectorKind order).
-
-struct InputInfo {
-    const char* name;
-    const char* axisLabel;
-};
-
-constexpr std::array<InputInfo, StanceFlagsPlot::kInputCount> kInputInfos = {{
-    {QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "|a|"), QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "|a|\n(m/s²)")},
-    {QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "std of |a|"), QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "std of |a|\n(m/s²)")},
-    {QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "|ω|"), QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "|ω|\n(rad/s)")},
-}};
-
-struct ThresholdInfo {
-    Input input;           // the row whose curve it bounds
-    const char* nameUnit;  // "%1" is the value
-    double Parameters::*value;
-    QColor colour;
-    Qt::PenStyle style;
-};
-
-const std::array<ThresholdInfo, StanceFlagsPlot::kThresholdCount>& thresholdInfos()
-{
-    static const std::array<ThresholdInfo, StanceFlagsPlot::kThresholdCount> infos = {{
-        {Input::AccNorm, QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "min |a| = %1 m/s²"), &Parameters::acc_min_mps2,
-         QColor(30, 80, 190), Qt::DashLine},
-        {Input::AccNorm, QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "max |a| = %1 m/s²"), &Parameters::acc_max_mps2,
-         QColor(200, 40, 40), Qt::DashDotLine},
-        {Input::AccStdDev, QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "max std = %1 m/s²"),
-         &Parameters::acc_std_max_mps2, QColor(200, 40, 40), Qt::DashDotLine},
-        {Input::GyrNorm, QT_TRANSLATE_NOOP("footpath::StanceFlagsPlot", "max |ω| = %1 rad/s"), &Parameters::gyr_max_radps,
-         QColor(200, 40, 40), Qt::DashDotLine},
-    }};
-    return infos;
-}
-
 std::size_t slot(Lane lane) { return static_cast<std::size_t>(lane); }
 std::size_t slot(Input input) { return static_cast<std::size_t>(input); }
-std::size_t slot(Threshold threshold) { return static_cast<std::size_t>(threshold); }
 constexpr std::size_t kWarningRow = 0;
 constexpr std::size_t kNotesRow = 1;
 constexpr std::size_t kLanesRow = 2;
@@ -128,13 +87,6 @@ const std::vector<std::uint8_t>& laneFlags(const StanceFlags& flags, Lane lane)
     return flags.stance;
 }
 
-QCPAxis* timeAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atBottom); }
-QCPAxis* valueAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atLeft); }
-/// The hidden right axis spans 0..1 whatever the row shows: the cursor uses it to fill the height.
-QCPAxis* unitAxis(const QCPAxisRect* rect) { return rect->axis(QCPAxis::atRight); }
-
-QVector<double> toQVector(const std::vector<double>& values) { return QVector<double>(values.begin(), values.end()); }
-
 /// The decades the finite values of both series span (log10 values), or nothing if none is finite.
 std::optional<QCPRange> finiteSpan(const std::vector<float>& a, const std::vector<float>& b)
 {
@@ -148,21 +100,6 @@ std::optional<QCPRange> finiteSpan(const std::vector<float>& a, const std::vecto
     if (lowest > highest)
         return std::nullopt;
     return QCPRange(lowest, highest);
-}
-
-/// The value below which share of the graph's finite values lie (0 for none).
-double quantileOf(const QCPGraph* graph, double share)
-{
-    std::vector<double> values;
-    values.reserve(static_cast<std::size_t>(graph->data()->size()));
-    for (const QCPGraphData& point : *graph->data())
-        if (std::isfinite(point.value))
-            values.push_back(point.value);
-    if (values.empty())
-        return 0.0;
-    const auto at = values.begin() + static_cast<std::ptrdiff_t>(share * static_cast<double>(values.size() - 1));
-    std::nth_element(values.begin(), at, values.end());
-    return *at;
 }
 
 /// The recording's reference stance: the spans of stance within the time the reference covers.
@@ -243,7 +180,8 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
     createLanesRow();
     createReferenceLane();
     createStatisticRow();
-    createInputRows();
+    inputRows_ = std::make_unique<DetectorInputRows>(
+        plot_, std::array<QCPAxisRect*, kInputCount>{inputRect(Input::AccNorm), inputRect(Input::AccStdDev), inputRect(Input::GyrNorm)});
     warnings_ = new WarningOverlay(plot_);
     for (std::size_t r = 0; r < kRowCount; ++r)
         if (r != kWarningRow && r != kNotesRow && r != kMotionRow && r != kReferenceRow)  // the lanes keep their own colours
@@ -252,7 +190,7 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
     motion_ = new MotionLanes(plot_);
     motion_->setMotionLane(rows_[kMotionRow].rect);
     motion_->setNotesLane(rows_[kNotesRow].rect);
-    rescaleInputAxes();
+    inputRows_->rescale();
     wireInteractions();
     setParameters(params_);  // names, lanes and rows of the default detector
     createPlotInteraction();
@@ -263,7 +201,7 @@ void StanceFlagsPlot::createPlotInteraction()
     interaction_ = new PlotInteraction(plot_);
     interaction_->setResetAction([this] {
         showAll();
-        rescaleInputAxes();
+        inputRows_->rescale();
         plotStatistic();  // frames the statistic row again
     });
     // The lanes' curves run between two levels: the readout names the flag instead.
@@ -297,7 +235,7 @@ void StanceFlagsPlot::createReferenceLane()
 
 void StanceFlagsPlot::plotReferenceStance(const Recording* recording)
 {
-    const ReferenceStance reference = recording ? referenceStanceOf(*recording, times_s_) : ReferenceStance();
+    const ReferenceStance reference = recording ? referenceStanceOf(*recording, inputRows_->times()) : ReferenceStance();
     const std::vector<QCPRange>& spans = reference.spans;
     referenceFill_->setSpans(spans);
     QVector<double> keys, values;
@@ -408,25 +346,6 @@ void StanceFlagsPlot::createStatisticRow()
     stanceLegendEntry_->setBrush(kStanceBrush);
 }
 
-void StanceFlagsPlot::createInputRows()
-{
-    for (std::size_t i = 0; i < kInputCount; ++i) {
-        QCPAxisRect* rect = rows_[rowOf(static_cast<Input>(i))].rect;
-        valueAxis(rect)->setLabel(tr(kInputInfos[i].axisLabel));
-        inputs_[i] = new DecimatedGraph(timeAxis(rect), valueAxis(rect));
-        inputs_[i]->setName(tr(kInputInfos[i].name));
-        inputs_[i]->setPen(QPen(QColor(20, 20, 20), 1.0));
-        inputs_[i]->setSelectable(QCP::stNone);
-    }
-    for (std::size_t t = 0; t < kThresholdCount; ++t) {
-        const ThresholdInfo& info = thresholdInfos()[t];
-        const QCPAxisRect* rect = rows_[rowOf(info.input)].rect;
-        thresholds_[t] = plot_->addGraph(timeAxis(rect), valueAxis(rect));
-        thresholds_[t]->setPen(QPen(info.colour, 1.5, info.style));
-        thresholds_[t]->setSelectable(QCP::stNone);
-    }
-}
-
 void StanceFlagsPlot::wireInteractions()
 {
     timeRows_ = new LinkedTimeRows(plot_);
@@ -448,24 +367,7 @@ bool StanceFlagsPlot::usesPaperDetector() const
 void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
 {
     result_.reset();
-    times_s_.clear();
-    accNorm_.clear();
-    std::vector<double> gyrNorm;
-    if (recording) {
-        for (const ImuSample& sample : recording->samples) {
-            times_s_.push_back(sample.time_s);
-            accNorm_.push_back(sample.acc_mps2.norm());
-            gyrNorm.push_back(sample.gyr_radps.norm());
-        }
-    }
-    const QVector<double> keys = toQVector(times_s_);
-    inputs_[slot(Input::AccNorm)]->setData(keys, toQVector(accNorm_), true);
-    inputs_[slot(Input::GyrNorm)]->setData(keys, toQVector(gyrNorm), true);
-    measureInput(Input::AccNorm);
-    measureInput(Input::GyrNorm);
-    plotAccStdDev();
-    plotThresholds();
-    rescaleInputAxes();
+    inputRows_->setRecording(recording.get());
     plotReferenceStance(recording.get());
     showResultLanes();
     arrangeRows();
@@ -512,12 +414,8 @@ void StanceFlagsPlot::showEvent(QShowEvent* event)
 
 void StanceFlagsPlot::setParameters(const Parameters& params)
 {
-    const bool windowChanged = params.window_half_s != params_.window_half_s;
     params_ = params;
-    if (windowChanged)
-        plotAccStdDev();  // rescaled below
-    plotThresholds();
-    rescaleInputAxes();
+    inputRows_->setParameters(params);
     labelLanes();
     nameStatistic();
     const bool paper = usesPaperDetector();
@@ -608,53 +506,6 @@ void StanceFlagsPlot::nameStatistic()
         statisticThreshold_->setName(tr("threshold = 10^%1").arg(params_.zv_log_threshold));
 }
 
-void StanceFlagsPlot::plotAccStdDev()
-{
-    // The detector's own function, so the curve is exactly what C2 compared.
-    const std::vector<double> accStdDev = centredStdDev(times_s_, accNorm_, params_.window_half_s);
-    inputs_[slot(Input::AccStdDev)]->setData(toQVector(times_s_), toQVector(accStdDev), true);
-    measureInput(Input::AccStdDev);
-}
-
-void StanceFlagsPlot::measureInput(Input input)
-{
-    const QCPGraph* graph = inputs_[slot(input)];
-    inputBulk_[slot(input)] = InputBulk{quantileOf(graph, 1.0 - kDataShare), quantileOf(graph, kDataShare)};
-}
-
-void StanceFlagsPlot::plotThresholds()
-{
-    for (std::size_t t = 0; t < kThresholdCount; ++t) {
-        const ThresholdInfo& info = thresholdInfos()[t];
-        const double value = params_.*info.value;
-        thresholds_[t]->setName(tr(info.nameUnit).arg(value));
-        thresholds_[t]->data()->clear();
-        if (!times_s_.empty()) {  // a horizontal line across the recording
-            thresholds_[t]->addData(times_s_.front(), value);
-            thresholds_[t]->addData(times_s_.back(), value);
-        }
-    }
-}
-
-void StanceFlagsPlot::rescaleInputAxes()
-{
-    // Each row holds its thresholds with room around them and the bulk of its data (a running
-    // trial's std of |a| is many times a walking threshold); the rarest swing peaks run off the
-    // top, which reads as "far above" all the same, rather than squashing the rest into a line.
-    const double band = std::max(params_.acc_max_mps2 - params_.acc_min_mps2, kMinimumAccBand_mps2);
-    const QCPGraph* accNorm = inputs_[slot(Input::AccNorm)];
-    const double accLow = accNorm->data()->isEmpty() ? params_.acc_min_mps2 : inputBulk_[slot(Input::AccNorm)].low;
-    valueAxis(inputRect(Input::AccNorm))
-        ->setRange(std::max(0.0, std::min(params_.acc_min_mps2 - kBandHeadroom * band, accLow)),
-                   std::max(params_.acc_max_mps2 + kBandHeadroom * band, inputBulk_[slot(Input::AccNorm)].high * kValueMargin));
-    valueAxis(inputRect(Input::AccStdDev))
-        ->setRange(0.0, std::max(kThresholdHeadroom * params_.acc_std_max_mps2,
-                                 inputBulk_[slot(Input::AccStdDev)].high * kValueMargin));
-    valueAxis(inputRect(Input::GyrNorm))
-        ->setRange(0.0, std::max(kThresholdHeadroom * params_.gyr_max_radps,
-                                 inputBulk_[slot(Input::GyrNorm)].high * kValueMargin));
-}
-
 void StanceFlagsPlot::setInputsVisible(bool visible)
 {
     if (visible == inputsVisible_)
@@ -705,7 +556,7 @@ void StanceFlagsPlot::arrangeRows()
     // the shading.
     std::vector<QCPAbstractPlottable*> entries{statisticThreshold_, stanceLegendEntry_};
     if (inputsShown)
-        entries.insert(entries.end(), thresholds_.begin(), thresholds_.end());
+        entries.insert(entries.end(), inputRows_->thresholds().begin(), inputRows_->thresholds().end());
     legend_->setEntries(entries);
 }
 
@@ -742,8 +593,8 @@ QCPGraph* StanceFlagsPlot::laneGraph(Lane lane) const
     ensureCurvesPlotted();
     return lanes_[slot(lane)];
 }
-QCPGraph* StanceFlagsPlot::inputGraph(Input input) const { return inputs_[slot(input)]; }
-QCPGraph* StanceFlagsPlot::thresholdGraph(Threshold threshold) const { return thresholds_[slot(threshold)]; }
+QCPGraph* StanceFlagsPlot::inputGraph(Input input) const { return inputRows_->graph(input); }
+QCPGraph* StanceFlagsPlot::thresholdGraph(Threshold threshold) const { return inputRows_->threshold(threshold); }
 bool StanceFlagsPlot::isStatisticStanceShaded(double time_s) const
 {
     ensureCurvesPlotted();
@@ -770,8 +621,9 @@ void StanceFlagsPlot::setTimeRange(double from_s, double to_s)
 
 void StanceFlagsPlot::showAll()
 {
-    if (times_s_.size() >= 2)
-        setTimeRange(times_s_.front(), times_s_.back());
+    const std::vector<double>& times = inputRows_->times();
+    if (times.size() >= 2)
+        setTimeRange(times.front(), times.back());
 }
 
 void StanceFlagsPlot::keyPressEvent(QKeyEvent* event)

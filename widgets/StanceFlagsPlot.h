@@ -25,6 +25,7 @@ class QToolBar;
 namespace footpath {
 
 class DecimatedGraph;
+class DetectorInputRows;
 
 class DeferredReplot;
 
@@ -159,7 +160,6 @@ private:
     void plotReferenceStance(const Recording* recording);
     void labelLanes();
     void createStatisticRow();
-    void createInputRows();
     void wireInteractions();
     bool usesPaperDetector() const;
     /// The warnings and motion lanes of result_ now, its lanes and statistic when seen.
@@ -169,10 +169,6 @@ private:
     void plotStatistic();
     void rescaleStatisticAxis();
     void nameStatistic();
-    void plotAccStdDev();
-    void measureInput(Input input);
-    void plotThresholds();
-    void rescaleInputAxes();
     void arrangeRows();
 
     QCustomPlot* plot_;
@@ -182,15 +178,7 @@ private:
     std::array<RowParts, kRowCount> rows_;
     std::array<QCPGraph*, kLaneCount> lanes_{};
     std::array<TimeBands*, kLaneCount> laneFills_{};  ///< under each lane's outline while its flag is set
-    std::array<QCPGraph*, kInputCount> inputs_{};
-    /// Each input row's (1 - kDataShare) and kDataShare quantiles, taken when its data is set: a
-    /// parameter change rescales the rows without sorting a long walk's samples again.
-    struct InputBulk {
-        double low = 0.0;
-        double high = 0.0;
-    };
-    std::array<InputBulk, kInputCount> inputBulk_{};
-    std::array<QCPGraph*, kThresholdCount> thresholds_{};
+    std::unique_ptr<DetectorInputRows> inputRows_;  ///< also holds the recording's sample times
     DecimatedGraph* statistic_ = nullptr;
     QCPGraph* statisticThreshold_ = nullptr;
     QCPGraph* stanceLegendEntry_ = nullptr;  ///< draws nothing; gives the statistic row's stance shading an entry
@@ -203,8 +191,6 @@ private:
     QString referenceSource_;
     std::shared_ptr<const Result> result_;
     Parameters params_;
-    std::vector<double> times_s_;  ///< the recording's, kept to recompute the std on a new window
-    std::vector<double> accNorm_;
     bool inputsVisible_ = false;
     bool curvesStale_ = false;  ///< the lanes and the statistic do not show result_ yet
     double timeCursor_s_ = 0.0;
