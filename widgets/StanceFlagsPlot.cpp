@@ -6,6 +6,7 @@
 #include "DetectorInputRows.h"
 #include "MotionLanes.h"
 #include "PlotInteraction.h"
+#include "ReferenceStanceLane.h"
 #include "StanceFlagsPlotAxes.h"
 #include "TimeAxisNavigation.h"
 #include "TimeBands.h"
@@ -34,7 +35,6 @@ using Input = StanceFlagsPlot::Input;
 
 constexpr double kLaneSpacing = 1.5;   // a lane is 1 high; the rest is the gap to the next
 constexpr double kLaneMargin = 0.3;    // air above the top lane and below the bottom one
-constexpr double kReferenceLow = 0.2, kReferenceHigh = 0.8;  // the reference lane's step curve, on its 0..1 axis
 constexpr double kStatisticHeadroom_dec = 0.3;  // statistic row: air above and below the data, in decades
 constexpr double kMinimumStatisticSpan_dec = 2.0;
 const QString kCursorLayer = QStringLiteral("cursor");
@@ -102,37 +102,6 @@ std::optional<QCPRange> finiteSpan(const std::vector<float>& a, const std::vecto
     return QCPRange(lowest, highest);
 }
 
-/// The recording's reference stance: the spans of stance within the time the reference covers.
-struct ReferenceStance {
-    std::vector<QCPRange> spans;
-    QCPRange covered;
-};
-
-/// From the recording's reference stance flags when it has them (pyshoe's zv_vicon_opt: the whole
-/// recording), else from the gaps between its hand-labelled swings (IPOL gait events: from the
-/// first labelled swing to the last, the window evaluation compares; outside it nothing is known).
-ReferenceStance referenceStanceOf(const Recording& recording, const std::vector<double>& times)
-{
-    const Reference& reference = recording.reference;
-    ReferenceStance out;
-    if (times.empty())
-        return out;
-    if (!reference.stance.empty()) {
-        out.spans = flaggedSpans(times, reference.stance);
-        out.covered = QCPRange(times.front(), times.back());
-        return out;
-    }
-    for (std::size_t s = 1; s < reference.swings.size(); ++s) {
-        const std::size_t from = reference.swings[s - 1].last + 1, to = reference.swings[s].first;
-        if (from < to && to < times.size())
-            out.spans.emplace_back(times[from], times[to]);
-    }
-    if (!out.spans.empty())
-        out.covered = QCPRange(times[std::min(reference.swings.front().first, times.size() - 1)],
-                               times[std::min(reference.swings.back().last, times.size() - 1)]);
-    return out;
-}
-
 /// A log10 value as the log axis plots it; -inf (a statistic of exactly 0) sits on the axis' floor
 /// rather than leaving a gap, +inf on its ceiling. 2^(x log2 10), not pow(10, x): the same value
 /// to about 1e-15, at 40 % of the time (1.9 -> 0.7 ms for a 30-minute walk's statistic).
@@ -178,7 +147,7 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
         row.cursor = addCursorLine(plot_, row.rect, kCursorLayer);
     }
     createLanesRow();
-    createReferenceLane();
+    reference_ = std::make_unique<ReferenceStanceLane>(plot_, rows_[kReferenceRow].rect);
     createStatisticRow();
     inputRows_ = std::make_unique<DetectorInputRows>(
         plot_, std::array<QCPAxisRect*, kInputCount>{inputRect(Input::AccNorm), inputRect(Input::AccStdDev), inputRect(Input::GyrNorm)});
@@ -206,58 +175,13 @@ void StanceFlagsPlot::createPlotInteraction()
     });
     // The lanes' curves run between two levels: the readout names the flag instead.
     interaction_->setValueFormatter([this](const QCPGraph* graph, double value) -> std::optional<QString> {
-        if (graph == referenceLane_)
-            return value > kReferenceLow ? tr("stance") : tr("swing");
+        if (std::optional<QString> readout = reference_->readout(graph, value))
+            return readout;
         for (std::size_t l = 0; l < kLaneCount; ++l)
             if (graph == lanes_[l])
                 return value == laneLevel(static_cast<Lane>(l), true) ? tr("1 (set)") : tr("0");
         return std::nullopt;
     });
-}
-
-void StanceFlagsPlot::createReferenceLane()
-{
-    QCPAxisRect* rect = rows_[kReferenceRow].rect;
-    setUpLane(rect, tr("Reference\nstance"));
-    // As high as its two-line label: a lane of one flag needs no more.
-    const int height = 2 * QFontMetrics(valueAxis(rect)->tickLabelFont()).height() + 6;
-    rect->setMinimumSize(0, height);
-    rect->setMaximumSize(QWIDGETSIZE_MAX, height);
-    referenceFill_ = new TimeBands(rect, QColor(240, 170, 60, 150));
-    referenceFill_->setLevels(kReferenceLow, kReferenceHigh);
-    referenceFill_->setLayer(QStringLiteral("main"));
-    referenceLane_ = plot_->addGraph(timeAxis(rect), valueAxis(rect));
-    referenceLane_->setName(tr("Reference stance"));
-    referenceLane_->setLineStyle(QCPGraph::lsStepLeft);
-    referenceLane_->setPen(QPen(QColor(40, 40, 40), 1.0));
-    referenceLane_->setSelectable(QCP::stNone);
-}
-
-void StanceFlagsPlot::plotReferenceStance(const Recording* recording)
-{
-    const ReferenceStance reference = recording ? referenceStanceOf(*recording, inputRows_->times()) : ReferenceStance();
-    const std::vector<QCPRange>& spans = reference.spans;
-    referenceFill_->setSpans(spans);
-    QVector<double> keys, values;
-    if (!spans.empty()) {  // a step curve over the covered time: up at each span, down after it
-        keys << reference.covered.lower;
-        values << (spans.front().lower <= reference.covered.lower ? kReferenceHigh : kReferenceLow);
-        for (const QCPRange& span : spans) {
-            keys << span.lower << span.upper;
-            values << kReferenceHigh << kReferenceLow;
-        }
-        if (keys.back() < reference.covered.upper) {
-            keys << reference.covered.upper;
-            values << kReferenceLow;
-        }
-    }
-    referenceLane_->setData(keys, values, true);
-    QString source;
-    if (recording && !recording->reference.stance.empty())
-        source = tr("from the recording's reference stance column (zero velocity by motion capture)");
-    else if (!spans.empty())
-        source = tr("between the hand-labelled gait events (toe-off, heel-strike)");
-    referenceSource_ = source;
 }
 
 StanceFlagsPlot::~StanceFlagsPlot()
@@ -368,7 +292,7 @@ void StanceFlagsPlot::setRecording(std::shared_ptr<const Recording> recording)
 {
     result_.reset();
     inputRows_->setRecording(recording.get());
-    plotReferenceStance(recording.get());
+    reference_->setRecording(recording.get(), inputRows_->times());
     showResultLanes();
     arrangeRows();
     showAll();
@@ -533,7 +457,7 @@ void StanceFlagsPlot::arrangeRows()
         if (r == kNotesRow || r == kMotionRow)
             shown = r == kNotesRow ? motion_->hasNotes() : motion_->hasMotionLane();
         if (r == kReferenceRow)
-            shown = !referenceFill_->isEmpty();
+            shown = reference_->hasStance();
         // Out of the layout a row keeps its old geometry: hide it, or it would paint over the others.
         row.rect->setVisible(shown);
         row.cursor->setVisible(shown && cursorPlaced_);
@@ -585,7 +509,8 @@ QCPAxisRect* StanceFlagsPlot::statisticRect() const
 QCPAxisRect* StanceFlagsPlot::warningLane() const { return rows_[kWarningRow].rect; }
 QCPAxisRect* StanceFlagsPlot::motionLane() const { return rows_[kMotionRow].rect; }
 QCPAxisRect* StanceFlagsPlot::referenceLane() const { return rows_[kReferenceRow].rect; }
-bool StanceFlagsPlot::isReferenceStance(double time_s) const { return referenceFill_->contains(time_s); }
+bool StanceFlagsPlot::isReferenceStance(double time_s) const { return reference_->isStance(time_s); }
+const QString& StanceFlagsPlot::referenceSource() const { return reference_->source(); }
 QCPAxisRect* StanceFlagsPlot::methodNotesLane() const { return rows_[kNotesRow].rect; }
 QCPAxisRect* StanceFlagsPlot::inputRect(Input input) const { return rows_[rowOf(input)].rect; }
 QCPGraph* StanceFlagsPlot::laneGraph(Lane lane) const

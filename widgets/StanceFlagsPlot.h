@@ -33,6 +33,7 @@ class LegendStrip;
 class LinkedTimeRows;
 class MotionLanes;
 class PlotInteraction;
+class ReferenceStanceLane;
 class TimeBands;
 class WarningOverlay;
 
@@ -130,7 +131,7 @@ public:
     QCPAxisRect* referenceLane() const;
     bool isReferenceStance(double time_s) const;
     /// Where the reference stance comes from, for the lane's tool tip; empty without one.
-    const QString& referenceSource() const { return referenceSource_; }
+    const QString& referenceSource() const;
     /// Hover readout, marker, Y zoom, context menu and export.
     PlotInteraction* interaction() const { return interaction_; }
     /// Draws the plots (without the toolbar) into target as vector commands.
@@ -155,9 +156,7 @@ private:
     };
 
     void createLanesRow();
-    void createReferenceLane();
     void createPlotInteraction();
-    void plotReferenceStance(const Recording* recording);
     void labelLanes();
     void createStatisticRow();
     void wireInteractions();
@@ -186,9 +185,7 @@ private:
     WarningOverlay* warnings_ = nullptr;
     MotionLanes* motion_ = nullptr;
     PlotInteraction* interaction_ = nullptr;
-    QCPGraph* referenceLane_ = nullptr;  ///< step curve of the reference stance
-    TimeBands* referenceFill_ = nullptr;
-    QString referenceSource_;
+    std::unique_ptr<ReferenceStanceLane> reference_;
     std::shared_ptr<const Result> result_;
     Parameters params_;
     bool inputsVisible_ = false;
