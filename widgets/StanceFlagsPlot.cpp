@@ -4,6 +4,7 @@
 #include "DecimatedGraph.h"
 #include "DeferredReplot.h"
 #include "DetectorInputRows.h"
+#include "DetectorStatisticRow.h"
 #include "MotionLanes.h"
 #include "PlotInteraction.h"
 #include "ReferenceStanceLane.h"
@@ -11,8 +12,6 @@
 #include "TimeAxisNavigation.h"
 #include "TimeBands.h"
 #include "WarningOverlay.h"
-
-#include "detect/StanceDetector.h"
 
 #include <QApplication>
 #include <QKeyEvent>
@@ -22,8 +21,6 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <optional>
 
 namespace footpath {
@@ -35,12 +32,8 @@ using Input = StanceFlagsPlot::Input;
 
 constexpr double kLaneSpacing = 1.5;   // a lane is 1 high; the rest is the gap to the next
 constexpr double kLaneMargin = 0.3;    // air above the top lane and below the bottom one
-constexpr double kStatisticHeadroom_dec = 0.3;  // statistic row: air above and below the data, in decades
-constexpr double kMinimumStatisticSpan_dec = 2.0;
 const QString kCursorLayer = QStringLiteral("cursor");
 const QString kStanceLayer = QStringLiteral("stance");
-const QColor kStanceBrush(250, 200, 110, 90);  // SignalPlots' light amber
-const QColor kThresholdColour(200, 40, 40);
 
 struct LaneInfo {
     const char* label;  // translated in the StanceFlagsPlot context
@@ -87,32 +80,6 @@ const std::vector<std::uint8_t>& laneFlags(const StanceFlags& flags, Lane lane)
     return flags.stance;
 }
 
-/// The decades the finite values of both series span (log10 values), or nothing if none is finite.
-std::optional<QCPRange> finiteSpan(const std::vector<float>& a, const std::vector<float>& b)
-{
-    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-    for (const std::vector<float>* series : {&a, &b})
-        for (const float value : *series)
-            if (std::isfinite(value)) {
-                lowest = std::min(lowest, static_cast<double>(value));
-                highest = std::max(highest, static_cast<double>(value));
-            }
-    if (lowest > highest)
-        return std::nullopt;
-    return QCPRange(lowest, highest);
-}
-
-/// A log10 value as the log axis plots it; -inf (a statistic of exactly 0) sits on the axis' floor
-/// rather than leaving a gap, +inf on its ceiling. 2^(x log2 10), not pow(10, x): the same value
-/// to about 1e-15, at 40 % of the time (1.9 -> 0.7 ms for a 30-minute walk's statistic).
-double plottedValue(float logValue, const QCPRange& decades)
-{
-    if (std::isnan(logValue))
-        return std::numeric_limits<double>::quiet_NaN();
-    constexpr double kLog2Of10 = 3.32192809488736234787;
-    return std::exp2(kLog2Of10 * std::clamp(static_cast<double>(logValue), decades.lower, decades.upper));
-}
-
 }  // namespace
 
 StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
@@ -148,7 +115,7 @@ StanceFlagsPlot::StanceFlagsPlot(QWidget* parent)
     }
     createLanesRow();
     reference_ = std::make_unique<ReferenceStanceLane>(plot_, rows_[kReferenceRow].rect);
-    createStatisticRow();
+    statisticRow_ = std::make_unique<DetectorStatisticRow>(plot_, rows_[kStatisticRow].rect, kStanceLayer);
     inputRows_ = std::make_unique<DetectorInputRows>(
         plot_, std::array<QCPAxisRect*, kInputCount>{inputRect(Input::AccNorm), inputRect(Input::AccStdDev), inputRect(Input::GyrNorm)});
     warnings_ = new WarningOverlay(plot_);
@@ -171,7 +138,7 @@ void StanceFlagsPlot::createPlotInteraction()
     interaction_->setResetAction([this] {
         showAll();
         inputRows_->rescale();
-        plotStatistic();  // frames the statistic row again
+        statisticRow_->plotStatistic(result_.get());  // frames the statistic row again
     });
     // The lanes' curves run between two levels: the readout names the flag instead.
     interaction_->setValueFormatter([this](const QCPGraph* graph, double value) -> std::optional<QString> {
@@ -244,32 +211,6 @@ void StanceFlagsPlot::labelLanes()
                    laneLevel(paper ? Lane::C1 : Lane::C, true) + kLaneMargin);
 }
 
-void StanceFlagsPlot::createStatisticRow()
-{
-    QCPAxisRect* rect = rows_[kStatisticRow].rect;
-    QCPAxis* axis = valueAxis(rect);
-    axis->setScaleType(QCPAxis::stLogarithmic);
-    auto ticker = QSharedPointer<QCPAxisTickerLog>::create();
-    ticker->setLogBase(10.0);
-    ticker->setSubTickCount(0);  // nine sub-ticks per decade would crowd a row spanning many decades
-    axis->setTicker(ticker);
-    axis->setNumberFormat(QStringLiteral("eb"));  // 10 with a superscript exponent
-    axis->setNumberPrecision(0);
-    statisticStance_ = new TimeBands(rect, kStanceBrush);
-    statisticStance_->setLayer(kStanceLayer);
-    statistic_ = new DecimatedGraph(timeAxis(rect), axis);
-    statistic_->setPen(QPen(QColor(20, 20, 20), 1.0));
-    statistic_->setSelectable(QCP::stNone);
-    statisticThreshold_ = plot_->addGraph(timeAxis(rect), axis);
-    statisticThreshold_->setLineStyle(QCPGraph::lsStepLeft);
-    statisticThreshold_->setPen(QPen(kThresholdColour, 1.5));
-    statisticThreshold_->setSelectable(QCP::stNone);
-    stanceLegendEntry_ = plot_->addGraph(timeAxis(rect), unitAxis(rect));
-    stanceLegendEntry_->setName(tr("Stance"));
-    stanceLegendEntry_->setPen(Qt::NoPen);
-    stanceLegendEntry_->setBrush(kStanceBrush);
-}
-
 void StanceFlagsPlot::wireInteractions()
 {
     timeRows_ = new LinkedTimeRows(plot_);
@@ -326,7 +267,7 @@ void StanceFlagsPlot::ensureCurvesPlotted() const
     auto* self = const_cast<StanceFlagsPlot*>(this);
     self->curvesStale_ = false;
     self->plotLanes();
-    self->plotStatistic();
+    self->statisticRow_->plotStatistic(result_.get());
     self->replot_->request();  // a grab while hidden may have used the request the result made
 }
 
@@ -341,7 +282,7 @@ void StanceFlagsPlot::setParameters(const Parameters& params)
     params_ = params;
     inputRows_->setParameters(params);
     labelLanes();
-    nameStatistic();
+    statisticRow_->name(params_, usesPaperDetector());
     const bool paper = usesPaperDetector();
     inputsAction_->setEnabled(paper);
     inputsAction_->setToolTip(paper ? tr("Plot |a|, its local standard deviation and |ω| with the detector's thresholds")
@@ -372,62 +313,7 @@ void StanceFlagsPlot::plotLanes()
         lanes_[l]->setData(keys, values, true);
         laneFills_[l]->setSpans(flaggedSpans(times, flags));
     }
-    statisticStance_->setSpans(result_ ? flaggedSpans(times, result_->flags.stance) : std::vector<QCPRange>());
-    stanceLegendEntry_->setVisible(!statisticStance_->isEmpty());
-}
-
-void StanceFlagsPlot::plotStatistic()
-{
-    statistic_->data()->clear();
-    statisticThreshold_->data()->clear();
-    if (!result_)
-        return;
-    const StanceFlags& flags = result_->flags;
-    const std::optional<QCPRange> span = finiteSpan(flags.logStatistic, flags.logThreshold);
-    if (!span)
-        return;
-    // Whole decades around the data, so the axis follows this recording and detector.
-    const double lowest = std::floor(span->lower - kStatisticHeadroom_dec);
-    const double highest = std::max(std::ceil(span->upper + kStatisticHeadroom_dec), lowest + kMinimumStatisticSpan_dec);
-    const QCPRange decades(lowest, highest);
-    const std::vector<double>& times = result_->time_s;
-    // Filled as QCPGraphData and handed over whole: the container shares the vector.
-    QVector<QCPGraphData> statistic;
-    QVector<double> thresholdKeys, threshold;
-    const std::size_t n = std::min({times.size(), flags.logStatistic.size(), flags.logThreshold.size()});
-    statistic.reserve(static_cast<qsizetype>(n));
-    for (std::size_t k = 0; k < n; ++k) {
-        statistic.append(QCPGraphData(times[k], plottedValue(flags.logStatistic[k], decades)));
-        // A fixed threshold is two points; an adaptive one a point wherever it moves.
-        if (k == 0 || k + 1 == n || flags.logThreshold[k] != flags.logThreshold[k - 1]) {
-            thresholdKeys << times[k];
-            threshold << plottedValue(flags.logThreshold[k], decades);
-        }
-    }
-    statistic_->setSeries(statistic, coarseEnvelope(statistic));
-    statisticThreshold_->setData(thresholdKeys, threshold, true);
-    valueAxis(rows_[kStatisticRow].rect)->setRange(std::pow(10.0, lowest), std::pow(10.0, highest));
-}
-
-void StanceFlagsPlot::nameStatistic()
-{
-    // The paper's detector plots its C2 input; a statistic detector its statistic, named by the
-    // detector's own name in the parameter list (a new detector is named without an edit here).
-    const ParameterField* detector = findParameterField("detector");
-    const auto kind = static_cast<std::size_t>(params_.detector);
-    const QString label =
-        usesPaperDetector() || !detector || kind >= detector->choiceNames.size()
-            ? tr("std of |a|\n(m/s²)")
-            : tr("%1\nstatistic").arg(QString::fromUtf8(detector->choiceNames[kind]).toUpper());
-    // Not statisticRect(), which would plot a hidden tab's stale curves (4 ms of a parameter change).
-    valueAxis(rows_[kStatisticRow].rect)->setLabel(label);
-    statistic_->setName(QString(label).replace(QLatin1Char('\n'), QLatin1Char(' ')));
-    if (usesPaperDetector())
-        statisticThreshold_->setName(tr("max std = %1 m/s²").arg(params_.acc_std_max_mps2));
-    else if (params_.zv_adaptive)
-        statisticThreshold_->setName(tr("threshold (adaptive)"));
-    else
-        statisticThreshold_->setName(tr("threshold = 10^%1").arg(params_.zv_log_threshold));
+    statisticRow_->shadeStance(result_.get());
 }
 
 void StanceFlagsPlot::setInputsVisible(bool visible)
@@ -478,7 +364,7 @@ void StanceFlagsPlot::arrangeRows()
     timeAxis(bottom)->setLabel(tr("Time (s)"));
     // The axes name the curves; the legend names the thresholds (each name says its quantity) and
     // the shading.
-    std::vector<QCPAbstractPlottable*> entries{statisticThreshold_, stanceLegendEntry_};
+    std::vector<QCPAbstractPlottable*> entries = statisticRow_->legendEntries();
     if (inputsShown)
         entries.insert(entries.end(), inputRows_->thresholds().begin(), inputRows_->thresholds().end());
     legend_->setEntries(entries);
@@ -499,7 +385,7 @@ QCPAxisRect* StanceFlagsPlot::lanesRect() const { return rows_[kLanesRow].rect; 
 QCPGraph* StanceFlagsPlot::statisticGraph() const
 {
     ensureCurvesPlotted();
-    return statistic_;
+    return statisticRow_->statistic();
 }
 QCPAxisRect* StanceFlagsPlot::statisticRect() const
 {
@@ -523,7 +409,12 @@ QCPGraph* StanceFlagsPlot::thresholdGraph(Threshold threshold) const { return in
 bool StanceFlagsPlot::isStatisticStanceShaded(double time_s) const
 {
     ensureCurvesPlotted();
-    return statisticStance_->contains(time_s);
+    return statisticRow_->isStanceShaded(time_s);
+}
+QCPGraph* StanceFlagsPlot::statisticThresholdGraph() const
+{
+    ensureCurvesPlotted();
+    return statisticRow_->threshold();
 }
 QCPRange StanceFlagsPlot::timeRange() const { return timeRows_->range(); }
 

@@ -24,8 +24,8 @@ class QToolBar;
 
 namespace footpath {
 
-class DecimatedGraph;
 class DetectorInputRows;
+class DetectorStatisticRow;
 
 class DeferredReplot;
 
@@ -114,11 +114,7 @@ public:
     /// 10^logStatistic per sample (the log axis shows the logarithm).
     QCPGraph* statisticGraph() const;
     /// 10^logThreshold where it changes, as a step curve.
-    QCPGraph* statisticThresholdGraph() const
-    {
-        ensureCurvesPlotted();
-        return statisticThreshold_;
-    }
+    QCPGraph* statisticThresholdGraph() const;
     bool isStatisticStanceShaded(double time_s) const;
     const WarningOverlay& warningOverlay() const { return *warnings_; }
     /// The steps' motion classes (Zheng et al. 2016) under the detector lanes; in the layout with a result.
@@ -158,16 +154,12 @@ private:
     void createLanesRow();
     void createPlotInteraction();
     void labelLanes();
-    void createStatisticRow();
     void wireInteractions();
     bool usesPaperDetector() const;
     /// The warnings and motion lanes of result_ now, its lanes and statistic when seen.
     void showResultLanes();
     void ensureCurvesPlotted() const;
     void plotLanes();
-    void plotStatistic();
-    void rescaleStatisticAxis();
-    void nameStatistic();
     void arrangeRows();
 
     QCustomPlot* plot_;
@@ -178,10 +170,7 @@ private:
     std::array<QCPGraph*, kLaneCount> lanes_{};
     std::array<TimeBands*, kLaneCount> laneFills_{};  ///< under each lane's outline while its flag is set
     std::unique_ptr<DetectorInputRows> inputRows_;  ///< also holds the recording's sample times
-    DecimatedGraph* statistic_ = nullptr;
-    QCPGraph* statisticThreshold_ = nullptr;
-    QCPGraph* stanceLegendEntry_ = nullptr;  ///< draws nothing; gives the statistic row's stance shading an entry
-    TimeBands* statisticStance_ = nullptr;
+    std::unique_ptr<DetectorStatisticRow> statisticRow_;
     WarningOverlay* warnings_ = nullptr;
     MotionLanes* motion_ = nullptr;
     PlotInteraction* interaction_ = nullptr;
